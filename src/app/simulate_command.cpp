@@ -1,0 +1,75 @@
+#include "app/simulate_command.hpp"
+
+#include <memory>
+#include <variant>
+
+#include "io/atomic_file.hpp"
+#include "io/state_csv.hpp"
+#include "physics/rigid_body.hpp"
+#include "scene/scene_builder.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace tumble::app {
+namespace {
+
+io::StateRow state_row(const physics::BodyState& s) {
+  const physics::Vec3& x = s.position();
+  const physics::Vec3& v = s.velocity();
+  const physics::Quat& q = s.orientation();
+  const physics::Vec3& w = s.angular_velocity();
+  const physics::Vec3& p = s.momentum();
+  const physics::Vec3& l = s.angular_momentum();
+  return {
+      x.x(), x.y(), x.z(), v.x(), v.y(), v.z(), q.w(), q.x(), q.y(), q.z(),
+      w.x(), w.y(), w.z(), p.x(), p.y(), p.z(), l.x(), l.y(), l.z(), physics::kinetic_energy(s)};
+}
+
+bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation& simulation) {
+  bool ok = true;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    ok = io::write_state_row(out, simulation.time(), scene.bodies[i].name,
+                             state_row(simulation.current()[i])) &&
+         ok;
+  }
+  return ok;
+}
+
+}  // namespace
+
+int run_simulate(const SimulateOptions& options, std::FILE* err) {
+  const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
+  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
+    std::fprintf(err, "tumble: %s\n", error->message.c_str());
+    return kExitBadInput;
+  }
+  const scene::Scene& scene = std::get<scene::Scene>(loaded);
+
+  std::unique_ptr<io::AtomicFile> file;
+  std::FILE* out = stdout;
+  if (options.out != "-") {
+    file = std::make_unique<io::AtomicFile>(options.out);
+    if (!file->ok()) {
+      std::fprintf(err, "tumble: %s\n", file->error().c_str());
+      return kExitBadInput;
+    }
+    out = file->stream();
+  }
+
+  sim::Simulation simulation = scene::build_simulation(scene);
+  const std::int64_t steps = scene::step_count(scene);
+  bool ok = io::write_state_header(out) && write_rows(out, scene, simulation);
+  for (std::int64_t n = 1; n <= steps && ok; ++n) {
+    simulation.step();
+    if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
+  }
+  if (file) {
+    ok = file->commit() && ok;
+    if (!ok) std::fprintf(err, "tumble: %s\n", file->error().c_str());
+  } else if (std::fflush(out) != 0 || !ok) {
+    std::fprintf(err, "tumble: error writing to standard output\n");
+    ok = false;
+  }
+  return ok ? kExitOk : kExitBadInput;
+}
+
+}  // namespace tumble::app

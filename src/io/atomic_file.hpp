@@ -1,0 +1,36 @@
+// Files that appear whole or not at all: written under a temporary name beside the target,
+// flushed, then renamed over it.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+namespace tumble::io {
+
+class AtomicFile {
+ public:
+  // Opens "<path>.tmp-<pid>" for writing. Check ok() / error() before use.
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();  // removes the temporary file unless commit() succeeded
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  bool ok() const { return file_ != nullptr && error_.empty(); }
+  const std::string& error() const { return error_; }
+  std::FILE* stream() { return file_; }
+
+  // Flushes, closes and renames onto the final path. Returns false (see error()) on failure,
+  // in which case nothing is left at either name.
+  bool commit();
+
+ private:
+  void fail(const std::string& what);
+
+  std::string path_;
+  std::string temporary_path_;
+  std::FILE* file_ = nullptr;
+  std::string error_;
+  bool committed_ = false;
+};
+
+}  // namespace tumble::io

@@ -1,0 +1,77 @@
+// Force and torque laws. A body carries only the laws its scene lists, and only those are
+// evaluated: a body with no laws costs nothing here.
+#pragma once
+
+#include <limits>
+#include <variant>
+#include <vector>
+
+#include "physics/rigid_body.hpp"
+
+namespace tumble::physics {
+
+// Uniform gravitational field: F = m g at the centre of mass.
+struct Gravity {
+  Vec3 acceleration = Vec3(0.0, -9.81, 0.0);  // g, world frame (m/s²)
+};
+
+// Constant force through the centre of mass.
+struct ConstantForce {
+  Vec3 force = Vec3::Zero();  // world frame (N)
+};
+
+// Constant torque about the centre of mass.
+struct ConstantTorque {
+  Vec3 torque = Vec3::Zero();  // world frame (N m)
+};
+
+// Viscous drag on the centre of mass: F = -c v.
+struct LinearDamping {
+  double coefficient = 0.0;  // c (N s/m)
+};
+
+// Viscous drag on the rotation: τ = -c ω.
+struct AngularDamping {
+  double coefficient = 0.0;  // c (N m s)
+};
+
+// A world-frame force applied at a point fixed in the body while start <= t < end.
+struct ForceAtPoint {
+  Vec3 force = Vec3::Zero();  // world frame (N)
+  Vec3 point = Vec3::Zero();  // body frame, relative to the centre of mass (m)
+  double start = -std::numeric_limits<double>::infinity();  // s
+  double end = std::numeric_limits<double>::infinity();     // s
+};
+
+// A damped spring from a fixed world anchor to a point fixed in the body. With d = P - anchor,
+// l = |d|, u = d / l and v_P the velocity of P, the force on P is -(k (l - l0) + c v_P·u) u.
+struct Spring {
+  Vec3 anchor = Vec3::Zero();      // world frame (m)
+  Vec3 attachment = Vec3::Zero();  // body frame, relative to the centre of mass (m)
+  double stiffness = 0.0;          // k (N/m)
+  double damping = 0.0;            // c (N s/m)
+  double rest_length = 0.0;        // l0 (m)
+};
+
+using ForceLaw = std::variant<Gravity, ConstantForce, ConstantTorque, LinearDamping, AngularDamping,
+                              ForceAtPoint, Spring>;
+
+// Net force and torque on a body.
+struct Wrench {
+  Vec3 force = Vec3::Zero();   // world frame, through the centre of mass (N)
+  Vec3 torque = Vec3::Zero();  // world frame, about the centre of mass (N m)
+};
+
+// A force F at world point p adds F and the torque (p - x) × F.
+Wrench force_at_world_point(const BodyState& state, const Vec3& force /* N, world */,
+                            const Vec3& world_point /* m */);
+
+// One law's contribution at time t (s) in the given state.
+Wrench evaluate(const ForceLaw& law, const BodyConstants& constants, const BodyState& state,
+                double t);
+
+// Sum over a body's laws.
+Wrench total_wrench(const std::vector<ForceLaw>& laws, const BodyConstants& constants,
+                    const BodyState& state, double t);
+
+}  // namespace tumble::physics

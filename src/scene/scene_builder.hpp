@@ -1,0 +1,15 @@
+// From scene data to physics objects.
+#pragma once
+
+#include "scene/scene.hpp"
+#include "sim/simulation.hpp"
+
+namespace tumble::scene {
+
+physics::BodyConstants body_constants(const BodySpec& body);
+physics::BodyState initial_state(const BodySpec& body);
+// Number of fixed steps that cover the scene: round(duration / dt).
+std::int64_t step_count(const Scene& scene);
+sim::Simulation build_simulation(const Scene& scene);
+
+}  // namespace tumble::scene

@@ -1,0 +1,26 @@
+// Reading and validating scene files (TOML). Every error names the file, line, column and key.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "scene/scene.hpp"
+
+namespace tumble::scene {
+
+// A scene that could not be loaded. `message` is complete and ready to print, in the form
+// "path:line:column: key: what is wrong".
+struct SceneError {
+  std::string message;
+};
+
+using SceneOrError = std::variant<Scene, SceneError>;
+
+// Loads a scene from a file; the file's stem is the default scene name.
+SceneOrError load_scene_file(const std::string& path);
+
+// Loads a scene from text; `path` names it in messages and gives the default name.
+SceneOrError parse_scene(std::string_view text, const std::string& path);
+
+}  // namespace tumble::scene

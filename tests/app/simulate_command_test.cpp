@@ -1,0 +1,153 @@
+// End-to-end tests of `tumble simulate`, run as a separate process the way users run it.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class SimulateCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(::testing::TempDir()) /
+           ("tumble_simulate_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+
+  Outcome tumble(const std::string& arguments) {
+    const std::string command = std::string(TUMBLE_EXECUTABLE) + " " + arguments + " >" +
+                                (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string();
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(dir_ / "stdout"),
+            read_file(dir_ / "stderr")};
+  }
+
+  fs::path dir_;
+};
+
+std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// A unit cube (I = 1/6) under a constant torque about z: L = τ t exactly at every step.
+constexpr const char* kTorqueScene = R"(duration = 1.0
+[physics]
+dt = 0.1
+integrator = "rk4"
+[[bodies]]
+name = "spun"
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "torque"
+torque = [0.0, 0.0, 2.0]
+)";
+
+TEST_F(SimulateCommand, RunningTheDefaultSceneTwiceGivesByteIdenticalCsv) {
+  const std::string scene =
+      std::string(std::getenv("TUMBLE_SOURCE_DIR")) + "/scenes/spinning_cube.toml";
+  ASSERT_EQ(tumble("simulate " + scene + " --out " + (dir_ / "a.csv").string()).exit_code, 0);
+  ASSERT_EQ(tumble("simulate " + scene + " --out " + (dir_ / "b.csv").string()).exit_code, 0);
+  const std::string a = read_file(dir_ / "a.csv");
+  EXPECT_EQ(parse_csv(a).size(), 1u + 2001u);  // header, t = 0, then 2000 steps of 0.01 s
+  EXPECT_EQ(a, read_file(dir_ / "b.csv"));
+  // And standard output carries the same bytes.
+  EXPECT_EQ(tumble("simulate " + scene).out, a);
+}
+
+TEST_F(SimulateCommand, WritesAHeaderAndRowsAtZeroEveryNStepsAndTheLastStep) {
+  const fs::path scene = write("torque.toml", kTorqueScene);
+  const Outcome run = tumble("simulate " + scene.string() + " --every 3");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto rows = parse_csv(run.out);
+  ASSERT_EQ(rows.size(), 6u);
+  EXPECT_EQ(run.out.substr(0, run.out.find('\n')),
+            "t,body,x,y,z,vx,vy,vz,qw,qx,qy,qz,wx,wy,wz,px,py,pz,Lx,Ly,Lz,energy");
+  const int steps[] = {0, 3, 6, 9, 10};
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), 22u);
+    const double t = std::stod(rows[r][0]);
+    EXPECT_EQ(t, steps[r - 1] * 0.1);  // %.17g round-trips the double exactly
+    EXPECT_EQ(rows[r][1], "spun");
+    EXPECT_NEAR(std::stod(rows[r][20]), 2.0 * t, 1e-12);                   // Lz = τ t
+    EXPECT_NEAR(std::stod(rows[r][14]), 12.0 * t, 1e-12);                  // wz = L / I
+    EXPECT_NEAR(std::stod(rows[r][21]), 0.5 * 2.0 * t * 12.0 * t, 1e-10);  // ½ L ω
+  }
+}
+
+TEST_F(SimulateCommand, ABadSceneExitsWithTwoNamesTheLineAndWritesNothing) {
+  std::string text = kTorqueScene;
+  text.replace(text.find("mass = 1.0"), 10, "mass = -1.0");
+  const fs::path scene = write("bad.toml", text);
+  const Outcome run =
+      tumble("simulate " + scene.string() + " --out " + (dir_ / "out.csv").string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("bad.toml:9:8: bodies[0].mass: must be greater than 0"), std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.csv"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()),
+            3);  // bad.toml, stdout, stderr
+}
+
+TEST_F(SimulateCommand, AMissingOutputFolderIsAClearError) {
+  const fs::path scene = write("torque.toml", kTorqueScene);
+  const Outcome run =
+      tumble("simulate " + scene.string() + " --out " + (dir_ / "no/such/out.csv").string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("no/such/out.csv"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("No such file or directory"), std::string::npos) << run.err;
+}
+
+TEST_F(SimulateCommand, AMissingSceneFileIsAClearError) {
+  const Outcome run = tumble("simulate " + (dir_ / "absent.toml").string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("absent.toml: cannot open scene file"), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty());
+}
+
+TEST_F(SimulateCommand, BadUsageExitsWithTwo) {
+  EXPECT_EQ(tumble("").exit_code, 2);
+  EXPECT_EQ(tumble("simulate").exit_code, 2);
+  EXPECT_EQ(tumble("simulate x.toml --every 0").exit_code, 2);
+  EXPECT_EQ(tumble("frobnicate").exit_code, 2);
+}
+
+}  // namespace

@@ -1,0 +1,749 @@
+#include "scene/scene_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <variant>
+
+namespace tumble::scene {
+namespace {
+
+using physics::Vec3;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The scene parsed from `text`, or a test failure carrying the loader's message.
+Scene parse_valid(const std::string& text) {
+  SceneOrError result = parse_scene(text, "test.toml");
+  if (const SceneError* error = std::get_if<SceneError>(&result)) {
+    ADD_FAILURE() << "unexpected error: " << error->message;
+    return {};
+  }
+  return std::get<Scene>(std::move(result));
+}
+
+// The force law at `index` as kind T; a test failure (and a default T) if it is another kind.
+template <typename T>
+T force_as(const BodySpec& body, std::size_t index) {
+  if (index >= body.forces.size()) {
+    ADD_FAILURE() << "body " << body.name << " has no force " << index;
+    return {};
+  }
+  const T* law = std::get_if<T>(&body.forces[index]);
+  if (!law) {
+    ADD_FAILURE() << "force " << index << " of body " << body.name << " is another kind (index "
+                  << body.forces[index].index() << ")";
+    return {};
+  }
+  return *law;
+}
+
+// Every key of the schema, every force kind, integers where numbers are expected, and a
+// quaternion that is only nearly unit.
+constexpr const char* kFullScene = R"(name = "full_scene"
+duration = 5
+
+[physics]
+dt = 0.002
+integrator = "symplectic_euler"
+
+[[bodies]]
+name = "lid"
+shape = "box"
+size = [0.5, 1, 2.0]
+mass = 3
+position = [1.0, 2.0, -3.0]
+velocity = [0.5, -0.25, 4]
+orientation = [0.7071, 0.7071, 0.0, 0.0]
+angular_velocity = [0.1, 0.2, 0.3]
+
+[[bodies.forces]]
+kind = "gravity"
+
+[[bodies.forces]]
+kind = "gravity"
+acceleration = [0.0, -1.62, 0.0]
+
+[[bodies.forces]]
+kind = "force"
+force = [1.0, 2.0, 3.0]
+
+[[bodies.forces]]
+kind = "torque"
+torque = [0.0, 0.0, -1.5]
+
+[[bodies.forces]]
+kind = "linear_damping"
+coefficient = 0.3
+
+[[bodies.forces]]
+kind = "angular_damping"
+coefficient = 0
+
+[[bodies.forces]]
+kind = "force_at_point"
+force = [0.0, 10.0, 0.0]
+point = [0.25, -0.5, 1.0]
+start = 1
+end = 1.5
+
+[[bodies.forces]]
+kind = "force_at_point"
+force = [1.0, 0.0, 0.0]
+point = [0.0, 0.0, 0.5]
+
+[[bodies.forces]]
+kind = "spring"
+anchor = [0.0, 5.0, 0.0]
+attachment = [0.25, 0.5, 1.0]
+stiffness = 40
+damping = 1.5
+rest_length = 2.0
+
+[[bodies.forces]]
+kind = "spring"
+anchor = [1.0, 1.0, 1.0]
+stiffness = 10.0
+
+[[bodies]]
+shape = "cube"
+size = 2
+mass = 0.5
+)";
+
+TEST(SceneLoader, FullSceneGivesExactlyTheWrittenValues) {
+  const Scene scene = parse_valid(kFullScene);
+  EXPECT_EQ(scene.name, "full_scene");
+  EXPECT_EQ(scene.source_path, "test.toml");
+  EXPECT_EQ(scene.duration, 5.0);
+  EXPECT_EQ(scene.physics.dt, 0.002);
+  EXPECT_EQ(scene.physics.integrator, physics::Integrator::symplectic_euler);
+  ASSERT_EQ(scene.bodies.size(), 2u);
+
+  const BodySpec& lid = scene.bodies[0];
+  EXPECT_EQ(lid.name, "lid");
+  EXPECT_EQ(lid.shape, Shape::box);
+  EXPECT_EQ(lid.size, Vec3(0.5, 1.0, 2.0));
+  EXPECT_EQ(lid.mass, 3.0);
+  EXPECT_EQ(lid.position, Vec3(1.0, 2.0, -3.0));
+  EXPECT_EQ(lid.velocity, Vec3(0.5, -0.25, 4.0));
+  EXPECT_EQ(lid.angular_velocity, Vec3(0.1, 0.2, 0.3));
+  ASSERT_EQ(lid.forces.size(), 10u);
+
+  EXPECT_EQ(force_as<physics::Gravity>(lid, 0).acceleration, Vec3(0.0, -9.81, 0.0));
+  EXPECT_EQ(force_as<physics::Gravity>(lid, 1).acceleration, Vec3(0.0, -1.62, 0.0));
+  EXPECT_EQ(force_as<physics::ConstantForce>(lid, 2).force, Vec3(1.0, 2.0, 3.0));
+  EXPECT_EQ(force_as<physics::ConstantTorque>(lid, 3).torque, Vec3(0.0, 0.0, -1.5));
+  EXPECT_EQ(force_as<physics::LinearDamping>(lid, 4).coefficient, 0.3);
+  EXPECT_EQ(force_as<physics::AngularDamping>(lid, 5).coefficient, 0.0);
+
+  const auto timed_push = force_as<physics::ForceAtPoint>(lid, 6);
+  EXPECT_EQ(timed_push.force, Vec3(0.0, 10.0, 0.0));
+  EXPECT_EQ(timed_push.point, Vec3(0.25, -0.5, 1.0));
+  EXPECT_EQ(timed_push.start, 1.0);
+  EXPECT_EQ(timed_push.end, 1.5);
+
+  const auto endless_push = force_as<physics::ForceAtPoint>(lid, 7);
+  EXPECT_EQ(endless_push.force, Vec3(1.0, 0.0, 0.0));
+  EXPECT_EQ(endless_push.point, Vec3(0.0, 0.0, 0.5));
+  EXPECT_EQ(endless_push.start, -kInfinity);
+  EXPECT_EQ(endless_push.end, kInfinity);
+
+  const auto spring = force_as<physics::Spring>(lid, 8);
+  EXPECT_EQ(spring.anchor, Vec3(0.0, 5.0, 0.0));
+  EXPECT_EQ(spring.attachment, Vec3(0.25, 0.5, 1.0));
+  EXPECT_EQ(spring.stiffness, 40.0);
+  EXPECT_EQ(spring.damping, 1.5);
+  EXPECT_EQ(spring.rest_length, 2.0);
+
+  const auto bare_spring = force_as<physics::Spring>(lid, 9);
+  EXPECT_EQ(bare_spring.anchor, Vec3(1.0, 1.0, 1.0));
+  EXPECT_EQ(bare_spring.attachment, Vec3::Zero());
+  EXPECT_EQ(bare_spring.stiffness, 10.0);
+  EXPECT_EQ(bare_spring.damping, 0.0);
+  EXPECT_EQ(bare_spring.rest_length, 0.0);
+
+  const BodySpec& second = scene.bodies[1];
+  EXPECT_EQ(second.name, "body1");  // bodies are named by their index unless named
+  EXPECT_EQ(second.shape, Shape::cube);
+  EXPECT_EQ(second.size, Vec3(2.0, 2.0, 2.0));  // a cube's one side, on every axis
+  EXPECT_EQ(second.mass, 0.5);
+  EXPECT_EQ(second.position, Vec3::Zero());
+  EXPECT_EQ(second.velocity, Vec3::Zero());
+  EXPECT_EQ(second.orientation.coeffs(), physics::Quat::Identity().coeffs());
+  EXPECT_EQ(second.angular_velocity, Vec3::Zero());
+  EXPECT_TRUE(second.forces.empty());
+}
+
+TEST(SceneLoader, NearlyUnitOrientationIsNormalised) {
+  const Scene scene = parse_valid(kFullScene);
+  ASSERT_FALSE(scene.bodies.empty());
+  const physics::Quat& q = scene.bodies[0].orientation;
+  // Written as [0.7071, 0.7071, 0, 0], whose length is 0.99999; stored as exactly unit.
+  EXPECT_NEAR(q.norm(), 1.0, 1e-15);
+  EXPECT_NEAR(q.w(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(q.x(), std::sqrt(0.5), 1e-15);
+  EXPECT_EQ(q.y(), 0.0);
+  EXPECT_EQ(q.z(), 0.0);
+}
+
+TEST(SceneLoader, MinimalSceneTakesEveryDefault) {
+  const Scene scene = parse_valid(R"(duration = 2.5
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)");
+  EXPECT_EQ(scene.name, "test");  // the stem of "test.toml"
+  EXPECT_EQ(scene.duration, 2.5);
+  EXPECT_EQ(scene.physics.dt, 0.01);
+  EXPECT_EQ(scene.physics.integrator, physics::Integrator::rk4);
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_EQ(scene.bodies[0].name, "body0");
+  EXPECT_EQ(scene.bodies[0].size, Vec3::Ones());
+  EXPECT_EQ(scene.bodies[0].orientation.coeffs(), physics::Quat::Identity().coeffs());
+}
+
+TEST(SceneLoader, PhysicsTableMayOmitEitherSetting) {
+  const Scene only_integrator = parse_valid(R"(duration = 1.0
+[physics]
+integrator = "euler"
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)");
+  EXPECT_EQ(only_integrator.physics.dt, 0.01);
+  EXPECT_EQ(only_integrator.physics.integrator, physics::Integrator::euler);
+
+  const Scene only_dt = parse_valid(R"(duration = 1.0
+[physics]
+dt = 0.001
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)");
+  EXPECT_EQ(only_dt.physics.dt, 0.001);
+  EXPECT_EQ(only_dt.physics.integrator, physics::Integrator::rk4);
+}
+
+TEST(SceneLoader, DefaultNameIsTheStemOfTheGivenPath) {
+  SceneOrError result = parse_scene(R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+                                    "some/folder/falling_lid.toml");
+  ASSERT_TRUE(std::holds_alternative<Scene>(result));
+  EXPECT_EQ(std::get<Scene>(result).name, "falling_lid");
+  EXPECT_EQ(std::get<Scene>(result).source_path, "some/folder/falling_lid.toml");
+}
+
+// A scene the loader must reject, and what its message must say. Lines and columns are
+// 1-based and were counted by hand from `text`; a value's column is where the value starts.
+struct BadScene {
+  const char* name;      // the test's name
+  const char* text;      // the whole file
+  const char* location;  // "test.toml:LINE:COL"
+  const char* key;       // the qualified key the message names
+  const char* reason;    // a phrase of the explanation
+};
+
+std::ostream& operator<<(std::ostream& out, const BadScene& bad) {
+  return out << bad.name;
+}
+
+class SceneLoaderRejects : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(SceneLoaderRejects, WithLocationKeyAndReason) {
+  const BadScene& bad = GetParam();
+  const SceneOrError result = parse_scene(bad.text, "test.toml");
+  ASSERT_TRUE(std::holds_alternative<SceneError>(result)) << "accepted:\n" << bad.text;
+  const std::string& message = std::get<SceneError>(result).message;
+  // "path:line:column: key: what is wrong"
+  const std::string prefix = std::string(bad.location) + ": " + bad.key + ": ";
+  EXPECT_EQ(message.substr(0, prefix.size()), prefix) << message;
+  EXPECT_NE(message.find(bad.reason, prefix.size()), std::string::npos)
+      << "expected \"" << bad.reason << "\" in: " << message;
+}
+
+const BadScene kBadScenes[] = {
+    {"TomlSyntaxError", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = = 1.0
+)",
+     "test.toml:5:8", "TOML syntax error", "value"},
+    {"UnterminatedString", R"(duration = 1.0
+[[bodies]]
+shape = "cube
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:14", "TOML syntax error", "string"},
+    {"UnknownTopLevelKey", R"(duration = 1.0
+colour = "red"
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:2:1", "colour", "unknown key"},
+    {"UnknownBodyKeyTypoBesideTheRealKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+mas = 1.0
+)",
+     "test.toml:6:1", "bodies[0].mas", "unknown key"},
+    {"UnknownBodyKeyTypoOfAnOptionalKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+postion = [0.0, 0.0, 0.0]
+)",
+     "test.toml:6:1", "bodies[0].postion", "allowed here"},
+    {"UnknownBodyKeyInInlineTable", R"(duration = 1.0
+bodies = [{shape = "cube", size = 1.0, mass = 1.0, mas = 2}]
+)",
+     "test.toml:2:52", "bodies[0].mas", "unknown key"},
+    {"UnknownForceKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "torque"
+torque = [1.0, 0.0, 0.0]
+strength = 2.0
+)",
+     "test.toml:9:1", "bodies[0].forces[0].strength", "unknown key"},
+    {"UnknownPhysicsKey", R"(duration = 1.0
+[physics]
+step = 0.01
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:1", "physics.step", "unknown key"},
+    {"MissingDuration", R"([[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:1", "duration", "missing"},
+    {"MissingBodyMass", R"(duration = 1.0
+
+[[bodies]]
+shape = "cube"
+size = 1.0
+)",
+     "test.toml:3:1", "bodies[0].mass", "missing"},
+    {"MissingShape", R"(duration = 1.0
+[[bodies]]
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:2:1", "bodies[0].shape", "missing"},
+    {"MissingSize", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+mass = 1.0
+)",
+     "test.toml:2:1", "bodies[0].size", "missing"},
+    {"MissingForceKind", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+torque = [1.0, 0.0, 0.0]
+)",
+     "test.toml:6:1", "bodies[0].forces[0].kind", "missing"},
+    {"MissingForceParameter", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "torque"
+)",
+     "test.toml:6:1", "bodies[0].forces[0].torque", "missing"},
+    {"NoBodiesKey", R"(duration = 1.0
+)",
+     "test.toml:1:1", "bodies", "missing"},
+    {"EmptyBodies", R"(duration = 1.0
+bodies = []
+)",
+     "test.toml:2:10", "bodies", "at least one"},
+    {"BodiesIsATable", R"(duration = 1.0
+[bodies]
+shape = "cube"
+)",
+     "test.toml:2:1", "bodies", "at least one"},
+    {"BodyIsNotATable", R"(duration = 1.0
+bodies = [1]
+)",
+     "test.toml:2:11", "bodies[0]", "expected a [[bodies]] table"},
+    {"StringForNumber", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = "1.0"
+)",
+     "test.toml:5:8", "bodies[0].mass", "expected a number, found a string"},
+    {"BooleanForNumber", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = true
+)",
+     "test.toml:5:8", "bodies[0].mass", "found a boolean"},
+    {"NumberForString", R"(duration = 1.0
+[physics]
+integrator = 4
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:14", "physics.integrator", "expected a string, found a number"},
+    {"NumberForVector", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+velocity = 2.0
+)",
+     "test.toml:6:12", "bodies[0].velocity", "found a number"},
+    {"VectorOfTwo", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+velocity = [2.0, 0.0]
+)",
+     "test.toml:6:12", "bodies[0].velocity", "found an array of 2"},
+    {"StringInVector", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+angular_velocity = [2.0, "0", 0.0]
+)",
+     "test.toml:6:20", "bodies[0].angular_velocity", "expected a number, found a string"},
+    {"PhysicsIsNotATable", R"(duration = 1.0
+physics = 3
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:2:11", "physics", "expected a [physics] table"},
+    {"ForcesIsNotAnArray", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+forces = 3
+)",
+     "test.toml:6:10", "bodies[0].forces", "expected [[bodies.forces]]"},
+    {"NanDuration", R"(duration = nan
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:12", "duration", "finite"},
+    {"InfInVector", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.0, inf, 0.0]
+)",
+     "test.toml:6:12", "bodies[0].position", "finite"},
+    {"NegativeInfMass", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = -inf
+)",
+     "test.toml:5:8", "bodies[0].mass", "finite"},
+    {"NanForceParameter", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "linear_damping"
+coefficient = nan
+)",
+     "test.toml:8:15", "bodies[0].forces[0].coefficient", "finite"},
+    {"ZeroMass", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 0
+)",
+     "test.toml:5:8", "bodies[0].mass", "greater than 0 (got 0)"},
+    {"NegativeMass", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = -2.5
+)",
+     "test.toml:5:8", "bodies[0].mass", "greater than 0 (got -2.5)"},
+    {"ZeroCubeSize", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 0.0
+mass = 1.0
+)",
+     "test.toml:4:8", "bodies[0].size", "greater than 0"},
+    {"NegativeCubeSize", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = -1.0
+mass = 1.0
+)",
+     "test.toml:4:8", "bodies[0].size", "greater than 0"},
+    {"BoxWithAZeroEdge", R"(duration = 1.0
+[[bodies]]
+shape = "box"
+size = [1.0, 0.0, 2.0]
+mass = 1.0
+)",
+     "test.toml:4:8", "bodies[0].size", "every edge"},
+    {"CubeSizeGivenAsArray", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = [1.0, 1.0, 1.0]
+mass = 1.0
+)",
+     "test.toml:4:8", "bodies[0].size", "one number"},
+    {"BoxSizeGivenAsNumber", R"(duration = 1.0
+[[bodies]]
+shape = "box"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:4:8", "bodies[0].size", "array of 3 numbers"},
+    {"ZeroDt", R"(duration = 1.0
+[physics]
+dt = 0.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:6", "physics.dt", "greater than 0 (got 0)"},
+    {"NegativeDt", R"(duration = 1.0
+[physics]
+dt = -0.01
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:6", "physics.dt", "greater than 0 (got -0.01)"},
+    {"DtLongerThanDuration", R"(duration = 1.0
+[physics]
+dt = 2.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:6", "physics.dt", "longer than duration"},
+    {"ZeroDuration", R"(duration = 0.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:12", "duration", "greater than 0 (got 0)"},
+    {"NegativeDuration", R"(duration = -1
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:12", "duration", "greater than 0 (got -1)"},
+    {"ZeroQuaternion", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+orientation = [0, 0, 0, 0]
+)",
+     "test.toml:6:15", "bodies[0].orientation", "length is 0"},
+    {"QuaternionOfLengthTwo", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+orientation = [2.0, 0.0, 0.0, 0.0]
+)",
+     "test.toml:6:15", "bodies[0].orientation", "length is 2"},
+    {"QuaternionOfThreeNumbers", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+orientation = [1.0, 0.0, 0.0]
+)",
+     "test.toml:6:15", "bodies[0].orientation", "[w, x, y, z]"},
+    {"UnknownIntegrator", R"(duration = 1.0
+[physics]
+integrator = "verlet"
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:14", "physics.integrator", "unknown integrator \"verlet\""},
+    {"UnknownShape", R"(duration = 1.0
+[[bodies]]
+shape = "sphere"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:9", "bodies[0].shape", "unknown shape \"sphere\""},
+    {"UnknownForceKind", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "magnetism"
+)",
+     "test.toml:7:8", "bodies[0].forces[0].kind", "unknown force kind \"magnetism\""},
+    {"PushStartsAfterItEnds", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "force_at_point"
+force = [1.0, 0.0, 0.0]
+point = [0.5, 0.5, 0.5]
+start = 2.0
+end = 1.0
+)",
+     "test.toml:10:9", "bodies[0].forces[0].start", "after end"},
+    {"SpringWithNegativeStiffness", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+anchor = [0.0, 1.0, 0.0]
+stiffness = -5.0
+)",
+     "test.toml:9:13", "bodies[0].forces[0].stiffness", "must not be negative"},
+    {"SpringWithNegativeDamping", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+anchor = [0.0, 1.0, 0.0]
+stiffness = 5.0
+damping = -1.0
+)",
+     "test.toml:10:11", "bodies[0].forces[0].damping", "must not be negative"},
+    {"SpringWithNegativeRestLength", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+anchor = [0.0, 1.0, 0.0]
+stiffness = 5.0
+rest_length = -0.5
+)",
+     "test.toml:10:15", "bodies[0].forces[0].rest_length", "must not be negative"},
+    {"NegativeAngularDamping", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "angular_damping"
+coefficient = -0.1
+)",
+     "test.toml:8:15", "bodies[0].forces[0].coefficient", "must not be negative (got -0.1)"},
+    {"NegativeLinearDampingInALaterForceOfALaterBody", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "gravity"
+[[bodies.forces]]
+kind = "linear_damping"
+coefficient = -3
+)",
+     "test.toml:14:15", "bodies[1].forces[1].coefficient", "must not be negative (got -3)"},
+    {"DuplicateBodyNames", R"(duration = 1.0
+[[bodies]]
+name = "a"
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies]]
+name = "a"
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:8:8", "bodies[1].name", "duplicate body name \"a\""},
+    {"UnsafeSceneName", R"(name = "../x"
+duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:8", "name", "output folder"},
+    {"EmptySceneName", R"(name = ""
+duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:8", "name", "letters, digits"},
+    {"UnsafeBodyName", R"(duration = 1.0
+[[bodies]]
+name = "lid/handle"
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:8", "bodies[0].name", "letters, digits"},
+};
+
+INSTANTIATE_TEST_SUITE_P(BadScenes, SceneLoaderRejects, ::testing::ValuesIn(kBadScenes),
+                         [](const ::testing::TestParamInfo<BadScene>& info) {
+                           return std::string(info.param.name);
+                         });
+
+}  // namespace
+}  // namespace tumble::scene

@@ -1,0 +1,133 @@
+// The example scenes shipped in scenes/: each must load, build and run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "scene/scene_builder.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace tumble::scene {
+namespace {
+
+namespace fs = std::filesystem;
+using physics::Vec3;
+
+// TUMBLE_SOURCE_DIR/scenes; CTest sets the variable (tests/CMakeLists.txt).
+fs::path scenes_dir() {
+  const char* source = std::getenv("TUMBLE_SOURCE_DIR");
+  if (!source) return {};
+  return fs::path(source) / "scenes";
+}
+
+// Every *.toml in scenes/, sorted so that failures list in a stable order.
+std::vector<fs::path> scene_files() {
+  std::vector<fs::path> files;
+  const fs::path dir = scenes_dir();
+  if (dir.empty() || !fs::is_directory(dir)) return files;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".toml") {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The scene in `path`, or a test failure carrying the loader's message.
+Scene load(const fs::path& path) {
+  SceneOrError result = load_scene_file(path.string());
+  if (const SceneError* error = std::get_if<SceneError>(&result)) {
+    ADD_FAILURE() << error->message;
+    return {};
+  }
+  return std::get<Scene>(std::move(result));
+}
+
+bool is_finite(const physics::BodyState& state) {
+  return state.position().allFinite() && state.momentum().allFinite() &&
+         state.orientation().coeffs().allFinite() && state.angular_momentum().allFinite() &&
+         state.velocity().allFinite() && state.angular_velocity().allFinite() &&
+         state.spin().coeffs().allFinite();
+}
+
+TEST(Scenes, SourceDirectoryIsKnown) {
+  ASSERT_NE(std::getenv("TUMBLE_SOURCE_DIR"), nullptr) << "run the tests through ctest";
+  EXPECT_TRUE(fs::is_directory(scenes_dir())) << scenes_dir();
+}
+
+TEST(Scenes, TheDocumentedExamplesAreAllThere) {
+  std::vector<std::string> stems;
+  for (const fs::path& file : scene_files()) stems.push_back(file.stem().string());
+  for (const char* expected :
+       {"spinning_cube", "thrown_cube", "pushed_cube", "intermediate_axis", "cube_on_spring"}) {
+    EXPECT_TRUE(std::find(stems.begin(), stems.end(), expected) != stems.end())
+        << "scenes/" << expected << ".toml is missing";
+  }
+  EXPECT_GE(stems.size(), 5u);
+}
+
+TEST(Scenes, EverySceneLoadsAndIsNamedAfterItsFile) {
+  const std::vector<fs::path> files = scene_files();
+  ASSERT_FALSE(files.empty());
+  for (const fs::path& file : files) {
+    SCOPED_TRACE(file.string());
+    const Scene scene = load(file);
+    // The name picks the output folder; matching the file keeps outputs easy to find.
+    EXPECT_EQ(scene.name, file.stem().string());
+    EXPECT_FALSE(scene.bodies.empty());
+  }
+}
+
+// Glenn Fiedler, "Physics in 3D": a unit cube spun up by a constant torque about x against
+// angular damping, stepped with RK4 at 100 Hz.
+TEST(Scenes, SpinningCubeIsTheArticleExample) {
+  const Scene scene = load(scenes_dir() / "spinning_cube.toml");
+  EXPECT_EQ(scene.name, "spinning_cube");
+  EXPECT_EQ(scene.duration, 20.0);
+  EXPECT_EQ(scene.physics.dt, 0.01);
+  EXPECT_EQ(scene.physics.integrator, physics::Integrator::rk4);
+  ASSERT_EQ(scene.bodies.size(), 1u);
+
+  const BodySpec& cube = scene.bodies[0];
+  EXPECT_EQ(cube.shape, Shape::cube);
+  EXPECT_EQ(cube.size, Vec3::Ones());
+  EXPECT_EQ(cube.mass, 1.0);
+  EXPECT_EQ(cube.position, Vec3::Zero());
+  EXPECT_EQ(cube.velocity, Vec3::Zero());
+  EXPECT_EQ(cube.orientation.coeffs(), physics::Quat::Identity().coeffs());
+  EXPECT_EQ(cube.angular_velocity, Vec3::Zero());
+
+  ASSERT_EQ(cube.forces.size(), 2u);
+  const auto* torque = std::get_if<physics::ConstantTorque>(&cube.forces[0]);
+  ASSERT_NE(torque, nullptr) << "the first force is not a torque";
+  EXPECT_EQ(torque->torque, Vec3(1.0, 0.0, 0.0));
+  const auto* damping = std::get_if<physics::AngularDamping>(&cube.forces[1]);
+  ASSERT_NE(damping, nullptr) << "the second force is not angular damping";
+  EXPECT_EQ(damping->coefficient, 0.1);
+}
+
+TEST(Scenes, EverySceneRunsAHundredStepsWithFiniteStates) {
+  const std::vector<fs::path> files = scene_files();
+  ASSERT_FALSE(files.empty());
+  for (const fs::path& file : files) {
+    SCOPED_TRACE(file.string());
+    const Scene scene = load(file);
+    if (scene.bodies.empty()) continue;  // load() has already failed the test
+    EXPECT_GE(step_count(scene), 100) << "the scene is shorter than the 100 steps run here";
+    sim::Simulation simulation = build_simulation(scene);
+    ASSERT_EQ(simulation.current().size(), scene.bodies.size());
+    for (int n = 0; n < 100; ++n) simulation.step();
+    EXPECT_EQ(simulation.step_count(), 100);
+    for (std::size_t i = 0; i < simulation.current().size(); ++i) {
+      EXPECT_TRUE(is_finite(simulation.current()[i])) << "body " << scene.bodies[i].name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tumble::scene
