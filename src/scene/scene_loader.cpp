@@ -1,12 +1,16 @@
 #include "scene/scene_loader.hpp"
 
+#include "scene/scene_builder.hpp"
+
 #include <toml++/toml.h>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace tumble::scene {
 namespace {
@@ -35,6 +39,22 @@ std::string_view type_name(const toml::node& node) {
     default:
       return "a date or time";
   }
+}
+
+// Levenshtein distance, for "did you mean" hints on misspelt keys.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
 }
 
 std::string format_number(double value) {
@@ -73,6 +93,13 @@ class TableReader {
 
   const toml::node& required(std::string_view key) {
     if (!has(key)) {
+      // A missing key is often a misspelt one: point at the misspelling instead.
+      for (auto&& [written, node] : table_) {
+        if (!known_.count(std::string(written.str())) && edit_distance(written.str(), key) <= 2) {
+          fail_at(written.source(), qualified(written.str()),
+                  "unknown key (did you mean \"" + std::string(key) + "\"?)");
+        }
+      }
       fail_at(table_.source(), qualified(key),
               "missing required key" + (path_.empty() ? std::string() : " in " + path_));
     }
@@ -83,7 +110,9 @@ class TableReader {
     if (!node.is_number()) {
       fail(key, "expected a number, found " + std::string(type_name(node)));
     }
-    const double value = *node.value<double>();
+    // toml++ will not convert integers beyond 2^53 to double; do it ourselves (rounding).
+    const double value = node.is_integer() ? static_cast<double>(node.as_integer()->get())
+                                           : node.as_floating_point()->get();
     if (!std::isfinite(value)) fail(key, "must be a finite number");
     return value;
   }
@@ -120,7 +149,9 @@ class TableReader {
     const toml::node& node = *table_.get(key);
     const toml::array* array = node.as_array();
     if (!array || array->size() != 4) {
-      fail(key, "expected a unit quaternion [w, x, y, z]");
+      fail(key, "expected a unit quaternion [w, x, y, z], found " +
+                    (array ? "an array of " + std::to_string(array->size())
+                           : std::string(type_name(node))));
     }
     double c[4];
     for (std::size_t i = 0; i < 4; ++i) c[i] = number(key, (*array)[i]);
@@ -244,6 +275,11 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   if (!(body.size.minCoeff() > 0.0)) in.fail("size", "every edge must be greater than 0");
   body.mass = in.required_number("mass");
   require_positive(in, "mass", body.mass);
+  const physics::BodyConstants constants = body_constants(body);
+  if (!(std::isfinite(constants.inverse_mass) && constants.inverse_inertia.allFinite() &&
+        constants.inertia.allFinite())) {
+    in.fail("mass", "with this size, the moments of inertia are beyond double precision");
+  }
   body.position = in.optional_vector("position", Vec3::Zero());
   body.velocity = in.optional_vector("velocity", Vec3::Zero());
   body.orientation = in.optional_quaternion("orientation");
@@ -282,10 +318,6 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     TableReader physics(*table, "physics", file);
     scene.physics.dt = physics.optional_number("dt", scene.physics.dt);
     require_positive(physics, "dt", scene.physics.dt);
-    if (scene.physics.dt > scene.duration) {
-      physics.fail("dt", "step " + format_number(scene.physics.dt) + " s is longer than duration " +
-                             format_number(scene.duration) + " s");
-    }
     const std::string name = physics.optional_string(
         "integrator", std::string(physics::integrator_name(scene.physics.integrator)));
     const auto integrator = physics::integrator_from_name(name);
@@ -298,6 +330,21 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     }
     scene.physics.integrator = *integrator;
     physics.reject_unknown_keys();
+  }
+  // Checked whether dt was written or defaulted; blamed on dt if written, else on duration.
+  const bool dt_written = root.at_path("physics.dt").node() != nullptr;
+  const auto fail_on_dt = [&](const std::string& what) {
+    if (dt_written) {
+      TableReader(*root.get("physics")->as_table(), "physics", file).fail("dt", what);
+    }
+    in.fail("duration", what + " (dt defaults to " + format_number(scene.physics.dt) + " s)");
+  };
+  if (scene.physics.dt > scene.duration) {
+    fail_on_dt("step " + format_number(scene.physics.dt) + " s is longer than duration " +
+               format_number(scene.duration) + " s");
+  }
+  if (scene.duration / scene.physics.dt > static_cast<double>(kMaxSteps)) {
+    fail_on_dt("duration / dt asks for more than " + std::to_string(kMaxSteps) + " steps");
   }
 
   const toml::array* bodies = in.required("bodies").as_array();

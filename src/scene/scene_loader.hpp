@@ -1,6 +1,7 @@
 // Reading and validating scene files (TOML). Every error names the file, line, column and key.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -8,6 +9,9 @@
 #include "scene/scene.hpp"
 
 namespace tumble::scene {
+
+// Most steps a scene may ask for (duration / dt): a typo must not start a run of days.
+inline constexpr std::int64_t kMaxSteps = 100'000'000;
 
 // A scene that could not be loaded. `message` is complete and ready to print, in the form
 // "path:line:column: key: what is wrong".

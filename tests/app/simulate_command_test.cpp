@@ -82,8 +82,7 @@ torque = [0.0, 0.0, 2.0]
 )";
 
 TEST_F(SimulateCommand, RunningTheDefaultSceneTwiceGivesByteIdenticalCsv) {
-  const std::string scene =
-      std::string(std::getenv("TUMBLE_SOURCE_DIR")) + "/scenes/spinning_cube.toml";
+  const std::string scene = std::string(TUMBLE_SOURCE_DIR) + "/scenes/spinning_cube.toml";
   ASSERT_EQ(tumble("simulate " + scene + " --out " + (dir_ / "a.csv").string()).exit_code, 0);
   ASSERT_EQ(tumble("simulate " + scene + " --out " + (dir_ / "b.csv").string()).exit_code, 0);
   const std::string a = read_file(dir_ / "a.csv");

@@ -230,6 +230,18 @@ mass = 1.0
   EXPECT_EQ(only_dt.physics.integrator, physics::Integrator::rk4);
 }
 
+TEST(SceneLoader, LargeIntegersAreReadAsTheNearestDouble) {
+  const SceneOrError result = parse_scene(R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1
+mass = 9007199254740993
+)",
+                                          "test.toml");
+  ASSERT_TRUE(std::holds_alternative<Scene>(result)) << std::get<SceneError>(result).message;
+  EXPECT_EQ(std::get<Scene>(result).bodies[0].mass, 9007199254740992.0);
+}
+
 TEST(SceneLoader, DefaultNameIsTheStemOfTheGivenPath) {
   SceneOrError result = parse_scene(R"(duration = 1.0
 [[bodies]]
@@ -738,6 +750,60 @@ size = 1.0
 mass = 1.0
 )",
      "test.toml:3:8", "bodies[0].name", "letters, digits"},
+    {"MisspeltRequiredKeyIsNamedNotReportedMissing", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mas = 1.0
+)",
+     "test.toml:5:1", "bodies[0].mas", "did you mean \"mass\""},
+    {"IntegerBeyondDoublePrecisionIsStillRangeChecked", R"(duration = 1.0
+[physics]
+dt = 9007199254740993
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:6", "physics.dt", "longer than duration"},
+    {"DefaultDtLongerThanDuration", R"(duration = 0.005
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:12", "duration", "dt defaults to 0.01"},
+    {"TooManySteps", R"(duration = 1e300
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:1:12", "duration", "more than 100000000 steps"},
+    {"TooManyStepsBlamesAWrittenDt", R"(duration = 100.0
+[physics]
+dt = 1e-7
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:6", "physics.dt", "more than 100000000 steps"},
+    {"InertiaUnderflows", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1e-200
+mass = 1e-200
+)",
+     "test.toml:5:8", "bodies[0].mass", "beyond double precision"},
+    {"OrientationOfThreeSaysWhatWasFound", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+orientation = [1.0, 0.0, 0.0]
+)",
+     "test.toml:6:15", "bodies[0].orientation", "found an array of 3"},
 };
 
 INSTANTIATE_TEST_SUITE_P(BadScenes, SceneLoaderRejects, ::testing::ValuesIn(kBadScenes),

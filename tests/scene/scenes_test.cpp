@@ -17,11 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 using physics::Vec3;
 
-// TUMBLE_SOURCE_DIR/scenes; CTest sets the variable (tests/CMakeLists.txt).
+// The source tree's scenes/ (TUMBLE_SOURCE_DIR is compiled in by tests/CMakeLists.txt).
 fs::path scenes_dir() {
-  const char* source = std::getenv("TUMBLE_SOURCE_DIR");
-  if (!source) return {};
-  return fs::path(source) / "scenes";
+  return fs::path(TUMBLE_SOURCE_DIR) / "scenes";
 }
 
 // Every *.toml in scenes/, sorted so that failures list in a stable order.
@@ -56,7 +54,6 @@ bool is_finite(const physics::BodyState& state) {
 }
 
 TEST(Scenes, SourceDirectoryIsKnown) {
-  ASSERT_NE(std::getenv("TUMBLE_SOURCE_DIR"), nullptr) << "run the tests through ctest";
   EXPECT_TRUE(fs::is_directory(scenes_dir())) << scenes_dir();
 }
 
