@@ -1,8 +1,11 @@
 // The command line: parses arguments and hands them to the commands in src/app/.
 #include <CLI/CLI.hpp>
 #include <charconv>
+#include <climits>
 #include <cstdio>
 
+#include "app/diff_command.hpp"
+#include "app/render_command.hpp"
 #include "app/simulate_command.hpp"
 
 namespace {
@@ -16,6 +19,21 @@ const CLI::Validator kAtLeastOne(
       return whole && parsed >= 1 ? std::string() : "expected a whole number >= 1, got " + value;
     },
     "N>=1");
+
+// A whole number from `min` to `max`, in the same readable style; `range` says which in words.
+CLI::Validator whole_number_in(long long min, long long max, const std::string& range) {
+  return CLI::Validator(
+      [=](std::string& value) {
+        long long parsed = 0;
+        const auto [end, error] =
+            std::from_chars(value.data(), value.data() + value.size(), parsed);
+        const bool whole = error == std::errc() && end == value.data() + value.size();
+        return whole && parsed >= min && parsed <= max
+                   ? std::string()
+                   : "expected a whole number " + range + ", got " + value;
+      },
+      range);
+}
 
 }  // namespace
 
@@ -34,6 +52,43 @@ int main(int argc, char** argv) {
       ->check(kAtLeastOne)
       ->capture_default_str();
 
+  RenderOptions render;
+  std::string frame_range;
+  CLI::App* render_command =
+      app.add_subcommand("render", "Render a scene to PNG frames and an MP4, off-screen");
+  render_command->add_option("scene", render.scene_path, "Scene file (TOML)")->required();
+  render_command
+      ->add_option("-o,--output", render.output_root,
+                   "Output folder; files go to OUTPUT/<scene name>/")
+      ->capture_default_str();
+  render_command->add_option("--width", render.width, "Image width (pixels)")
+      ->check(CLI::Range(16, 8192));
+  render_command->add_option("--height", render.height, "Image height (pixels)")
+      ->check(CLI::Range(16, 8192));
+  render_command->add_option("--fps", render.fps, "Frames per second")->check(CLI::Range(1, 240));
+  render_command->add_option("--frames", frame_range, "Render frames A to B-1 only (A:B)");
+  render_command->add_flag("!--no-frames", render.frames, "Do not write PNG frames");
+  render_command->add_flag("!--no-video", render.video, "Do not write the MP4");
+  render_command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");
+  render_command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
+
+  DiffCommandOptions diff;
+  CLI::App* diff_command = app.add_subcommand(
+      "diff", "Compare two PNGs: exit 0 if they match within the tolerance, 1 if not, 2 on error");
+  diff_command->add_option("first", diff.first_path, "First PNG")->required();
+  diff_command->add_option("second", diff.second_path, "Second PNG")->required();
+  diff_command
+      ->add_option("--threshold", diff.threshold,
+                   "A pixel differs when a channel differs by more than this")
+      ->check(whole_number_in(0, 255, "from 0 to 255"))
+      ->capture_default_str();
+  diff_command
+      ->add_option("--max-pixels", diff.max_pixels,
+                   "The images match when at most this many pixels differ")
+      ->check(whole_number_in(0, LLONG_MAX, ">= 0"))
+      ->capture_default_str();
+  diff_command->add_option("--out", diff.out, "Write an image of the differences here (PNG)");
+
   if (argc < 2) {
     std::fputs(app.help().c_str(), stderr);
     return kExitBadInput;
@@ -46,5 +101,20 @@ int main(int argc, char** argv) {
   }
 
   if (simulate_command->parsed()) return run_simulate(simulate, stderr);
+  if (diff_command->parsed()) return run_diff(diff, stdout, stderr);
+  if (render_command->parsed()) {
+    if (!frame_range.empty()) {
+      long long first = 0, end = 0;
+      char extra = 0;
+      if (std::sscanf(frame_range.c_str(), "%lld:%lld%c", &first, &end, &extra) != 2) {
+        std::fprintf(stderr, "--frames: expected A:B (frames A to B-1), got %s\n",
+                     frame_range.c_str());
+        return kExitBadInput;
+      }
+      render.first_frame = first;
+      render.end_frame = end;
+    }
+    return run_render(render, stderr);
+  }
   return kExitBadInput;
 }

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <string>
 
+#include "app/exit_codes.hpp"
+
 namespace tumble::app {
 
 struct SimulateOptions {
@@ -12,9 +14,6 @@ struct SimulateOptions {
   std::string out = "-";   // a file path, or "-" for standard output
   std::int64_t every = 1;  // write a row every N steps (plus t = 0 and the last step)
 };
-
-// Exit codes shared by every command.
-enum ExitCode : int { kExitOk = 0, kExitMismatch = 1, kExitBadInput = 2 };
 
 // Runs the command; messages go to `err`. Returns the process exit code.
 int run_simulate(const SimulateOptions& options, std::FILE* err);

@@ -2,12 +2,14 @@
 // is scene_builder's job; drawing it will be render's.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "physics/forces.hpp"
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
+#include "render/frame.hpp"  // plain data only: colours, light, ground, image settings
 
 namespace tumble::scene {
 
@@ -23,11 +25,29 @@ struct BodySpec {
   physics::Quat orientation = physics::Quat::Identity();   // body-to-world, unit
   physics::Vec3 angular_velocity = physics::Vec3::Zero();  // world frame (rad/s)
   std::vector<physics::ForceLaw> forces;                   // only what the scene lists
+  render::Color color = render::Color(0.85, 0.35, 0.2);    // sRGB
 };
 
 struct PhysicsSettings {
   double dt = 0.01;  // fixed step (s)
   physics::Integrator integrator = physics::Integrator::rk4;
+};
+
+// The camera as written; what is left out is chosen to frame the whole motion.
+struct CameraSpec {
+  std::optional<physics::Vec3> position;  // world frame (m)
+  std::optional<physics::Vec3> look_at;   // world frame (m)
+  physics::Vec3 up = physics::Vec3::UnitY();
+  double fov_degrees = 40.0;  // vertical
+  std::string follow;         // a body name: the camera keeps its offset to that body
+};
+
+struct OutputSpec {
+  std::string directory;  // below the output root chosen on the command line; default: name
+  bool frames = true;     // PNG frames
+  bool video = true;      // MP4
+  int crf = 20;           // x264 constant rate factor, 0 (lossless) to 51
+  std::string preset = "veryfast";  // x264 speed preset
 };
 
 struct Scene {
@@ -36,6 +56,12 @@ struct Scene {
   double duration = 0.0;    // simulated time (s)
   PhysicsSettings physics;
   std::vector<BodySpec> bodies;
+  // Rendering. The ground's height, when not written, is chosen below the whole motion.
+  render::RenderSettings render;
+  std::optional<double> ground_height;  // m
+  int fps = 60;                         // video frames per simulated second
+  CameraSpec camera;
+  OutputSpec output;
 };
 
 }  // namespace tumble::scene

@@ -1,9 +1,12 @@
 #include "scene/scene_loader.hpp"
 
+#include "scene/render_tables.hpp"
 #include "scene/scene_builder.hpp"
+#include "scene/table_reader.hpp"
 
 #include <toml++/toml.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,196 +18,12 @@
 namespace tumble::scene {
 namespace {
 
-using physics::Quat;
-using physics::Vec3;
+using namespace detail;
 
-// Thrown inside the loader only; load_scene_file/parse_scene turn it into a SceneError.
-struct LoadFailure : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-std::string_view type_name(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-    case toml::node_type::floating_point:
-      return "a number";
-    case toml::node_type::boolean:
-      return "a boolean";
-    default:
-      return "a date or time";
-  }
-}
-
-// Levenshtein distance, for "did you mean" hints on misspelt keys.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
-std::string format_number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-// A table being read: knows its dotted path for messages and which keys were asked for, so that
-// every key nobody asked for can be reported as unknown.
-class TableReader {
- public:
-  TableReader(const toml::table& table, std::string path, const std::string& file)
-      : table_(table), path_(std::move(path)), file_(file) {}
-
-  [[noreturn]] void fail_at(const toml::source_region& where, std::string_view key,
-                            std::string_view what) const {
-    std::ostringstream out;
-    out << file_ << ':' << where.begin.line << ':' << where.begin.column << ": " << key << ": "
-        << what;
-    throw LoadFailure(out.str());
-  }
-  [[noreturn]] void fail(std::string_view key, std::string_view what) const {
-    const toml::node* node = table_.get(key);
-    fail_at(node ? node->source() : table_.source(), qualified(key), what);
-  }
-
-  std::string qualified(std::string_view key) const {
-    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-  }
-
-  bool has(std::string_view key) {
-    known_.insert(std::string(key));
-    return table_.contains(key);
-  }
-
-  const toml::node& required(std::string_view key) {
-    if (!has(key)) {
-      // A missing key is often a misspelt one: point at the misspelling instead.
-      for (auto&& [written, node] : table_) {
-        if (!known_.count(std::string(written.str())) && edit_distance(written.str(), key) <= 2) {
-          fail_at(written.source(), qualified(written.str()),
-                  "unknown key (did you mean \"" + std::string(key) + "\"?)");
-        }
-      }
-      fail_at(table_.source(), qualified(key),
-              "missing required key" + (path_.empty() ? std::string() : " in " + path_));
-    }
-    return *table_.get(key);
-  }
-
-  double number(std::string_view key, const toml::node& node) const {
-    if (!node.is_number()) {
-      fail(key, "expected a number, found " + std::string(type_name(node)));
-    }
-    // toml++ will not convert integers beyond 2^53 to double; do it ourselves (rounding).
-    const double value = node.is_integer() ? static_cast<double>(node.as_integer()->get())
-                                           : node.as_floating_point()->get();
-    if (!std::isfinite(value)) fail(key, "must be a finite number");
-    return value;
-  }
-
-  double required_number(std::string_view key) { return number(key, required(key)); }
-  double optional_number(std::string_view key, double fallback) {
-    return has(key) ? number(key, *table_.get(key)) : fallback;
-  }
-
-  std::string required_string(std::string_view key) { return string(key, required(key)); }
-  std::string optional_string(std::string_view key, std::string fallback) {
-    return has(key) ? string(key, *table_.get(key)) : std::move(fallback);
-  }
-
-  Vec3 vector(std::string_view key, const toml::node& node) const {
-    const toml::array* array = node.as_array();
-    if (!array || array->size() != 3) {
-      fail(key, "expected an array of 3 numbers [x, y, z], found " +
-                    (array ? "an array of " + std::to_string(array->size())
-                           : std::string(type_name(node))));
-    }
-    Vec3 out;
-    for (int i = 0; i < 3; ++i) out[i] = number(key, (*array)[static_cast<std::size_t>(i)]);
-    return out;
-  }
-  Vec3 required_vector(std::string_view key) { return vector(key, required(key)); }
-  Vec3 optional_vector(std::string_view key, const Vec3& fallback) {
-    return has(key) ? vector(key, *table_.get(key)) : fallback;
-  }
-
-  // A unit quaternion written [w, x, y, z]; a small normalisation error is forgiven.
-  Quat optional_quaternion(std::string_view key) {
-    if (!has(key)) return Quat::Identity();
-    const toml::node& node = *table_.get(key);
-    const toml::array* array = node.as_array();
-    if (!array || array->size() != 4) {
-      fail(key, "expected a unit quaternion [w, x, y, z], found " +
-                    (array ? "an array of " + std::to_string(array->size())
-                           : std::string(type_name(node))));
-    }
-    double c[4];
-    for (std::size_t i = 0; i < 4; ++i) c[i] = number(key, (*array)[i]);
-    const Quat q(c[0], c[1], c[2], c[3]);
-    if (std::abs(q.norm() - 1.0) > 1e-3) {
-      fail(key, "must be a unit quaternion [w, x, y, z] (its length is " + format_number(q.norm()) +
-                    ")");
-    }
-    return q.normalized();
-  }
-
-  const toml::table& table() const { return table_; }
-  const std::string& path() const { return path_; }
-
-  // Call after reading every key the schema allows.
-  void reject_unknown_keys() const {
-    for (auto&& [key, node] : table_) {
-      if (known_.count(std::string(key.str()))) continue;
-      std::string allowed;
-      for (const std::string& k : known_) allowed += (allowed.empty() ? "" : ", ") + k;
-      fail_at(key.source(), qualified(key.str()), "unknown key (allowed here: " + allowed + ")");
-    }
-  }
-
- private:
-  std::string string(std::string_view key, const toml::node& node) const {
-    if (!node.is_string()) fail(key, "expected a string, found " + std::string(type_name(node)));
-    return *node.value<std::string>();
-  }
-
-  const toml::table& table_;
-  std::string path_;
-  const std::string& file_;
-  std::set<std::string> known_;
-};
-
-void require_positive(TableReader& reader, std::string_view key, double value) {
-  if (!(value > 0.0)) reader.fail(key, "must be greater than 0 (got " + format_number(value) + ")");
-}
-void require_non_negative(TableReader& reader, std::string_view key, double value) {
-  if (value < 0.0) reader.fail(key, "must not be negative (got " + format_number(value) + ")");
-}
-
-// Names become folder and file names: keep them to a safe alphabet.
-bool is_safe_name(const std::string& name) {
-  if (name.empty() || name.front() == '.' || name.size() > 100) return false;
-  for (const char c : name) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                    c == '_' || c == '-' || c == '.';
-    if (!ok) return false;
-  }
-  return true;
-}
+// Body colours when a scene gives none (sRGB): distinct, and calm enough for documentation.
+const std::array<Vec3, 5> kPalette = {Vec3(0.89, 0.40, 0.18), Vec3(0.20, 0.51, 0.78),
+                                      Vec3(0.35, 0.67, 0.33), Vec3(0.85, 0.70, 0.20),
+                                      Vec3(0.60, 0.40, 0.70)};
 
 physics::ForceLaw read_force(TableReader& in) {
   const std::string kind = in.required_string("kind");
@@ -284,6 +103,7 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   body.velocity = in.optional_vector("velocity", Vec3::Zero());
   body.orientation = in.optional_quaternion("orientation");
   body.angular_velocity = in.optional_vector("angular_velocity", Vec3::Zero());
+  body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
   if (in.has("forces")) {
     const toml::array* forces = in.table().get("forces")->as_array();
     if (!forces) in.fail("forces", "expected [[bodies.forces]] tables");
@@ -360,6 +180,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
       body.fail("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
     }
   }
+  read_render_tables(in, scene);
   in.reject_unknown_keys();
   return scene;
 }

@@ -58,6 +58,7 @@ position = [1.0, 2.0, -3.0]
 velocity = [0.5, -0.25, 4]
 orientation = [0.7071, 0.7071, 0.0, 0.0]
 angular_velocity = [0.1, 0.2, 0.3]
+color = "#ff8000"
 
 [[bodies.forces]]
 kind = "gravity"
@@ -111,6 +112,39 @@ stiffness = 10.0
 shape = "cube"
 size = 2
 mass = 0.5
+
+[render]
+width = 640
+height = 360
+fps = 30
+msaa = 8
+background = [0.1, 0.2, 0.3]
+shadows = false
+
+[camera]
+position = [6.0, 4.0, 8.0]
+look_at = [0.0, 1.0, 0.0]
+up = [0, 0, 1]
+fov_degrees = 55
+follow = "lid"
+
+[light]
+direction = [1.0, -2.0, 0.5]
+color = [1.0, 0.9, 0.8]
+ambient = 0.25
+
+[ground]
+enabled = false
+height = -2.5
+color = "#808080"
+grid_spacing = 0.5
+
+[output]
+directory = "renders/full"
+frames = false
+video = false
+crf = 0
+preset = "slow"
 )";
 
 TEST(SceneLoader, FullSceneGivesExactlyTheWrittenValues) {
@@ -189,6 +223,44 @@ TEST(SceneLoader, NearlyUnitOrientationIsNormalised) {
   EXPECT_EQ(q.z(), 0.0);
 }
 
+TEST(SceneLoader, FullSceneGivesExactlyTheWrittenRenderingValues) {
+  const Scene scene = parse_valid(kFullScene);
+  EXPECT_EQ(scene.render.width, 640);
+  EXPECT_EQ(scene.render.height, 360);
+  EXPECT_EQ(scene.fps, 30);
+  EXPECT_EQ(scene.render.msaa, 8);
+  EXPECT_EQ(scene.render.background, render::Color(0.1, 0.2, 0.3));
+  EXPECT_FALSE(scene.render.shadows);
+
+  ASSERT_TRUE(scene.camera.position.has_value());
+  EXPECT_EQ(*scene.camera.position, Vec3(6.0, 4.0, 8.0));
+  ASSERT_TRUE(scene.camera.look_at.has_value());
+  EXPECT_EQ(*scene.camera.look_at, Vec3(0.0, 1.0, 0.0));
+  EXPECT_EQ(scene.camera.up, Vec3(0.0, 0.0, 1.0));
+  EXPECT_EQ(scene.camera.fov_degrees, 55.0);
+  EXPECT_EQ(scene.camera.follow, "lid");
+
+  EXPECT_EQ(scene.render.light.direction, Vec3(1.0, -2.0, 0.5));
+  EXPECT_EQ(scene.render.light.color, render::Color(1.0, 0.9, 0.8));
+  EXPECT_EQ(scene.render.light.ambient, 0.25);
+
+  EXPECT_FALSE(scene.render.ground.enabled);
+  ASSERT_TRUE(scene.ground_height.has_value());
+  EXPECT_EQ(*scene.ground_height, -2.5);
+  EXPECT_EQ(scene.render.ground.color, render::Color(128 / 255.0, 128 / 255.0, 128 / 255.0));
+  EXPECT_EQ(scene.render.ground.grid_spacing, 0.5);
+
+  EXPECT_EQ(scene.output.directory, "renders/full");
+  EXPECT_FALSE(scene.output.frames);
+  EXPECT_FALSE(scene.output.video);
+  EXPECT_EQ(scene.output.crf, 0);
+  EXPECT_EQ(scene.output.preset, "slow");
+
+  ASSERT_FALSE(scene.bodies.empty());
+  // "#ff8000": each pair of hex digits is a component out of 255.
+  EXPECT_EQ(scene.bodies[0].color, render::Color(1.0, 128 / 255.0, 0.0));
+}
+
 TEST(SceneLoader, MinimalSceneTakesEveryDefault) {
   const Scene scene = parse_valid(R"(duration = 2.5
 [[bodies]]
@@ -204,6 +276,94 @@ mass = 1.0
   EXPECT_EQ(scene.bodies[0].name, "body0");
   EXPECT_EQ(scene.bodies[0].size, Vec3::Ones());
   EXPECT_EQ(scene.bodies[0].orientation.coeffs(), physics::Quat::Identity().coeffs());
+}
+
+TEST(SceneLoader, SceneWithoutRenderingTablesTakesEveryRenderingDefault) {
+  const Scene scene = parse_valid(R"(name = "quiet"
+duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)");
+  EXPECT_EQ(scene.render.width, 1280);
+  EXPECT_EQ(scene.render.height, 720);
+  EXPECT_EQ(scene.fps, 60);
+  EXPECT_EQ(scene.render.msaa, 4);
+  EXPECT_TRUE(scene.render.shadows);
+
+  // Left out, the camera is placed later to frame the whole motion.
+  EXPECT_FALSE(scene.camera.position.has_value());
+  EXPECT_FALSE(scene.camera.look_at.has_value());
+  EXPECT_EQ(scene.camera.up, Vec3::UnitY());
+  EXPECT_EQ(scene.camera.fov_degrees, 40.0);
+  EXPECT_TRUE(scene.camera.follow.empty());
+
+  // Left out, the ground is placed later below the whole motion.
+  EXPECT_FALSE(scene.ground_height.has_value());
+  EXPECT_TRUE(scene.render.ground.enabled);
+
+  EXPECT_EQ(scene.output.directory, "quiet");  // the scene's name
+  EXPECT_TRUE(scene.output.frames);
+  EXPECT_TRUE(scene.output.video);
+  EXPECT_EQ(scene.output.crf, 20);
+  EXPECT_EQ(scene.output.preset, "veryfast");
+
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  EXPECT_NE(scene.bodies[0].color, scene.bodies[1].color);  // from a palette, by index
+}
+
+TEST(SceneLoader, RenderingLimitsIncludeTheirEnds) {
+  const Scene low = parse_valid(R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = 16
+height = 16
+fps = 1
+msaa = 1
+[light]
+ambient = 0
+[ground]
+grid_spacing = 0
+[output]
+crf = 0
+)");
+  EXPECT_EQ(low.render.width, 16);
+  EXPECT_EQ(low.render.height, 16);
+  EXPECT_EQ(low.fps, 1);
+  EXPECT_EQ(low.render.msaa, 1);
+  EXPECT_EQ(low.render.light.ambient, 0.0);
+  EXPECT_EQ(low.render.ground.grid_spacing, 0.0);  // no grid
+  EXPECT_EQ(low.output.crf, 0);
+
+  const Scene high = parse_valid(R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = 8192
+height = 8192
+fps = 240
+msaa = 16
+[light]
+ambient = 1
+[output]
+crf = 51
+)");
+  EXPECT_EQ(high.render.width, 8192);
+  EXPECT_EQ(high.render.height, 8192);
+  EXPECT_EQ(high.fps, 240);
+  EXPECT_EQ(high.render.msaa, 16);
+  EXPECT_EQ(high.render.light.ambient, 1.0);
+  EXPECT_EQ(high.output.crf, 51);
 }
 
 TEST(SceneLoader, PhysicsTableMayOmitEitherSetting) {
@@ -804,6 +964,334 @@ mass = 1.0
 orientation = [1.0, 0.0, 0.0]
 )",
      "test.toml:6:15", "bodies[0].orientation", "found an array of 3"},
+    {"RenderWidthZero", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = 0
+)",
+     "test.toml:7:9", "render.width", "must be from 16 to 8192 (got 0)"},
+    {"RenderWidthBelowMinimum", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = 10
+)",
+     "test.toml:7:9", "render.width", "must be from 16 to 8192 (got 10)"},
+    {"RenderWidthBeyond8K", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = 9000
+)",
+     "test.toml:7:9", "render.width", "must be from 16 to 8192 (got 9000)"},
+    {"RenderWidthAsString", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = "wide"
+)",
+     "test.toml:7:9", "render.width", "expected a whole number, found a string"},
+    {"RenderHeightBelowMinimum", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+height = 15
+)",
+     "test.toml:7:10", "render.height", "must be from 16 to 8192 (got 15)"},
+    {"ZeroFps", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+fps = 0
+)",
+     "test.toml:7:7", "render.fps", "must be from 1 to 240 (got 0)"},
+    {"FpsAbove240", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+fps = 241
+)",
+     "test.toml:7:7", "render.fps", "must be from 1 to 240 (got 241)"},
+    {"MsaaNotAPowerOfTwo", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+msaa = 3
+)",
+     "test.toml:7:8", "render.msaa", "must be 1, 2, 4, 8 or 16"},
+    {"MsaaAbove16", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+msaa = 32
+)",
+     "test.toml:7:8", "render.msaa", "must be from 1 to 16 (got 32)"},
+    {"BackgroundComponentAboveOne", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+background = [1.2, 0, 0]
+)",
+     "test.toml:7:14", "render.background", "colour components must be from 0 to 1"},
+    {"BackgroundHexOfFiveDigits", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+background = "#12345"
+)",
+     "test.toml:7:14", "render.background",
+     "expected a colour \"#rrggbb\" or [r, g, b], found \"#12345\""},
+    {"BackgroundColourName", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+background = "red"
+)",
+     "test.toml:7:14", "render.background", "found \"red\""},
+    {"ShadowsAsNumber", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+shadows = 1
+)",
+     "test.toml:7:11", "render.shadows", "expected true or false, found a number"},
+    {"RenderIsNotATable", R"(duration = 1.0
+render = 3
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:2:10", "render", "expected a [render] table"},
+    {"UnknownRenderKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+samples = 4
+)",
+     "test.toml:7:1", "render.samples",
+     "unknown key (allowed here: background, fps, height, msaa, shadows, width)"},
+    {"ZeroFieldOfView", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[camera]
+fov_degrees = 0
+)",
+     "test.toml:7:15", "camera.fov_degrees", "less than 170 degrees (got 0)"},
+    {"FieldOfView180", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[camera]
+fov_degrees = 180
+)",
+     "test.toml:7:15", "camera.fov_degrees", "less than 170 degrees (got 180)"},
+    {"ZeroCameraUp", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[camera]
+up = [0, 0, 0]
+)",
+     "test.toml:7:6", "camera.up", "must not be the zero vector"},
+    {"CameraFollowsNoBody", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[camera]
+follow = "lid"
+)",
+     "test.toml:7:10", "camera.follow", "no body is named \"lid\""},
+    {"CameraLooksAtItsOwnPosition", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[camera]
+position = [1, 2, 3]
+look_at = [1, 2, 3]
+)",
+     "test.toml:8:11", "camera.look_at", "cannot look at its own position"},
+    {"UnknownCameraKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[camera]
+target = [0, 0, 0]
+)",
+     "test.toml:7:1", "camera.target",
+     "unknown key (allowed here: follow, fov_degrees, look_at, position, up)"},
+    {"ZeroLightDirection", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[light]
+direction = [0, 0, 0]
+)",
+     "test.toml:7:13", "light.direction", "must not be the zero vector"},
+    {"AmbientAboveOne", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[light]
+ambient = 1.5
+)",
+     "test.toml:7:11", "light.ambient", "must be from 0 to 1"},
+    {"UnknownLightKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[light]
+intensity = 2.0
+)",
+     "test.toml:7:1", "light.intensity", "unknown key (allowed here: ambient, color, direction)"},
+    {"NegativeGridSpacing", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[ground]
+grid_spacing = -1
+)",
+     "test.toml:7:16", "ground.grid_spacing", "must not be negative (got -1)"},
+    {"GroundEnabledAsString", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[ground]
+enabled = "yes"
+)",
+     "test.toml:7:11", "ground.enabled", "expected true or false, found a string"},
+    {"UnknownGroundKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[ground]
+colour = "#808080"
+)",
+     "test.toml:7:1", "ground.colour",
+     "unknown key (allowed here: color, enabled, grid_spacing, height)"},
+    {"OutputDirectoryClimbsOut", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[output]
+directory = "../up"
+)",
+     "test.toml:7:13", "output.directory", "relative folder inside the output folder"},
+    {"OutputDirectoryIsAbsolute", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[output]
+directory = "/abs"
+)",
+     "test.toml:7:13", "output.directory", "relative folder inside the output folder"},
+    {"OutputDirectoryIsEmpty", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[output]
+directory = ""
+)",
+     "test.toml:7:13", "output.directory", "relative folder inside the output folder"},
+    {"CrfAbove51", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[output]
+crf = 52
+)",
+     "test.toml:7:7", "output.crf", "must be from 0 to 51 (got 52)"},
+    {"UnknownPreset", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[output]
+preset = "fastest"
+)",
+     "test.toml:7:10", "output.preset", "unknown x264 preset \"fastest\""},
+    {"UnknownOutputKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[output]
+format = "gif"
+)",
+     "test.toml:7:1", "output.format",
+     "unknown key (allowed here: crf, directory, frames, preset, video)"},
+    {"BodyColourNotHex", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+color = "#gg0000"
+)",
+     "test.toml:6:9", "bodies[0].color",
+     "expected a colour \"#rrggbb\" or [r, g, b], found \"#gg0000\""},
+    {"RenderWidthWrittenAsADecimal", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = 1.5
+)",
+     "test.toml:7:9", "render.width", "expected a whole number, found 1.5"},
+    {"BodyColorOfTwoComponents", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+color = [0.5, 0.5]
+)",
+     "test.toml:6:9", "bodies[0].color", "colour \"#rrggbb\" or [r, g, b], found an array of 2"},
 };
 
 INSTANTIATE_TEST_SUITE_P(BadScenes, SceneLoaderRejects, ::testing::ValuesIn(kBadScenes),

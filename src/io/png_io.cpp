@@ -1,0 +1,245 @@
+#include "io/png_io.hpp"
+
+#include <png.h>
+
+#include <cerrno>
+#include <csetjmp>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+
+// libpng reports errors by calling an error function that must not return; it longjmps back to a
+// setjmp. A longjmp that skips a frame holding objects with non-trivial destructors is undefined
+// behaviour in C++, so every libpng call that can fail happens inside one of the small
+// *_guarded functions below, whose locals are all trivial and which set the jump target
+// themselves. Everything that owns memory (libpng's structs, buffers, the file) lives in the
+// caller, which the jump never crosses.
+
+namespace tumble::io {
+namespace {
+
+constexpr std::size_t kSignatureBytes = 8;
+// 100 megapixels is ~12x an 8K frame: larger headers are corrupt or hostile, and decoding them
+// would need gigabytes.
+constexpr std::uint64_t kMaxReadPixels = 100'000'000;
+
+// Where the error function leaves libpng's message before it jumps. Plain data.
+struct PngFailure {
+  char message[256];
+};
+
+[[noreturn]] void record_error_and_jump(png_structp png, png_const_charp message) {
+  auto* failure = static_cast<PngFailure*>(png_get_error_ptr(png));
+  std::snprintf(failure->message, sizeof failure->message, "%s", message);
+  png_longjmp(png, 1);
+}
+
+// Warnings (a damaged ancillary chunk, which libpng then skips) don't stop a read, and libpng's
+// default would print them to stderr.
+void ignore_warning(png_structp, png_const_charp) {}
+
+void write_to_file(png_structp png, png_bytep data, std::size_t length) {
+  auto* file = static_cast<std::FILE*>(png_get_io_ptr(png));
+  if (std::fwrite(data, 1, length, file) == length) return;
+  char message[128];
+  std::snprintf(message, sizeof message, "write failed: %s", std::strerror(errno));
+  png_error(png, message);
+}
+
+// AtomicFile::commit flushes and syncs once at the end.
+void flush_nothing(png_structp) {}
+
+void read_from_file(png_structp png, png_bytep data, std::size_t length) {
+  auto* file = static_cast<std::FILE*>(png_get_io_ptr(png));
+  if (std::fread(data, 1, length, file) == length) return;
+  if (!std::ferror(file)) png_error(png, "file ends early (truncated)");
+  char message[128];
+  std::snprintf(message, sizeof message, "read failed: %s", std::strerror(errno));
+  png_error(png, message);
+}
+
+// Owns a write png_struct and its png_info.
+class PngWriteStructs {
+ public:
+  explicit PngWriteStructs(PngFailure* failure)
+      : png_(png_create_write_struct(PNG_LIBPNG_VER_STRING, failure, record_error_and_jump,
+                                     ignore_warning)) {
+    if (png_) info_ = png_create_info_struct(png_);
+  }
+  ~PngWriteStructs() { png_destroy_write_struct(&png_, &info_); }
+  PngWriteStructs(const PngWriteStructs&) = delete;
+  PngWriteStructs& operator=(const PngWriteStructs&) = delete;
+
+  bool ok() const { return info_ != nullptr; }
+  png_structp png() const { return png_; }
+  png_infop info() const { return info_; }
+
+ private:
+  png_structp png_;
+  png_infop info_ = nullptr;
+};
+
+// Owns a read png_struct and its png_info.
+class PngReadStructs {
+ public:
+  explicit PngReadStructs(PngFailure* failure)
+      : png_(png_create_read_struct(PNG_LIBPNG_VER_STRING, failure, record_error_and_jump,
+                                    ignore_warning)) {
+    if (png_) info_ = png_create_info_struct(png_);
+  }
+  ~PngReadStructs() { png_destroy_read_struct(&png_, &info_, nullptr); }
+  PngReadStructs(const PngReadStructs&) = delete;
+  PngReadStructs& operator=(const PngReadStructs&) = delete;
+
+  bool ok() const { return info_ != nullptr; }
+  png_structp png() const { return png_; }
+  png_infop info() const { return info_; }
+
+ private:
+  png_structp png_;
+  png_infop info_ = nullptr;
+};
+
+bool encode_guarded(png_structp png, png_infop info, std::FILE* file, const Image& image,
+                    const PngSettings& settings) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_write_fn(png, file, write_to_file, flush_nothing);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_compression_level(png, settings.compression_level);
+  // PNG_ALL_FILTERS is libpng's own default for 8-bit RGB: per row, it keeps the filter whose
+  // output bytes, read as signed, have the smallest sum of magnitudes.
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, settings.filter ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
+  png_write_info(png, info);
+  for (int y = 0; y < image.height; ++y) png_write_row(png, image.row(y));
+  png_write_end(png, nullptr);
+  return true;
+}
+
+bool read_header_guarded(png_structp png, png_infop info, std::FILE* file, png_uint_32* width,
+                         png_uint_32* height) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_read_fn(png, file, read_from_file);
+  png_set_sig_bytes(png, kSignatureBytes);
+  png_read_info(png, info);
+  *width = png_get_image_width(png, info);
+  *height = png_get_image_height(png, info);
+  return true;
+}
+
+// Asks libpng for 8 bits per sample, RGB or RGBA, whatever the file stores.
+bool request_rgb8_guarded(png_structp png, png_infop info, int* channels, std::size_t* row_bytes) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_set_expand(png);    // palette -> RGB, grey below 8 bits -> 8 bits, tRNS -> alpha channel
+  png_set_scale_16(png);  // 16 -> 8 bits rounded to nearest (png_set_strip_16 would truncate)
+  png_set_gray_to_rgb(png);
+  png_set_interlace_handling(png);  // png_read_image then assembles Adam7 passes
+  png_read_update_info(png, info);
+  *channels = png_get_channels(png, info);
+  *row_bytes = png_get_rowbytes(png, info);
+  return true;
+}
+
+bool read_pixels_guarded(png_structp png, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(png))) return false;
+  png_read_image(png, rows);
+  png_read_end(png, nullptr);  // through IEND, so a file cut short after the pixels is an error
+  return true;
+}
+
+// (c a + 127) / 255 is c a / 255 rounded to nearest; it is never exactly halfway since 255 is odd.
+void composite_over_black(const std::vector<png_byte>& rgba, Image& out) {
+  const std::size_t pixels = out.rgb.size() / 3;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const unsigned alpha = rgba[4 * i + 3];
+    for (std::size_t c = 0; c < 3; ++c) {
+      out.rgb[3 * i + c] = static_cast<std::uint8_t>((rgba[4 * i + c] * alpha + 127) / 255);
+    }
+  }
+}
+
+std::string size_text(std::int64_t width, std::int64_t height) {
+  return std::to_string(width) + "x" + std::to_string(height);
+}
+
+}  // namespace
+
+std::string write_png(const std::string& path, const Image& image, const PngSettings& settings) {
+  if (settings.compression_level < 0 || settings.compression_level > 9) {
+    return path + ": PNG compression level must be 0 to 9, got " +
+           std::to_string(settings.compression_level);
+  }
+  if (image.width < 1 || image.height < 1 ||
+      image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
+    return path + ": cannot write a " + size_text(image.width, image.height) + " image holding " +
+           std::to_string(image.rgb.size()) + " bytes as PNG";
+  }
+  AtomicFile file(path);
+  if (!file.ok()) return file.error();
+  PngFailure failure{};
+  PngWriteStructs structs(&failure);
+  if (!structs.ok()) return path + ": cannot write PNG: libpng could not allocate its state";
+  if (!encode_guarded(structs.png(), structs.info(), file.stream(), image, settings)) {
+    return path + ": cannot write PNG: " + failure.message;
+  }
+  if (!file.commit()) return file.error();
+  return {};
+}
+
+std::string read_png(const std::string& path, Image& out) {
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) return path + ": cannot open: " + std::strerror(errno);
+  png_byte signature[kSignatureBytes];
+  if (std::fread(signature, 1, kSignatureBytes, file.get()) != kSignatureBytes ||
+      png_sig_cmp(signature, 0, kSignatureBytes) != 0) {
+    if (std::ferror(file.get())) return path + ": cannot read: " + std::strerror(errno);
+    return path + ": not a PNG file (it does not start with the PNG signature)";
+  }
+
+  PngFailure failure{};
+  PngReadStructs structs(&failure);
+  if (!structs.ok()) return path + ": cannot read PNG: libpng could not allocate its state";
+  const std::string cannot_decode = path + ": cannot decode PNG: ";
+  png_uint_32 width = 0;
+  png_uint_32 height = 0;
+  if (!read_header_guarded(structs.png(), structs.info(), file.get(), &width, &height)) {
+    return cannot_decode + failure.message;
+  }
+  if (std::uint64_t{width} * height > kMaxReadPixels) {
+    return path + ": image is " + size_text(width, height) +
+           ", more than the 100 megapixels tumble will read";
+  }
+  int channels = 0;
+  std::size_t row_bytes = 0;
+  if (!request_rgb8_guarded(structs.png(), structs.info(), &channels, &row_bytes)) {
+    return cannot_decode + failure.message;
+  }
+  if ((channels != 3 && channels != 4) || row_bytes != std::size_t{width} * channels) {
+    return cannot_decode + "unexpected pixel layout after conversion (" + std::to_string(channels) +
+           " channels)";
+  }
+
+  try {
+    // libpng's default limit of 1,000,000 per side keeps both within int.
+    Image image(static_cast<int>(width), static_cast<int>(height));
+    std::vector<png_byte> rgba(channels == 4 ? row_bytes * height : 0);
+    png_byte* pixels = channels == 4 ? rgba.data() : image.rgb.data();
+    std::vector<png_bytep> rows(height);
+    for (png_uint_32 y = 0; y < height; ++y) rows[y] = pixels + y * row_bytes;
+    if (!read_pixels_guarded(structs.png(), rows.data())) return cannot_decode + failure.message;
+    if (channels == 4) composite_over_black(rgba, image);
+    out = std::move(image);
+  } catch (const std::bad_alloc&) {
+    return path + ": not enough memory to read a " + size_text(width, height) + " image";
+  }
+  return {};
+}
+
+}  // namespace tumble::io

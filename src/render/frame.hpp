@@ -1,0 +1,62 @@
+// What the renderer draws, as plain data: a camera, lights, and boxes with poses. It knows
+// nothing of bodies, forces or time.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace tumble::render {
+
+using Vec3 = Eigen::Vector3d;
+using Quat = Eigen::Quaterniond;
+
+// Colours are sRGB-encoded components in [0, 1], as people write them; the renderer lights in
+// linear space and encodes the result back to sRGB.
+using Color = Eigen::Vector3d;
+
+struct Camera {
+  Vec3 position = Vec3(4.0, 3.0, 6.0);  // world frame (m)
+  Vec3 look_at = Vec3::Zero();          // world frame (m)
+  Vec3 up = Vec3::UnitY();              // world frame, need not be unit
+  double fov_degrees = 40.0;            // vertical field of view
+};
+
+struct DirectionalLight {
+  Vec3 direction = Vec3(0.25, -1.2, -0.75);  // the way the light travels, world frame
+  Color color = Color(1.0, 1.0, 1.0);       // key light colour and intensity (sRGB)
+  double ambient = 0.3;                     // ambient intensity, a fraction of the key
+};
+
+struct Ground {
+  bool enabled = true;
+  double height = -1.5;                  // y of the plane (m)
+  Color color = Color(0.62, 0.64, 0.66);  // sRGB
+  double grid_spacing = 1.0;             // m between grid lines; 0 = no grid
+};
+
+// A box (a cube when the edges are equal) at a pose.
+struct Box {
+  Vec3 position = Vec3::Zero();          // centre, world frame (m)
+  Quat orientation = Quat::Identity();   // body-to-world rotation
+  Vec3 size = Vec3::Ones();              // edge lengths along the body axes (m)
+  Color color = Color(0.85, 0.35, 0.2);  // sRGB
+};
+
+// Fixed for a whole render.
+struct RenderSettings {
+  int width = 1280;
+  int height = 720;
+  int msaa = 4;  // samples per pixel; 1 = no multisampling
+  Color background = Color(0.78, 0.84, 0.9);
+  DirectionalLight light;
+  Ground ground;
+  bool shadows = true;
+};
+
+// Changes every frame.
+struct FrameView {
+  Camera camera;
+  std::vector<Box> boxes;
+};
+
+}  // namespace tumble::render

@@ -1,0 +1,82 @@
+// The OSMesa (Mesa's software off-screen) implementation of OffscreenContext.
+#include <GL/osmesa.h>
+
+#include <vector>
+
+#include "render/gl.hpp"
+#include "render/offscreen_context.hpp"
+
+namespace tumble::render {
+namespace {
+
+class OsmesaContext final : public OffscreenContext {
+ public:
+  OsmesaContext(OSMesaContext context, int width, int height)
+      : context_(context),
+        width_(width),
+        height_(height),
+        buffer_(static_cast<std::size_t>(width) * height * 4) {}
+  ~OsmesaContext() override {
+    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);  // release the buffer before the context
+    OSMesaDestroyContext(context_);
+  }
+
+  bool make_current() {
+    if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_)) {
+      return false;
+    }
+    OSMesaPixelStore(OSMESA_Y_UP, 0);  // top row first in buffer_, as images are stored
+    return true;
+  }
+
+  const std::uint8_t* pixels() const override { return buffer_.data(); }
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  std::string description() const override {
+    const auto text = [](GLenum name) {
+      const GLubyte* value = glGetString(name);
+      return value ? std::string(reinterpret_cast<const char*>(value)) : std::string("?");
+    };
+    return text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION) + " (OSMesa)";
+  }
+
+ private:
+  OSMesaContext context_;
+  int width_;
+  int height_;
+  std::vector<std::uint8_t> buffer_;
+};
+
+}  // namespace
+
+std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height,
+                                                           std::string& error) {
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            24,
+                            OSMESA_STENCIL_BITS,
+                            0,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            3,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            3,
+                            0};
+  OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
+  if (!context) {
+    error = "OSMesaCreateContextAttribs failed: no OpenGL 3.3 core context (is Mesa's OSMesa "
+            "installed? Debian: libosmesa6)";
+    return nullptr;
+  }
+  auto out = std::make_unique<OsmesaContext>(context, width, height);
+  if (!out->make_current()) {
+    error = "OSMesaMakeCurrent failed for a " + std::to_string(width) + "x" +
+            std::to_string(height) + " buffer";
+    return nullptr;
+  }
+  return out;
+}
+
+}  // namespace tumble::render

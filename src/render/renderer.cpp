@@ -1,0 +1,371 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/gl.hpp"
+#include "render/offscreen_context.hpp"
+#include "render/shader_program.hpp"
+
+namespace tumble::render {
+namespace {
+
+using Mat4 = Eigen::Matrix4d;
+using Mat4f = Eigen::Matrix4f;
+using Mat3f = Eigen::Matrix3f;
+
+constexpr int kShadowMapSize = 2048;  // texels per side
+
+// The sRGB decoding function (IEC 61966-2-1): written colours to linear light.
+Eigen::Vector3f linear_from_srgb(const Color& srgb) {
+  Eigen::Vector3f out;
+  for (int i = 0; i < 3; ++i) {
+    const double c = std::clamp(srgb[i], 0.0, 1.0);
+    out[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+  }
+  return out;
+}
+
+Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up) {
+  const Vec3 forward = (target - eye).normalized();
+  Vec3 side = forward.cross(up);
+  // Looking along `up`: any perpendicular will do.
+  if (side.squaredNorm() < 1e-12) side = forward.cross(forward.unitOrthogonal());
+  side.normalize();
+  const Vec3 true_up = side.cross(forward);
+  Mat4 view = Mat4::Identity();
+  view.row(0).head<3>() = side;
+  view.row(1).head<3>() = true_up;
+  view.row(2).head<3>() = -forward;
+  view(0, 3) = -side.dot(eye);
+  view(1, 3) = -true_up.dot(eye);
+  view(2, 3) = forward.dot(eye);
+  return view;
+}
+
+Mat4 perspective(double fov_y_radians, double aspect, double near, double far) {
+  const double f = 1.0 / std::tan(fov_y_radians / 2.0);
+  Mat4 m = Mat4::Zero();
+  m(0, 0) = f / aspect;
+  m(1, 1) = f;
+  m(2, 2) = (far + near) / (near - far);
+  m(2, 3) = 2.0 * far * near / (near - far);
+  m(3, 2) = -1.0;
+  return m;
+}
+
+Mat4 orthographic(double half_width, double near, double far) {
+  Mat4 m = Mat4::Identity();
+  m(0, 0) = 1.0 / half_width;
+  m(1, 1) = 1.0 / half_width;
+  m(2, 2) = -2.0 / (far - near);
+  m(2, 3) = -(far + near) / (far - near);
+  return m;
+}
+
+Mat4 model_matrix(const Box& box) {
+  Mat4 m = Mat4::Identity();
+  m.topLeftCorner<3, 3>() = box.orientation.normalized().toRotationMatrix() * box.size.asDiagonal();
+  m.topRightCorner<3, 1>() = box.position;
+  return m;
+}
+
+void set_matrix(GLint location, const Mat4& m) {
+  const Mat4f f = m.cast<float>();
+  glUniformMatrix4fv(location, 1, GL_FALSE, f.data());  // Eigen is column-major, as GL wants
+}
+
+void set_vector(GLint location, const Eigen::Vector3f& v) { glUniform3fv(location, 1, v.data()); }
+
+// The unit cube, four vertices per face so that each face has its own normal.
+struct CubeVertex {
+  float position[3];
+  float normal[3];
+};
+
+std::vector<CubeVertex> cube_vertices() {
+  std::vector<CubeVertex> out;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const float sign : {1.0f, -1.0f}) {
+      const int u = (axis + 1) % 3;
+      const int v = (axis + 2) % 3;
+      // Corners counter-clockwise seen from outside: (u, v) = (-,-), (+,-), (+,+), (-,+),
+      // mirrored on the negative face to keep the winding.
+      const float us[4] = {-0.5f, 0.5f, 0.5f, -0.5f};
+      const float vs[4] = {-0.5f, -0.5f, 0.5f, 0.5f};
+      for (int corner = 0; corner < 4; ++corner) {
+        CubeVertex vertex{};
+        vertex.position[axis] = 0.5f * sign;
+        vertex.position[u] = us[corner] * sign;
+        vertex.position[v] = vs[corner];
+        vertex.normal[axis] = sign;
+        out.push_back(vertex);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+struct Renderer::Resources {
+  RenderSettings settings;
+  std::unique_ptr<OffscreenContext> context;
+  ShaderProgram body_program;
+  ShaderProgram ground_program;
+  ShaderProgram shadow_program;
+  GLuint cube_vao = 0, cube_vbo = 0, cube_ebo = 0;
+  GLuint ground_vao = 0, ground_vbo = 0;
+  GLuint shadow_fbo = 0, shadow_texture = 0;
+  GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
+
+  ~Resources() {
+    if (!context) return;
+    glDeleteVertexArrays(1, &cube_vao);
+    glDeleteVertexArrays(1, &ground_vao);
+    const GLuint buffers[] = {cube_vbo, cube_ebo, ground_vbo};
+    glDeleteBuffers(3, buffers);
+    glDeleteFramebuffers(1, &shadow_fbo);
+    glDeleteFramebuffers(1, &msaa_fbo);
+    glDeleteTextures(1, &shadow_texture);
+    const GLuint renderbuffers[] = {msaa_color, msaa_depth};
+    glDeleteRenderbuffers(2, renderbuffers);
+  }
+
+  std::string create(const std::string& shader_directory);
+  void draw_boxes(const std::vector<Box>& boxes, const ShaderProgram& program, bool lit);
+};
+
+std::string Renderer::Resources::create(const std::string& shader_directory) {
+  std::string error;
+  context = create_offscreen_context(settings.width, settings.height, error);
+  if (!context) return error;
+
+  body_program =
+      ShaderProgram::build(shader_directory, {"body.vert"}, {"lighting.glsl", "body.frag"}, error);
+  if (!body_program.valid()) return error;
+  ground_program = ShaderProgram::build(shader_directory, {"ground.vert"},
+                                        {"lighting.glsl", "ground.frag"}, error);
+  if (!ground_program.valid()) return error;
+  shadow_program =
+      ShaderProgram::build(shader_directory, {"shadow.vert"}, {"shadow.frag"}, error);
+  if (!shadow_program.valid()) return error;
+
+  // Cube: positions and normals interleaved, two triangles per face.
+  const std::vector<CubeVertex> vertices = cube_vertices();
+  std::vector<GLushort> indices;
+  for (GLushort face = 0; face < 6; ++face) {
+    const GLushort base = face * 4;
+    for (const GLushort corner : {0, 1, 2, 0, 2, 3}) indices.push_back(base + corner);
+  }
+  glGenVertexArrays(1, &cube_vao);
+  glBindVertexArray(cube_vao);
+  glGenBuffers(1, &cube_vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, cube_vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(CubeVertex)),
+               vertices.data(), GL_STATIC_DRAW);
+  glGenBuffers(1, &cube_ebo);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, cube_ebo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLushort)),
+               indices.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex), nullptr);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex),
+                        reinterpret_cast<const void*>(offsetof(CubeVertex, normal)));
+  glEnableVertexAttribArray(1);
+
+  // Ground: one square as a triangle strip.
+  const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+  glGenVertexArrays(1, &ground_vao);
+  glBindVertexArray(ground_vao);
+  glGenBuffers(1, &ground_vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, ground_vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+  glBindVertexArray(0);
+
+  if (settings.shadows) {
+    glGenTextures(1, &shadow_texture);
+    glBindTexture(GL_TEXTURE_2D, shadow_texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kShadowMapSize, kShadowMapSize, 0,
+                 GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Outside the map nothing casts a shadow: the border is the far plane.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    const float border[] = {1, 1, 1, 1};
+    glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glGenFramebuffers(1, &shadow_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_texture, 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      return "shadow-map framebuffer is incomplete";
+    }
+  }
+
+  if (settings.msaa > 1) {
+    GLint max_samples = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    if (settings.msaa > max_samples) {
+      return "msaa = " + std::to_string(settings.msaa) + " is more than this OpenGL allows (" +
+             std::to_string(max_samples) + ")";
+    }
+    glGenFramebuffers(1, &msaa_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
+    glGenRenderbuffers(1, &msaa_color);
+    glBindRenderbuffer(GL_RENDERBUFFER, msaa_color);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings.msaa, GL_RGBA8, settings.width,
+                                     settings.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color);
+    glGenRenderbuffers(1, &msaa_depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings.msaa, GL_DEPTH_COMPONENT24,
+                                     settings.width, settings.height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      return "multisampled framebuffer (" + std::to_string(settings.msaa) + "x) is incomplete";
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (glGetError() != GL_NO_ERROR) return "OpenGL error while setting up the renderer";
+  return {};
+}
+
+void Renderer::Resources::draw_boxes(const std::vector<Box>& boxes, const ShaderProgram& program,
+                                     bool lit) {
+  glBindVertexArray(cube_vao);
+  const GLint model_location = program.uniform("u_model");
+  for (const Box& box : boxes) {
+    const Mat4 model = model_matrix(box);
+    set_matrix(model_location, model);
+    if (lit) {
+      const Mat3f normal_matrix = box.orientation.normalized().toRotationMatrix().cast<float>();
+      glUniformMatrix3fv(program.uniform("u_normal_matrix"), 1, GL_FALSE, normal_matrix.data());
+      set_vector(program.uniform("u_size"), box.size.cast<float>());
+      set_vector(program.uniform("u_albedo"), linear_from_srgb(box.color));
+    }
+    glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_SHORT, nullptr);
+  }
+}
+
+Renderer::Renderer(std::unique_ptr<Resources> resources) : resources_(std::move(resources)) {}
+Renderer::~Renderer() = default;
+
+std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
+                                           const std::string& shader_directory,
+                                           std::string& error) {
+  auto resources = std::make_unique<Resources>();
+  resources->settings = settings;
+  error = resources->create(shader_directory);
+  if (!error.empty()) return nullptr;
+  return std::unique_ptr<Renderer>(new Renderer(std::move(resources)));
+}
+
+std::string Renderer::description() const { return resources_->context->description(); }
+
+void Renderer::draw(const FrameView& view, io::Image& out) {
+  Resources& r = *resources_;
+  const RenderSettings& s = r.settings;
+  const Camera& camera = view.camera;
+
+  // The part of the world worth lighting and showing: a sphere around the look-at point that
+  // holds every box.
+  double radius = 1.0;
+  for (const Box& box : view.boxes) {
+    radius = std::max(radius, (box.position - camera.look_at).norm() + 0.5 * box.size.norm());
+  }
+  const double camera_distance = (camera.position - camera.look_at).norm();
+  const double near = std::max(0.01, 0.05 * std::max(camera_distance - radius, 0.1));
+  const double far = camera_distance + 4.0 * radius + 100.0;
+  const Mat4 view_projection =
+      perspective(camera.fov_degrees * M_PI / 180.0,
+                  static_cast<double>(s.width) / static_cast<double>(s.height), near, far) *
+      look_at(camera.position, camera.look_at, camera.up);
+
+  const Vec3 light_direction = s.light.direction.normalized();
+  const Mat4 light_view_projection =
+      orthographic(radius, 0.1, 4.0 * radius + 0.1) *
+      look_at(camera.look_at - 2.0 * radius * light_direction, camera.look_at,
+              std::abs(light_direction.y()) > 0.99 ? Vec3::UnitZ() : Vec3::UnitY());
+
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+
+  if (s.shadows) {
+    glBindFramebuffer(GL_FRAMEBUFFER, r.shadow_fbo);
+    glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glUseProgram(r.shadow_program.id());
+    set_matrix(r.shadow_program.uniform("u_light_view_projection"), light_view_projection);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 2.0f);
+    r.draw_boxes(view.boxes, r.shadow_program, false);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+
+  glBindFramebuffer(GL_FRAMEBUFFER, s.msaa > 1 ? r.msaa_fbo : 0);
+  glViewport(0, 0, s.width, s.height);
+  // The shaders encode to sRGB themselves, so the clear colour is given encoded too.
+  glClearColor(static_cast<float>(s.background.x()), static_cast<float>(s.background.y()),
+               static_cast<float>(s.background.z()), 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
+
+  const auto set_common = [&](const ShaderProgram& program) {
+    glUseProgram(program.id());
+    set_matrix(program.uniform("u_view_projection"), view_projection);
+    set_matrix(program.uniform("u_light_view_projection"), light_view_projection);
+    set_vector(program.uniform("u_light_direction"), light_direction.cast<float>());
+    set_vector(program.uniform("u_light_color"), linear_from_srgb(s.light.color));
+    glUniform1f(program.uniform("u_ambient"), static_cast<float>(s.light.ambient));
+    set_vector(program.uniform("u_camera_position"), camera.position.cast<float>());
+    glUniform1i(program.uniform("u_shadows"), s.shadows ? 1 : 0);
+    glUniform1i(program.uniform("u_shadow_map"), 0);
+  };
+
+  if (s.ground.enabled) {
+    set_common(r.ground_program);
+    const Vec3 center(camera.look_at.x(), s.ground.height, camera.look_at.z());
+    const double half_extent = std::max(30.0, 8.0 * (camera_distance + radius));
+    set_vector(r.ground_program.uniform("u_center"), center.cast<float>());
+    glUniform1f(r.ground_program.uniform("u_half_extent"), static_cast<float>(half_extent));
+    set_vector(r.ground_program.uniform("u_albedo"), linear_from_srgb(s.ground.color));
+    set_vector(r.ground_program.uniform("u_background"), linear_from_srgb(s.background));
+    glUniform1f(r.ground_program.uniform("u_grid_spacing"),
+                static_cast<float>(s.ground.grid_spacing));
+    glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
+    glBindVertexArray(r.ground_vao);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glEnable(GL_CULL_FACE);
+  }
+
+  set_common(r.body_program);
+  r.draw_boxes(view.boxes, r.body_program, true);
+
+  if (s.msaa > 1) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.msaa_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, s.width, s.height, 0, 0, s.width, s.height, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+  glFinish();
+
+  // RGBA, top row first (the context stores it so) to RGB.
+  if (out.width != s.width || out.height != s.height) out = io::Image(s.width, s.height);
+  const std::uint8_t* rgba = r.context->pixels();
+  const std::size_t pixel_count = static_cast<std::size_t>(s.width) * s.height;
+  for (std::size_t i = 0; i < pixel_count; ++i) {
+    out.rgb[3 * i + 0] = rgba[4 * i + 0];
+    out.rgb[3 * i + 1] = rgba[4 * i + 1];
+    out.rgb[3 * i + 2] = rgba[4 * i + 2];
+  }
+}
+
+}  // namespace tumble::render

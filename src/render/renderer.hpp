@@ -1,0 +1,38 @@
+// Draws a FrameView into an image: shadow pass from the key light, then the ground and the boxes
+// into a multisampled framebuffer, resolved into the off-screen context's buffer.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "io/image.hpp"
+#include "render/frame.hpp"
+
+namespace tumble::render {
+
+class Renderer {
+ public:
+  // Creates the off-screen context (current on the calling thread from then on), loads the
+  // shaders from `shader_directory` and the GPU buffers. On failure returns null and sets
+  // `error` (a file name and compiler log for shader errors).
+  static std::unique_ptr<Renderer> create(const RenderSettings& settings,
+                                          const std::string& shader_directory, std::string& error);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Draws one frame into `out` (resized to the settings' width and height). Must be called on
+  // the thread that created the renderer.
+  void draw(const FrameView& view, io::Image& out);
+
+  // The GL implementation in use, for --verbose.
+  std::string description() const;
+
+  struct Resources;  // GL objects, defined in renderer.cpp
+
+ private:
+  explicit Renderer(std::unique_ptr<Resources> resources);
+  std::unique_ptr<Resources> resources_;
+};
+
+}  // namespace tumble::render

@@ -1,0 +1,117 @@
+#include "scene/render_tables.hpp"
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+
+namespace tumble::scene::detail {
+namespace {
+
+// Largest image side: 8K. Bigger is almost surely a typo, and costs minutes per frame here.
+constexpr std::int64_t kMaxImageSide = 8192;
+constexpr std::array<std::string_view, 10> kPresets = {
+    "ultrafast", "superfast", "veryfast", "faster",   "fast",
+    "medium",    "slow",      "slower",   "veryslow", "placebo"};
+
+void read_render(TableReader& in, Scene& scene) {
+  render::RenderSettings& r = scene.render;
+  r.width = static_cast<int>(in.optional_integer("width", r.width, 16, kMaxImageSide));
+  r.height = static_cast<int>(in.optional_integer("height", r.height, 16, kMaxImageSide));
+  scene.fps = static_cast<int>(in.optional_integer("fps", scene.fps, 1, 240));
+  r.msaa = static_cast<int>(in.optional_integer("msaa", r.msaa, 1, 16));
+  if (r.msaa & (r.msaa - 1)) {
+    in.fail("msaa",
+            "must be 1, 2, 4, 8 or 16 samples per pixel (got " + std::to_string(r.msaa) + ")");
+  }
+  r.background = in.optional_color("background", r.background);
+  r.shadows = in.optional_bool("shadows", r.shadows);
+  in.reject_unknown_keys();
+}
+
+void read_camera(TableReader& in, Scene& scene) {
+  CameraSpec& c = scene.camera;
+  if (in.has("position")) c.position = in.required_vector("position");
+  if (in.has("look_at")) c.look_at = in.required_vector("look_at");
+  c.up = in.optional_vector("up", c.up);
+  if (c.up.norm() == 0.0) in.fail("up", "must not be the zero vector");
+  c.fov_degrees = in.optional_number("fov_degrees", c.fov_degrees);
+  if (!(c.fov_degrees > 1.0 && c.fov_degrees < 170.0)) {
+    in.fail("fov_degrees", "must be more than 1 and less than 170 degrees (got " +
+                               format_number(c.fov_degrees) + ")");
+  }
+  c.follow = in.optional_string("follow", "");
+  if (!c.follow.empty() &&
+      std::none_of(scene.bodies.begin(), scene.bodies.end(),
+                   [&](const BodySpec& body) { return body.name == c.follow; })) {
+    in.fail("follow", "no body is named \"" + c.follow + "\"");
+  }
+  if (c.position && c.look_at && (*c.position - *c.look_at).norm() == 0.0) {
+    in.fail("look_at", "the camera cannot look at its own position");
+  }
+  in.reject_unknown_keys();
+}
+
+void read_light(TableReader& in, Scene& scene) {
+  render::DirectionalLight& l = scene.render.light;
+  l.direction = in.optional_vector("direction", l.direction);
+  if (l.direction.norm() == 0.0) in.fail("direction", "must not be the zero vector");
+  l.color = in.optional_color("color", l.color);
+  l.ambient = in.optional_number("ambient", l.ambient);
+  if (l.ambient < 0.0 || l.ambient > 1.0) {
+    in.fail("ambient", "must be from 0 to 1 (got " + format_number(l.ambient) + ")");
+  }
+  in.reject_unknown_keys();
+}
+
+void read_ground(TableReader& in, Scene& scene) {
+  render::Ground& g = scene.render.ground;
+  g.enabled = in.optional_bool("enabled", g.enabled);
+  if (in.has("height")) scene.ground_height = in.required_number("height");
+  g.color = in.optional_color("color", g.color);
+  g.grid_spacing = in.optional_number("grid_spacing", g.grid_spacing);
+  require_non_negative(in, "grid_spacing", g.grid_spacing);
+  in.reject_unknown_keys();
+}
+
+void read_output(TableReader& in, Scene& scene) {
+  OutputSpec& o = scene.output;
+  o.directory = in.optional_string("directory", o.directory);
+  // The scene chooses a folder below the output root, never a place elsewhere.
+  const std::filesystem::path directory(o.directory);
+  const bool escapes =
+      directory.is_absolute() || std::any_of(directory.begin(), directory.end(),
+                                             [](const auto& part) { return part == ".."; });
+  if (o.directory.empty() || escapes) {
+    in.fail("directory",
+            "must be a relative folder inside the output folder (no \"..\", not absolute)");
+  }
+  o.frames = in.optional_bool("frames", o.frames);
+  o.video = in.optional_bool("video", o.video);
+  o.crf = static_cast<int>(in.optional_integer("crf", o.crf, 0, 51));
+  o.preset = in.optional_string("preset", o.preset);
+  if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end()) {
+    in.fail("preset", "unknown x264 preset \"" + o.preset +
+                          "\" (ultrafast, superfast, veryfast, faster, fast, medium, slow, "
+                          "slower, veryslow, placebo)");
+  }
+  in.reject_unknown_keys();
+}
+
+}  // namespace
+
+void read_render_tables(TableReader& root, Scene& scene) {
+  scene.output.directory = scene.name;
+  const auto read = [&](std::string_view key, void (*reader)(TableReader&, Scene&)) {
+    if (const toml::table* table = root.optional_table(key)) {
+      TableReader in(*table, std::string(key), root.file());
+      reader(in, scene);
+    }
+  };
+  read("render", read_render);
+  read("camera", read_camera);
+  read("light", read_light);
+  read("ground", read_ground);
+  read("output", read_output);
+}
+
+}  // namespace tumble::scene::detail

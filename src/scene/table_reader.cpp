@@ -1,0 +1,94 @@
+#include "scene/table_reader.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+namespace tumble::scene::detail {
+
+std::string_view type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    default:
+      return "a date or time";
+  }
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string format_number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+void require_positive(TableReader& reader, std::string_view key, double value) {
+  if (!(value > 0.0)) reader.fail(key, "must be greater than 0 (got " + format_number(value) + ")");
+}
+
+void require_non_negative(TableReader& reader, std::string_view key, double value) {
+  if (value < 0.0) reader.fail(key, "must not be negative (got " + format_number(value) + ")");
+}
+
+bool is_safe_name(const std::string& name) {
+  if (name.empty() || name.front() == '.' || name.size() > 100) return false;
+  for (const char c : name) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-' || c == '.';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+Vec3 TableReader::optional_color(std::string_view key, const Vec3& fallback) {
+  if (!has(key)) return fallback;
+  const toml::node& node = *table_.get(key);
+  if (node.is_string()) {
+    const std::string text = *node.value<std::string>();
+    const bool hex = text.size() == 7 && text[0] == '#' &&
+                     text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
+    if (!hex) fail(key, "expected a colour \"#rrggbb\" or [r, g, b], found \"" + text + "\"");
+    Vec3 out;
+    for (int i = 0; i < 3; ++i) {
+      out[i] = std::stoi(text.substr(1 + 2 * static_cast<std::size_t>(i), 2), nullptr, 16) / 255.0;
+    }
+    return out;
+  }
+  const toml::array* array = node.as_array();
+  if (!array || array->size() != 3) {
+    fail(key, "expected a colour \"#rrggbb\" or [r, g, b], found " +
+                  (array ? "an array of " + std::to_string(array->size())
+                         : std::string(type_name(node))));
+  }
+  const Vec3 out = vector(key, node);
+  if (out.minCoeff() < 0.0 || out.maxCoeff() > 1.0) {
+    fail(key, "colour components must be from 0 to 1 (got [" + format_number(out.x()) + ", " +
+                  format_number(out.y()) + ", " + format_number(out.z()) + "])");
+  }
+  return out;
+}
+
+}  // namespace tumble::scene::detail

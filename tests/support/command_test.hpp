@@ -1,0 +1,64 @@
+// A fixture for end-to-end tests that run the real `tumble` executable in a fresh folder, the way
+// users and scripts run it, and look at its exit code, output and files.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace tumble::testing {
+
+namespace fs = std::filesystem;
+
+inline std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct Outcome {
+  int exit_code;    // -1 if the process died by a signal
+  std::string out;  // standard output
+  std::string err;  // standard error
+};
+
+class CommandTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(::testing::TempDir()) /
+           ("tumble_" + std::string(test->test_suite_name()) + "_" + test->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name, std::ios::binary) << text;
+    return dir_ / name;
+  }
+
+  // Runs `tumble ARGUMENTS` with standard output and error captured.
+  Outcome tumble(const std::string& arguments) const {
+    const std::string command = std::string(TUMBLE_EXECUTABLE) + " " + arguments + " >" +
+                                path("stdout") + " 2>" + path("stderr");
+    const int status = std::system(command.c_str());
+    Outcome outcome{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(dir_ / "stdout"),
+                    read_file(dir_ / "stderr")};
+    fs::remove(dir_ / "stdout");
+    fs::remove(dir_ / "stderr");
+    return outcome;
+  }
+
+  fs::path dir_;
+};
+
+}  // namespace tumble::testing
