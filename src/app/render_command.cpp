@@ -209,8 +209,8 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   io::Image image;
   for (std::int64_t k = first; k < end; ++k) {
     stage_start = Clock::now();
-    const auto states = simulation.states_at(static_cast<double>(k) / scene.fps);
-    const render::FrameView view = frame_view(scene, framing, states);
+    const double t = static_cast<double>(k) / scene.fps;
+    const render::FrameView view = frame_view(scene, framing, simulation.states_at(t), t);
     times.simulate += seconds_since(stage_start);
 
     stage_start = Clock::now();

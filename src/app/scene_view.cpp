@@ -26,6 +26,16 @@ Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count) {
     }
   }
 
+  // Spring anchors are drawn too: keep them in the picture.
+  for (const scene::BodySpec& body : scene.bodies) {
+    for (const physics::ForceLaw& law : body.forces) {
+      if (const auto* spring = std::get_if<physics::Spring>(&law)) {
+        low = low.cwiseMin(spring->anchor);
+        high = high.cwiseMax(spring->anchor);
+      }
+    }
+  }
+
   Framing out;
   const physics::Vec3 center = 0.5 * (low + high);
   const double radius = 0.5 * (high - low).norm() + largest_radius;
@@ -50,8 +60,48 @@ Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count) {
   return out;
 }
 
+namespace {
+
+const render::Color kSpringColor(0.22, 0.23, 0.26);
+const render::Color kPushColor(0.98, 0.80, 0.15);
+
+// A thin box along the segment from `from` to `to`: how springs and pushes are drawn.
+render::Box rod(const physics::Vec3& from, const physics::Vec3& to, double thickness,
+                const render::Color& color) {
+  const physics::Vec3 along = to - from;
+  return render::Box{
+      .position = 0.5 * (from + to),
+      .orientation = physics::Quat::FromTwoVectors(physics::Vec3::UnitZ(), along),
+      .size = physics::Vec3(thickness, thickness, std::max(along.norm(), thickness)),
+      .color = color};
+}
+
+// Springs (a rod and an anchor block) and active pushes (a rod ending at the pushed point), so
+// that what moves a body can be seen. Sizes scale with the body.
+void add_force_visuals(const scene::BodySpec& body, const physics::BodyState& state, double t,
+                       std::vector<render::Box>& out) {
+  const double scale = body.size.maxCoeff();
+  for (const physics::ForceLaw& law : body.forces) {
+    if (const auto* spring = std::get_if<physics::Spring>(&law)) {
+      const physics::Vec3 end = physics::body_point_to_world(state, spring->attachment);
+      out.push_back(rod(spring->anchor, end, 0.04 * scale, kSpringColor));
+      out.push_back(render::Box{.position = spring->anchor,
+                                .size = physics::Vec3::Constant(0.15 * scale),
+                                .color = kSpringColor});
+    } else if (const auto* push = std::get_if<physics::ForceAtPoint>(&law)) {
+      const double magnitude = push->force.norm();
+      if (t < push->start || t >= push->end || magnitude == 0.0) continue;
+      const physics::Vec3 point = physics::body_point_to_world(state, push->point);
+      const double length = std::clamp(0.4 * magnitude, 0.4, 1.5) * scale;
+      out.push_back(rod(point - length * push->force / magnitude, point, 0.05 * scale, kPushColor));
+    }
+  }
+}
+
+}  // namespace
+
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
-                             const std::vector<physics::BodyState>& states) {
+                             const std::vector<physics::BodyState>& states, double t) {
   render::FrameView view;
   view.camera = framing.camera;
   if (framing.follow_index >= 0) {
@@ -64,6 +114,7 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                                      .orientation = states[i].orientation(),
                                      .size = scene.bodies[i].size,
                                      .color = scene.bodies[i].color});
+    add_force_visuals(scene.bodies[i], states[i], t, view.boxes);
   }
   return view;
 }

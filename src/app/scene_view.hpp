@@ -20,8 +20,8 @@ struct Framing {
 // Runs the scene's physics over all frame times (cheap next to rendering) to frame it.
 Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count);
 
-// The frame for one set of body states.
+// The frame for the body states at time t (s): the bodies, plus springs and active pushes.
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
-                             const std::vector<physics::BodyState>& states);
+                             const std::vector<physics::BodyState>& states, double t);
 
 }  // namespace tumble::app

@@ -133,6 +133,24 @@ TEST_F(RenderCommand, OddSizeWithVideoIsRejectedButFramesAloneAreFine) {
   EXPECT_EQ(image.width, 161);
 }
 
+// Every example scene renders: its first two frames, small.
+TEST_F(RenderCommand, EveryExampleSceneRenders) {
+  int scenes = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(TUMBLE_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    ++scenes;
+    const Outcome run = tumble("render -q --no-video --width 96 --height 64 --frames 0:2 " +
+                               entry.path().string() + " -o " + path("scenes"));
+    EXPECT_EQ(run.exit_code, 0) << entry.path() << ": " << run.err;
+  }
+  EXPECT_GE(scenes, 5);
+  int frames = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir_ / "scenes")) {
+    frames += entry.path().extension() == ".png";
+  }
+  EXPECT_EQ(frames, 2 * scenes);
+}
+
 TEST_F(RenderCommand, BadInputExitsWithTwo) {
   EXPECT_EQ(tumble("render " + path("missing.toml") + " -o " + path("o")).exit_code, 2);
   EXPECT_EQ(tumble("render --frames 10:20 " + scene() + " -o " + path("o")).exit_code, 2);
