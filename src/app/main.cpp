@@ -4,9 +4,11 @@
 #include <climits>
 #include <cstdio>
 
+#include "app/bench_pipeline.hpp"
 #include "app/diff_command.hpp"
 #include "app/render_command.hpp"
 #include "app/simulate_command.hpp"
+#include "io/png_io.hpp"
 
 namespace {
 
@@ -71,6 +73,15 @@ int main(int argc, char** argv) {
   render_command->add_flag("!--no-video", render.video, "Do not write the MP4");
   render_command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");
   render_command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
+  render_command->add_flag("--serial", render.serial,
+                           "Render, write and encode on one thread (slower; same bytes)");
+  std::string png_compression = "fast";
+  render_command
+      ->add_option("--png-compression", png_compression,
+                   "fast (zlib 1, no filter), default (libpng's: zlib 6, adaptive filter) or "
+                   "small (zlib 9, adaptive filter)")
+      ->check(CLI::IsMember({"fast", "default", "small"}))
+      ->capture_default_str();
 
   DiffCommandOptions diff;
   CLI::App* diff_command = app.add_subcommand(
@@ -89,6 +100,29 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   diff_command->add_option("--out", diff.out, "Write an image of the differences here (PNG)");
 
+  CLI::App* bench_command = app.add_subcommand("bench", "Measure tumble's speed");
+  bench_command->require_subcommand(1);
+  BenchPipelineOptions bench_pipeline;
+  CLI::App* bench_pipeline_command = bench_command->add_subcommand(
+      "pipeline", "Render one scene the naive ways and tumble's way, in one run, and compare");
+  bench_pipeline_command->add_option(
+      "--scene", bench_pipeline.scene_path,
+      "Scene to render (default: a built-in lit cube with ground and shadow)");
+  bench_pipeline_command->add_option("--width", bench_pipeline.width, "Image width")
+      ->check(CLI::Range(16, 8192))
+      ->capture_default_str();
+  bench_pipeline_command->add_option("--height", bench_pipeline.height, "Image height")
+      ->check(CLI::Range(16, 8192))
+      ->capture_default_str();
+  bench_pipeline_command->add_option("--frames", bench_pipeline.frames, "Frames per path")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{100000}))
+      ->capture_default_str();
+  bench_pipeline_command->add_option("--msaa", bench_pipeline.msaa, "Samples per pixel")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}))
+      ->capture_default_str();
+  bench_pipeline_command->add_option("--out", bench_pipeline.out, "Folder for pipeline.md")
+      ->capture_default_str();
+
   if (argc < 2) {
     std::fputs(app.help().c_str(), stderr);
     return kExitBadInput;
@@ -101,6 +135,7 @@ int main(int argc, char** argv) {
   }
 
   if (simulate_command->parsed()) return run_simulate(simulate, stderr);
+  if (bench_pipeline_command->parsed()) return run_bench_pipeline(bench_pipeline, stdout, stderr);
   if (diff_command->parsed()) return run_diff(diff, stdout, stderr);
   if (render_command->parsed()) {
     if (!frame_range.empty()) {
@@ -114,6 +149,7 @@ int main(int argc, char** argv) {
       render.first_frame = first;
       render.end_frame = end;
     }
+    render.png = *tumble::io::png_settings_named(png_compression);  // checked by IsMember
     return run_render(render, stderr);
   }
   return kExitBadInput;

@@ -7,14 +7,13 @@
 #include <sstream>
 #include <variant>
 
-#include "app/progress.hpp"
-#include "app/scene_view.hpp"
+#include <algorithm>
+#include <thread>
+
 #include "app/exit_codes.hpp"
+#include "app/progress.hpp"
+#include "app/render_job.hpp"
 #include "io/atomic_file.hpp"
-#include "io/png_io.hpp"
-#include "io/video_encoder.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace tumble::app {
@@ -25,23 +24,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// shaders/ is looked for beside an installed binary, then in the source tree this binary was
-// built from; TUMBLE_SHADER_DIR overrides both.
-std::string find_shader_directory() {
-  std::vector<fs::path> candidates;
-  if (const char* env = std::getenv("TUMBLE_SHADER_DIR")) candidates.emplace_back(env);
-  std::error_code ignored;
-  const fs::path executable = fs::read_symlink("/proc/self/exe", ignored);
-  if (!executable.empty()) {
-    candidates.push_back(executable.parent_path().parent_path() / "share/tumble/shaders");
-  }
-  candidates.emplace_back(TUMBLE_SOURCE_SHADER_DIR);
-  for (const fs::path& candidate : candidates) {
-    if (fs::exists(candidate / "body.vert", ignored)) return candidate.string();
-  }
-  return {};
 }
 
 std::string json_string(const std::string& text) {
@@ -61,43 +43,43 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
-struct StageTimes {
-  double simulate = 0.0;  // s, wall
-  double render = 0.0;
-  double png = 0.0;
-  double video = 0.0;
-};
+std::string stage_json(const StageTime& stage) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "{\"cpu\": " << stage.cpu << ", \"wall\": " << stage.wall << "}";
+  return out.str();
+}
 
-struct BodyDiagnostics {
-  double energy_start, energy_end;                      // J
-  double angular_momentum_start, angular_momentum_end;  // |L| (kg m²/s)
-};
-
-std::string report_json(const scene::Scene& scene, std::int64_t first, std::int64_t end,
-                        const std::string& frames_directory, const std::string& video_path,
-                        const StageTimes& times, double total_seconds, const std::string& renderer,
-                        const std::vector<BodyDiagnostics>& bodies) {
+std::string report_json(const scene::Scene& scene, const RenderPlan& plan,
+                        const RenderResult& result, double total_seconds) {
+  const PipelineReport& p = result.pipeline;
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  // (CPU seconds of every stage / cores) / wall seconds: 1 when every core worked all the time.
+  const double efficiency = p.wall > 0 ? p.process_cpu / cores / p.wall : 0.0;
   std::ostringstream out;
   out.precision(17);
-  const std::int64_t count = end - first;
   out << "{\n  \"scene\": " << json_string(scene.name)
       << ",\n  \"scene_file\": " << json_string(scene.source_path)
       << ",\n  \"width\": " << scene.render.width << ",\n  \"height\": " << scene.render.height
       << ",\n  \"fps\": " << scene.fps << ",\n  \"msaa\": " << scene.render.msaa
       << ",\n  \"dt\": " << scene.physics.dt << ",\n  \"integrator\": "
       << json_string(std::string(physics::integrator_name(scene.physics.integrator)))
-      << ",\n  \"frames\": {\"first\": " << first << ", \"end\": " << end
-      << ", \"count\": " << count << "},\n  \"frames_directory\": "
-      << (frames_directory.empty() ? "null" : json_string(frames_directory))
-      << ",\n  \"video\": " << (video_path.empty() ? "null" : json_string(video_path))
-      << ",\n  \"renderer\": " << json_string(renderer)
-      << ",\n  \"seconds\": {\"simulate\": " << times.simulate << ", \"render\": " << times.render
-      << ", \"png\": " << times.png << ", \"video\": " << times.video
-      << ", \"total\": " << total_seconds
-      << "},\n  \"frames_per_second\": " << (total_seconds > 0 ? count / total_seconds : 0.0)
-      << ",\n  \"bodies\": [";
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const BodyDiagnostics& b = bodies[i];
+      << ",\n  \"frames\": {\"first\": " << plan.first << ", \"end\": " << plan.end
+      << ", \"count\": " << plan.end - plan.first << "},\n  \"frames_directory\": "
+      << (plan.frames_directory.empty() ? "null" : json_string(plan.frames_directory))
+      << ",\n  \"video\": " << (plan.video_path.empty() ? "null" : json_string(plan.video_path))
+      << ",\n  \"path\": " << (plan.serial ? "\"serial\"" : "\"pipelined\"")
+      << ",\n  \"renderer\": " << json_string(result.renderer)
+      << ",\n  \"stages\": {\"simulate\": " << stage_json(p.simulate)
+      << ", \"render\": " << stage_json(p.render) << ", \"png\": " << stage_json(p.png)
+      << ", \"video\": " << stage_json(p.video)
+      << "},\n  \"seconds\": {\"setup\": " << result.setup_seconds << ", \"frames\": " << p.wall
+      << ", \"finish\": " << result.finish_seconds << ", \"total\": " << total_seconds
+      << "},\n  \"frames_per_second\": " << (p.wall > 0 ? p.frames_done / p.wall : 0.0)
+      << ",\n  \"cores\": " << cores << ",\n  \"pipeline_efficiency\": " << efficiency
+      << ",\n  \"peak_memory_bytes\": " << peak_memory_bytes() << ",\n  \"bodies\": [";
+  for (std::size_t i = 0; i < result.bodies.size(); ++i) {
+    const BodyDiagnostics& b = result.bodies[i];
     out << (i ? "," : "") << "\n    {\"name\": " << json_string(scene.bodies[i].name)
         << ", \"energy_start\": " << b.energy_start << ", \"energy_end\": " << b.energy_end
         << ", \"angular_momentum_start\": " << b.angular_momentum_start
@@ -162,105 +144,31 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     return kExitBadInput;
   }
 
-  const std::string shader_directory = find_shader_directory();
-  if (shader_directory.empty()) {
+  RenderPlan plan{.first = first,
+                  .end = end,
+                  .frames_directory = write_frames ? frames_directory.string() : "",
+                  .video_path = write_video ? (directory / (scene.name + ".mp4")).string() : "",
+                  .png = options.png,
+                  .serial = options.serial,
+                  .shader_directory = find_shader_directory()};
+  if (plan.shader_directory.empty()) {
     std::fprintf(err, "tumble: cannot find the shaders/ folder (set TUMBLE_SHADER_DIR)\n");
     return kExitBadInput;
   }
-  std::string error;
-  render::RenderSettings settings = scene.render;
-  StageTimes times;
-  auto stage_start = Clock::now();
-  const Framing framing = frame_scene(scene, total);
-  settings.ground.height = framing.ground_height;
-  times.simulate += seconds_since(stage_start);
-
-  const std::unique_ptr<render::Renderer> renderer =
-      render::Renderer::create(settings, shader_directory, error);
-  if (!renderer) {
-    std::fprintf(err, "tumble: %s\n", error.c_str());
+  Progress progress(end - first, options.quiet, err);
+  plan.on_frame_done = [&](std::int64_t done) { progress.update(done); };
+  const RenderResult result = render_scene(scene, plan);
+  progress.finish();
+  if (options.verbose && !result.renderer.empty()) {
+    std::fprintf(err, "tumble: renderer %s\n", result.renderer.c_str());
+  }
+  if (!result.error.empty()) {
+    std::fprintf(err, "tumble: %s\n", result.error.c_str());
     return kExitBadInput;
   }
-  if (options.verbose) std::fprintf(err, "tumble: renderer %s\n", renderer->description().c_str());
-
-  const std::string video_path = (directory / (scene.name + ".mp4")).string();
-  std::unique_ptr<io::VideoEncoder> encoder;
-  if (write_video) {
-    encoder = io::VideoEncoder::open(video_path,
-                                     {.width = settings.width,
-                                      .height = settings.height,
-                                      .fps = scene.fps,
-                                      .crf = scene.output.crf,
-                                      .preset = scene.output.preset},
-                                     error);
-    if (!encoder) {
-      std::fprintf(err, "tumble: %s\n", error.c_str());
-      return kExitBadInput;
-    }
-  }
-
-  sim::Simulation simulation = scene::build_simulation(scene);
-  std::vector<BodyDiagnostics> diagnostics;
-  for (const physics::BodyState& state : simulation.current()) {
-    diagnostics.push_back(
-        {physics::kinetic_energy(state), 0.0, state.angular_momentum().norm(), 0.0});
-  }
-  Progress progress(end - first, options.quiet, err);
-  io::Image image;
-  for (std::int64_t k = first; k < end; ++k) {
-    stage_start = Clock::now();
-    const double t = static_cast<double>(k) / scene.fps;
-    const render::FrameView view = frame_view(scene, framing, simulation.states_at(t), t);
-    times.simulate += seconds_since(stage_start);
-
-    stage_start = Clock::now();
-    renderer->draw(view, image);
-    times.render += seconds_since(stage_start);
-
-    if (write_frames) {
-      stage_start = Clock::now();
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(k));
-      error = io::write_png((frames_directory / name).string(), image);
-      times.png += seconds_since(stage_start);
-      if (!error.empty()) {
-        std::fprintf(err, "\ntumble: %s\n", error.c_str());
-        return kExitBadInput;
-      }
-    }
-    if (encoder) {
-      stage_start = Clock::now();
-      error = encoder->add_frame(image);
-      times.video += seconds_since(stage_start);
-      if (!error.empty()) {
-        std::fprintf(err, "\ntumble: %s\n", error.c_str());
-        return kExitBadInput;
-      }
-    }
-    progress.update(k - first + 1);
-  }
-  if (encoder) {
-    stage_start = Clock::now();
-    error = encoder->finish();
-    times.video += seconds_since(stage_start);
-    if (!error.empty()) {
-      progress.finish();
-      std::fprintf(err, "tumble: %s\n", error.c_str());
-      return kExitBadInput;
-    }
-  }
-  progress.finish();
-  for (std::size_t i = 0; i < diagnostics.size(); ++i) {
-    diagnostics[i].energy_end = physics::kinetic_energy(simulation.current()[i]);
-    diagnostics[i].angular_momentum_end = simulation.current()[i].angular_momentum().norm();
-  }
-
   const double total_seconds = seconds_since(start);
-  error =
-      write_text_file((directory / "report.json").string(),
-                      report_json(scene, first, end, write_frames ? frames_directory.string() : "",
-                                  write_video ? video_path : "", times, total_seconds,
-                                  renderer->description(), diagnostics));
+  const std::string error = write_text_file((directory / "report.json").string(),
+                                            report_json(scene, plan, result, total_seconds));
   if (!error.empty()) {
     std::fprintf(err, "tumble: %s\n", error.c_str());
     return kExitBadInput;
@@ -269,7 +177,7 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",
                  static_cast<long long>(end - first), total_seconds,
                  static_cast<double>(end - first) / total_seconds,
-                 write_video ? video_path.c_str() : frames_directory.c_str());
+                 write_video ? plan.video_path.c_str() : plan.frames_directory.c_str());
   }
   return kExitOk;
 }

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "io/png_io.hpp"
+
 namespace tumble::app {
 
 struct RenderOptions {
@@ -17,6 +19,8 @@ struct RenderOptions {
   bool video = true;
   bool quiet = false;
   bool verbose = false;
+  bool serial = false;  // one thread: the reference the pipelined path must match byte for byte
+  io::PngSettings png;  // fast by default; see io/png_io.hpp
 };
 
 // Runs the command; progress and messages go to `err`. Returns the process exit code.

@@ -69,11 +69,10 @@ const render::Color kPushColor(0.98, 0.80, 0.15);
 render::Box rod(const physics::Vec3& from, const physics::Vec3& to, double thickness,
                 const render::Color& color) {
   const physics::Vec3 along = to - from;
-  return render::Box{
-      .position = 0.5 * (from + to),
-      .orientation = physics::Quat::FromTwoVectors(physics::Vec3::UnitZ(), along),
-      .size = physics::Vec3(thickness, thickness, std::max(along.norm(), thickness)),
-      .color = color};
+  return render::Box{.position = 0.5 * (from + to),
+                     .orientation = physics::Quat::FromTwoVectors(physics::Vec3::UnitZ(), along),
+                     .size = physics::Vec3(thickness, thickness, std::max(along.norm(), thickness)),
+                     .color = color};
 }
 
 // Springs (a rod and an anchor block) and active pushes (a rod ending at the pushed point), so

@@ -242,4 +242,11 @@ std::string read_png(const std::string& path, Image& out) {
   return {};
 }
 
+std::optional<PngSettings> png_settings_named(std::string_view name) {
+  if (name == "fast") return PngSettings{};
+  if (name == "default") return PngSettings{.compression_level = 6, .filter = true};
+  if (name == "small") return PngSettings{.compression_level = 9, .filter = true};
+  return std::nullopt;
+}
+
 }  // namespace tumble::io

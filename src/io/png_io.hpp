@@ -2,7 +2,9 @@
 // what failed; an empty string means success.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "io/image.hpp"
 
@@ -17,6 +19,10 @@ struct PngSettings {
   int compression_level = 1;  // zlib level, 0 (store) to 9 (smallest)
   bool filter = false;        // false: PNG_FILTER_NONE on every row; true: adaptive filtering
 };
+
+// The named settings users choose from: "fast" (the default above), "default" (libpng's own:
+// zlib 6, adaptive filtering) and "small" (zlib 9, adaptive filtering). Nothing for other names.
+std::optional<PngSettings> png_settings_named(std::string_view name);
 
 // Writes `image` as an 8-bit RGB, non-interlaced PNG. The file appears whole or not at all
 // (temporary name beside `path`, then rename). No time chunk, so equal images give equal bytes.

@@ -1,7 +1,9 @@
 #include "render/renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include "render/gl.hpp"
 #include "render/offscreen_context.hpp"
@@ -13,8 +15,9 @@ namespace {
 using Mat4 = Eigen::Matrix4d;
 using Mat4f = Eigen::Matrix4f;
 using Mat3f = Eigen::Matrix3f;
+using Mat3 = Eigen::Matrix3d;
 
-constexpr int kShadowMapSize = 2048;  // texels per side
+constexpr int kShadowMapSize = 1024;  // texels per side
 
 // The sRGB decoding function (IEC 61966-2-1): written colours to linear light.
 Eigen::Vector3f linear_from_srgb(const Color& srgb) {
@@ -75,7 +78,45 @@ void set_matrix(GLint location, const Mat4& m) {
   glUniformMatrix4fv(location, 1, GL_FALSE, f.data());  // Eigen is column-major, as GL wants
 }
 
-void set_vector(GLint location, const Eigen::Vector3f& v) { glUniform3fv(location, 1, v.data()); }
+void set_vector(GLint location, const Eigen::Vector3f& v) {
+  glUniform3fv(location, 1, v.data());
+}
+
+// The screen rectangle (x, y, width, height in pixels, GL's bottom-up rows) that holds the
+// shadows of all boxes on the ground: each corner projected along the light onto the ground plane,
+// then onto the screen. Nothing when no shadow can fall on the ground in view.
+std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
+                                                const RenderSettings& settings,
+                                                const Mat4& view_projection,
+                                                const Vec3& light_direction) {
+  if (light_direction.y() > -1e-3) return std::nullopt;  // light from below or level: none
+  double low_x = 1e30, low_y = 1e30, high_x = -1e30, high_y = -1e30;
+  for (const Box& box : view.boxes) {
+    const Mat3 rotation = box.orientation.normalized().toRotationMatrix();
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 local(corner & 1 ? 0.5 : -0.5, corner & 2 ? 0.5 : -0.5, corner & 4 ? 0.5 : -0.5);
+      Vec3 point = box.position + rotation * local.cwiseProduct(box.size);
+      // Along the light to the ground (a corner below the ground casts nothing above it).
+      point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
+      const Eigen::Vector4d clip = view_projection * point.homogeneous();
+      if (clip.w() <= 1e-9) return std::array<int, 4>{0, 0, settings.width, settings.height};
+      low_x = std::min(low_x, clip.x() / clip.w());
+      high_x = std::max(high_x, clip.x() / clip.w());
+      low_y = std::min(low_y, clip.y() / clip.w());
+      high_y = std::max(high_y, clip.y() / clip.w());
+    }
+  }
+  // To pixels, widened by two for the filter's reach, clamped to the image.
+  const auto pixel = [](double ndc, int size) { return 0.5 * (ndc + 1.0) * size; };
+  const int x0 = std::max(0, static_cast<int>(std::floor(pixel(low_x, settings.width))) - 2);
+  const int y0 = std::max(0, static_cast<int>(std::floor(pixel(low_y, settings.height))) - 2);
+  const int x1 =
+      std::min(settings.width, static_cast<int>(std::ceil(pixel(high_x, settings.width))) + 2);
+  const int y1 =
+      std::min(settings.height, static_cast<int>(std::ceil(pixel(high_y, settings.height))) + 2);
+  if (x1 <= x0 || y1 <= y0) return std::nullopt;
+  return std::array<int, 4>{x0, y0, x1 - x0, y1 - y0};
+}
 
 // The unit cube, four vertices per face so that each face has its own normal.
 struct CubeVertex {
@@ -113,6 +154,7 @@ struct Renderer::Resources {
   std::unique_ptr<OffscreenContext> context;
   ShaderProgram body_program;
   ShaderProgram ground_program;
+  ShaderProgram shadowed_ground_program;  // the same, receiving shadows
   ShaderProgram shadow_program;
   GLuint cube_vao = 0, cube_vbo = 0, cube_ebo = 0;
   GLuint ground_vao = 0, ground_vbo = 0;
@@ -147,8 +189,11 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
   ground_program = ShaderProgram::build(shader_directory, {"ground.vert"},
                                         {"lighting.glsl", "ground.frag"}, error);
   if (!ground_program.valid()) return error;
-  shadow_program =
-      ShaderProgram::build(shader_directory, {"shadow.vert"}, {"shadow.frag"}, error);
+  shadowed_ground_program =
+      ShaderProgram::build(shader_directory, {"ground.vert"},
+                           {"lighting.glsl", "receive_shadows.glsl", "ground.frag"}, error);
+  if (!shadowed_ground_program.valid()) return error;
+  shadow_program = ShaderProgram::build(shader_directory, {"shadow.vert"}, {"shadow.frag"}, error);
   if (!shadow_program.valid()) return error;
 
   // Cube: positions and normals interleaved, two triangles per face.
@@ -267,7 +312,9 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
   return std::unique_ptr<Renderer>(new Renderer(std::move(resources)));
 }
 
-std::string Renderer::description() const { return resources_->context->description(); }
+std::string Renderer::description() const {
+  return resources_->context->description();
+}
 
 void Renderer::draw(const FrameView& view, io::Image& out) {
   Resources& r = *resources_;
@@ -331,19 +378,40 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   };
 
   if (s.ground.enabled) {
-    set_common(r.ground_program);
-    const Vec3 center(camera.look_at.x(), s.ground.height, camera.look_at.z());
-    const double half_extent = std::max(30.0, 8.0 * (camera_distance + radius));
-    set_vector(r.ground_program.uniform("u_center"), center.cast<float>());
-    glUniform1f(r.ground_program.uniform("u_half_extent"), static_cast<float>(half_extent));
-    set_vector(r.ground_program.uniform("u_albedo"), linear_from_srgb(s.ground.color));
-    set_vector(r.ground_program.uniform("u_background"), linear_from_srgb(s.background));
-    glUniform1f(r.ground_program.uniform("u_grid_spacing"),
-                static_cast<float>(s.ground.grid_spacing));
-    glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
-    glBindVertexArray(r.ground_vao);
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    glEnable(GL_CULL_FACE);
+    const auto draw_ground = [&](const ShaderProgram& program) {
+      set_common(program);
+      const Vec3 center(camera.look_at.x(), s.ground.height, camera.look_at.z());
+      const double half_extent = std::max(30.0, 8.0 * (camera_distance + radius));
+      set_vector(program.uniform("u_center"), center.cast<float>());
+      glUniform1f(program.uniform("u_half_extent"), static_cast<float>(half_extent));
+      // lighting.glsl's shade() for the normal (0, 1, 0) without specular (the hemisphere
+      // term is 1 there).
+      const Eigen::Vector3f albedo = linear_from_srgb(s.ground.color);
+      const Eigen::Vector3f key = linear_from_srgb(s.light.color);
+      const float ambient = static_cast<float>(s.light.ambient);
+      const float diffuse = static_cast<float>(std::max(-light_direction.y(), 0.0));
+      set_vector(program.uniform("u_lit_color"), albedo.cwiseProduct(key) * (ambient + diffuse));
+      set_vector(program.uniform("u_shadow_color"), albedo.cwiseProduct(key) * ambient);
+      set_vector(program.uniform("u_background"), linear_from_srgb(s.background));
+      glUniform1f(program.uniform("u_grid_spacing"), static_cast<float>(s.ground.grid_spacing));
+      glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
+      glBindVertexArray(r.ground_vao);
+      glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+      glEnable(GL_CULL_FACE);
+    };
+    draw_ground(r.ground_program);
+    // Again, with shadows, inside the screen rectangle that holds every box's shadow on the
+    // ground: the same triangles give the same depths, so GL_LEQUAL lets the second pass replace
+    // the first pixel for pixel.
+    const auto region = shadow_region(view, s, view_projection, light_direction);
+    if (s.shadows && region) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
+      glDepthFunc(GL_LEQUAL);
+      draw_ground(r.shadowed_ground_program);
+      glDepthFunc(GL_LESS);
+      glDisable(GL_SCISSOR_TEST);
+    }
   }
 
   set_common(r.body_program);

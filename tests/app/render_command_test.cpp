@@ -93,6 +93,48 @@ TEST_F(RenderCommand, RenderingTwiceGivesByteIdenticalFramesAndVideo) {
   EXPECT_EQ(read_file(dir_ / "a/spin/spin.mp4"), read_file(dir_ / "b/spin/spin.mp4"));
 }
 
+TEST_F(RenderCommand, PipelinedAndSerialPathsGiveTheSameBytes) {
+  ASSERT_EQ(tumble("render -q " + scene() + " -o " + path("piped")).exit_code, 0);
+  ASSERT_EQ(tumble("render -q --serial " + scene() + " -o " + path("serial")).exit_code, 0);
+  for (int k = 0; k < 15; ++k) {
+    EXPECT_EQ(read_file(frame("piped", k)), read_file(frame("serial", k))) << "frame " << k;
+  }
+  EXPECT_EQ(read_file(dir_ / "piped/spin/spin.mp4"), read_file(dir_ / "serial/spin/spin.mp4"));
+  const auto piped = tumble::testing::read_video(path("piped/spin/spin.mp4"));
+  const auto serial = tumble::testing::read_video(path("serial/spin/spin.mp4"));
+  ASSERT_EQ(piped.pictures.size(), 15u);
+  ASSERT_EQ(serial.pictures.size(), 15u);
+  for (std::size_t k = 0; k < 15; ++k) {
+    EXPECT_EQ(piped.pictures[k].rgb.rgb, serial.pictures[k].rgb.rgb) << "decoded frame " << k;
+  }
+  EXPECT_NE(read_file(dir_ / "piped/spin/report.json").find("\"path\": \"pipelined\""),
+            std::string::npos);
+  EXPECT_NE(read_file(dir_ / "serial/spin/report.json").find("\"path\": \"serial\""),
+            std::string::npos);
+}
+
+// Bounded queues: twenty times the frames, the same peak memory (within allocator noise).
+TEST_F(RenderCommand, PeakMemoryDoesNotGrowWithTheNumberOfFrames) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer's quarantine grows with every allocation";
+#endif
+  std::string long_scene = kScene;
+  long_scene.replace(long_scene.find("duration = 0.5"), 14, "duration = 20.0");
+  const std::string scene_path = write("long.toml", long_scene).string();
+  const auto peak = [&](const std::string& frames, const std::string& root) {
+    const Outcome run =
+        tumble("render -q --frames " + frames + " " + scene_path + " -o " + path(root));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    const std::string report = read_file(dir_ / root / "spin/report.json");
+    const std::size_t at = report.find("\"peak_memory_bytes\": ");
+    EXPECT_NE(at, std::string::npos);
+    return at == std::string::npos ? 0.0 : std::stod(report.substr(at + 21));
+  };
+  const double short_run = peak("0:30", "short");
+  const double long_run = peak("0:600", "long");
+  EXPECT_LT(long_run, short_run + 4e6) << short_run << " then " << long_run << " bytes";
+}
+
 TEST_F(RenderCommand, AFrameRangeGivesTheSamePixelsAsTheWholeRender) {
   ASSERT_EQ(tumble("render -q --no-video " + scene() + " -o " + path("whole")).exit_code, 0);
   const Outcome part =

@@ -1,0 +1,23 @@
+// `tumble bench pipeline`: the same scene rendered several ways in one run, to show what the
+// pipelined frame path buys over the obvious ways of making a video.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace tumble::app {
+
+struct BenchPipelineOptions {
+  std::string scene_path;  // "" = a built-in lit, shadowed spinning cube over a gridded ground
+  int width = 1280;
+  int height = 720;
+  std::int64_t frames = 300;
+  int msaa = 1;
+  std::string out = "output/bench";  // pipeline.md goes here; frames are written and removed
+};
+
+// Prints a table of frames/s per path and their ratios; returns the process exit code.
+int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std::FILE* err);
+
+}  // namespace tumble::app
