@@ -7,8 +7,10 @@
 
 namespace tumble::io {
 
-AtomicFile::AtomicFile(std::string path)
-    : path_(std::move(path)), temporary_path_(path_ + ".tmp-" + std::to_string(::getpid())) {
+AtomicFile::AtomicFile(std::string path, Durability durability)
+    : path_(std::move(path)),
+      temporary_path_(path_ + ".tmp-" + std::to_string(::getpid())),
+      durability_(durability) {
   file_ = std::fopen(temporary_path_.c_str(), "wb");
   if (!file_) fail("cannot create");
 }
@@ -29,7 +31,9 @@ bool AtomicFile::commit() {
     fail("write failed");
   }
   if (std::fflush(file_) != 0) fail("write failed");
-  if (error_.empty() && ::fsync(::fileno(file_)) != 0) fail("write failed");
+  if (error_.empty() && durability_ == Durability::synced && ::fsync(::fileno(file_)) != 0) {
+    fail("write failed");
+  }
   if (std::fclose(file_) != 0) fail("write failed");
   file_ = nullptr;
   if (!error_.empty()) return false;

@@ -9,8 +9,14 @@ namespace tumble::io {
 
 class AtomicFile {
  public:
+  // Whether commit() waits for the data to reach the disk before the rename. Without it the file
+  // still appears whole or not at all to every process, and a crash of tumble cannot leave half a
+  // file; only a power cut could. Video frames skip it: an fsync per frame costs more wall time
+  // than writing the PNG.
+  enum class Durability { synced, unsynced };
+
   // Opens "<path>.tmp-<pid>" for writing. Check ok() / error() before use.
-  explicit AtomicFile(std::string path);
+  explicit AtomicFile(std::string path, Durability durability = Durability::synced);
   ~AtomicFile();  // removes the temporary file unless commit() succeeded
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -31,6 +37,7 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
   std::string error_;
   bool committed_ = false;
+  Durability durability_;
 };
 
 }  // namespace tumble::io

@@ -51,7 +51,7 @@ void write_to_file(png_structp png, png_bytep data, std::size_t length) {
   png_error(png, message);
 }
 
-// AtomicFile::commit flushes and syncs once at the end.
+// AtomicFile::commit flushes once at the end.
 void flush_nothing(png_structp) {}
 
 void read_from_file(png_structp png, png_bytep data, std::size_t length) {
@@ -180,7 +180,8 @@ std::string write_png(const std::string& path, const Image& image, const PngSett
     return path + ": cannot write a " + size_text(image.width, image.height) + " image holding " +
            std::to_string(image.rgb.size()) + " bytes as PNG";
   }
-  AtomicFile file(path);
+  // Unsynced: PNGs are mostly video frames, written by the hundred (see AtomicFile::Durability).
+  AtomicFile file(path, AtomicFile::Durability::unsynced);
   if (!file.ok()) return file.error();
   PngFailure failure{};
   PngWriteStructs structs(&failure);
