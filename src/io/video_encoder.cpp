@@ -1,5 +1,7 @@
 #include "io/video_encoder.hpp"
 
+#include "io/av_handles.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -62,19 +64,6 @@ int sync_to_disk(const std::string& path) {
   return failure;
 }
 
-struct CodecContextDeleter {
-  void operator()(AVCodecContext* context) const { avcodec_free_context(&context); }
-};
-struct FrameDeleter {
-  void operator()(AVFrame* frame) const { av_frame_free(&frame); }
-};
-struct PacketDeleter {
-  void operator()(AVPacket* packet) const { av_packet_free(&packet); }
-};
-struct ScalerDeleter {
-  void operator()(SwsContext* scaler) const { sws_freeContext(scaler); }
-};
-
 }  // namespace
 
 struct VideoEncoder::State {
@@ -84,10 +73,10 @@ struct VideoEncoder::State {
 
   AVFormatContext* format = nullptr;  // the MP4 muxer; owns `stream` and, once open, `format->pb`
   AVStream* stream = nullptr;
-  std::unique_ptr<AVCodecContext, CodecContextDeleter> codec;
-  std::unique_ptr<SwsContext, ScalerDeleter> rgb_to_yuv;
-  std::unique_ptr<AVFrame, FrameDeleter> frame;  // yuv420p, reused for every input image
-  std::unique_ptr<AVPacket, PacketDeleter> packet;
+  av::CodecContext codec;
+  av::Scaler rgb_to_yuv;
+  av::Frame frame;  // yuv420p, reused for every input image
+  av::Packet packet;
 
   int frames_added = 0;
   bool finished = false;  // the file is at `path`

@@ -1,5 +1,7 @@
 #include "support/video_reader.hpp"
 
+#include "io/av_handles.hpp"
+
 #include <memory>
 
 extern "C" {
@@ -9,22 +11,6 @@ extern "C" {
 
 namespace tumble::testing {
 namespace {
-
-struct FormatCloser {
-  void operator()(AVFormatContext* format) const { avformat_close_input(&format); }
-};
-struct CodecContextDeleter {
-  void operator()(AVCodecContext* context) const { avcodec_free_context(&context); }
-};
-struct FrameDeleter {
-  void operator()(AVFrame* frame) const { av_frame_free(&frame); }
-};
-struct PacketDeleter {
-  void operator()(AVPacket* packet) const { av_packet_free(&packet); }
-};
-struct ScalerDeleter {
-  void operator()(SwsContext* scaler) const { sws_freeContext(scaler); }
-};
 
 std::string av_error_text(int code) {
   char text[AV_ERROR_MAX_STRING_SIZE] = {};
@@ -69,7 +55,7 @@ DecodedVideo read_video(const std::string& path) {
     video.error = "avformat_open_input: " + av_error_text(code);
     return video;
   }
-  std::unique_ptr<AVFormatContext, FormatCloser> format(opened);
+  std::unique_ptr<AVFormatContext, io::av::InputCloser> format(opened);
   if (int code = avformat_find_stream_info(format.get(), nullptr); code < 0) {
     video.error = "avformat_find_stream_info: " + av_error_text(code);
     return video;
@@ -94,7 +80,7 @@ DecodedVideo read_video(const std::string& path) {
   video.space = parameters.color_space;
   video.range = parameters.color_range;
 
-  std::unique_ptr<AVCodecContext, CodecContextDeleter> codec(avcodec_alloc_context3(decoder));
+  io::av::CodecContext codec(avcodec_alloc_context3(decoder));
   avcodec_parameters_to_context(codec.get(), &parameters);
   codec->thread_count = 1;
   if (int code = avcodec_open2(codec.get(), decoder, nullptr); code < 0) {
@@ -103,15 +89,15 @@ DecodedVideo read_video(const std::string& path) {
   }
   // Chroma interpolated for every output pixel (FULL_CHR_H_INT): swscale's default upsampling
   // alone adds about 2 code values of error, which would hide the encoder's own.
-  std::unique_ptr<SwsContext, ScalerDeleter> yuv_to_rgb(sws_getContext(
-      parameters.width, parameters.height, AV_PIX_FMT_YUV420P, parameters.width, parameters.height,
-      AV_PIX_FMT_RGB24, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr,
-      nullptr));
+  io::av::Scaler yuv_to_rgb(sws_getContext(parameters.width, parameters.height, AV_PIX_FMT_YUV420P,
+                                           parameters.width, parameters.height, AV_PIX_FMT_RGB24,
+                                           SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT,
+                                           nullptr, nullptr, nullptr));
   const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);  // limited-range BT.709 in, full RGB out
   sws_setColorspaceDetails(yuv_to_rgb.get(), bt709, 0, bt709, 1, 0, 1 << 16, 1 << 16);
 
-  std::unique_ptr<AVPacket, PacketDeleter> packet(av_packet_alloc());
-  std::unique_ptr<AVFrame, FrameDeleter> frame(av_frame_alloc());
+  io::av::Packet packet(av_packet_alloc());
+  io::av::Frame frame(av_frame_alloc());
   auto drain = [&] {
     while (avcodec_receive_frame(codec.get(), frame.get()) == 0) {
       video.pictures.push_back(take_picture(*frame, stream.time_base, yuv_to_rgb.get()));
