@@ -4,7 +4,9 @@
 #include <climits>
 #include <cstdio>
 
+#include "app/bench_command.hpp"
 #include "app/bench_pipeline.hpp"
+#include "app/check_command.hpp"
 #include "app/diff_command.hpp"
 #include "app/render_command.hpp"
 #include "app/simulate_command.hpp"
@@ -123,6 +125,20 @@ int main(int argc, char** argv) {
   bench_pipeline_command->add_option("--out", bench_pipeline.out, "Folder for pipeline.md")
       ->capture_default_str();
 
+  BenchAccuracyOptions bench_accuracy;
+  CLI::App* bench_accuracy_command = bench_command->add_subcommand(
+      "accuracy", "Error against cost of every integrator on hard cases: CSV, Markdown, chart");
+  bench_accuracy_command
+      ->add_option("--out", bench_accuracy.out, "Folder for accuracy.csv, .md and .png")
+      ->capture_default_str();
+  bench_accuracy_command->add_flag("--quick", bench_accuracy.quick,
+                                   "A reduced sweep (3 cases, 2 step sizes, 1 timing) for tests");
+
+  CheckOptions check;
+  CLI::App* check_command = app.add_subcommand(
+      "check", "Validate a scene and warn about its step: exit 0 if valid, 2 if not");
+  check_command->add_option("scene", check.scene_path, "Scene file (TOML)")->required();
+
   if (argc < 2) {
     std::fputs(app.help().c_str(), stderr);
     return kExitBadInput;
@@ -136,6 +152,8 @@ int main(int argc, char** argv) {
 
   if (simulate_command->parsed()) return run_simulate(simulate, stderr);
   if (bench_pipeline_command->parsed()) return run_bench_pipeline(bench_pipeline, stdout, stderr);
+  if (bench_accuracy_command->parsed()) return run_bench_accuracy(bench_accuracy, stdout, stderr);
+  if (check_command->parsed()) return run_check(check, stdout, stderr);
   if (diff_command->parsed()) return run_diff(diff, stdout, stderr);
   if (render_command->parsed()) {
     if (!frame_range.empty()) {

@@ -13,6 +13,7 @@
 #include "app/exit_codes.hpp"
 #include "app/progress.hpp"
 #include "app/render_job.hpp"
+#include "app/stability_report.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -109,6 +110,7 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   if (options.width) scene.render.width = *options.width;
   if (options.height) scene.render.height = *options.height;
   if (options.fps) scene.fps = *options.fps;
+  if (!options.quiet) print_stability_warnings(scene, err);
   const bool write_frames = options.frames && scene.output.frames;
   const bool write_video = options.video && scene.output.video;
   if (!write_frames && !write_video) {

@@ -3,6 +3,7 @@
 #include <memory>
 #include <variant>
 
+#include "app/stability_report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/state_csv.hpp"
 #include "physics/rigid_body.hpp"
@@ -43,6 +44,7 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
     return kExitBadInput;
   }
   const scene::Scene& scene = std::get<scene::Scene>(loaded);
+  print_stability_warnings(scene, err);
 
   std::unique_ptr<io::AtomicFile> file;
   std::FILE* out = stdout;

@@ -1,5 +1,11 @@
 #include "physics/integrators.hpp"
 
+#include <array>
+#include <cmath>
+#include <variant>
+
+#include "physics/free_rigid_body.hpp"
+
 namespace tumble::physics {
 namespace {
 
@@ -65,6 +71,169 @@ BodyState rk4_step(const BodyModel& model, const BodyState& in, double t, double
   return BodyState(advanced(in.primary(), combined, dt), model.constants);
 }
 
+// ---- Splitting: symmetric compositions of exact sub-flows ----------------------------------
+
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+using Matrix7 = Eigen::Matrix<double, 7, 7>;
+
+// x(h) for dx/dt = f − k x with f constant: e^{−kh} x + (1 − e^{−kh})/k f, the second factor
+// written −expm1(−kh)/k so that it tends to h without cancellation as k → 0.
+template <typename Value>
+Value decay(double rate /* 1/s */, double h /* s */, const Value& x, const Value& f) {
+  if (rate == 0.0) return x + h * f;
+  return std::exp(-rate * h) * x - std::expm1(-rate * h) / rate * f;
+}
+
+Vector6 as_vector(const Vec3& linear, const Vec3& angular) {
+  Vector6 out;
+  out << linear, angular;
+  return out;
+}
+
+// φ₁(Z) w = Σ Zᵏ w / (k+1)!, the change over one kick of the affine flow below (Z = J h,
+// w = W(y₀) h). For ‖Z‖₁ ≤ 1/2 (the usual case: ‖Z‖ is a damping rate times dt) Horner's scheme on
+// the vector, truncated after degree 14 (remainder below 0.5¹⁵/16! ≈ 1.5e-18 ‖w‖); for stiffer
+// kicks the exponential of [[Z, ŵ], [0, 0]], ŵ = w/‖w‖, whose last column is (φ₁(Z) ŵ, 1), by the
+// same series after scaling by 2⁻ˢ to norm ≤ 1/2, then s squarings (Moler & Van Loan 2003,
+// "method 3"). Costs 15 6×6 matrix-vector products, or about 15 + s 7×7 matrix products.
+Vector6 phi1_times(const Matrix6& z, const Vector6& w) {
+  constexpr int kDegree = 14;
+  const double norm = z.cwiseAbs().colwise().sum().maxCoeff();
+  if (norm <= 0.5) {
+    Vector6 sum = w;
+    for (int k = kDegree + 1; k >= 2; --k) sum = w + z * sum / k;
+    return sum;
+  }
+  const double size = w.lpNorm<1>();
+  if (size == 0.0) return Vector6::Zero();
+  const int squarings = static_cast<int>(std::ceil(std::log2(2.0 * norm)));
+  Matrix7 augmented = Matrix7::Zero();
+  augmented.topLeftCorner<6, 6>() = z;
+  augmented.topRightCorner<6, 1>() = w / size;
+  augmented *= std::ldexp(1.0, -squarings);
+  Matrix7 exponential = Matrix7::Identity();
+  for (int k = kDegree; k >= 1; --k) {
+    exponential = Matrix7::Identity() + augmented * exponential / k;
+  }
+  for (int i = 0; i < squarings; ++i) exponential = exponential * exponential;
+  return size * exponential.topRightCorner<6, 1>();
+}
+
+// A damped spring's force follows the attachment point's velocity v + ω × r, which couples the
+// two momenta; the exact flow of dy/dt = W(y), y = (p, L), W affine with pose and time frozen, is
+// y(h) = y₀ + ∫₀ʰ e^{J s} ds W(y₀) = y₀ + φ₁(J h) W(y₀) h. J is read off the laws themselves by
+// six probes: their differences are exact for an affine W.
+PrimaryState coupled_kick(const BodyModel& model, const BodyState& in, double t, double h) {
+  const auto wrench_vector = [&](const BodyState& state) {
+    const Wrench w = total_wrench(model.forces, model.constants, state, t);
+    return as_vector(w.force, w.torque);
+  };
+  const Vector6 start = as_vector(in.momentum(), in.angular_momentum());
+  const Vector6 base = wrench_vector(in);
+  // Any probe size is exact in exact arithmetic; this one keeps the differences far above the
+  // round-off of W(y₀).
+  const double probe = 1.0 + start.cwiseAbs().maxCoeff();
+  Matrix6 jacobian_step;  // J h
+  for (int i = 0; i < 6; ++i) {
+    PrimaryState shifted = in.primary();
+    if (i < 3) {
+      shifted.momentum[i] += probe;
+    } else {
+      shifted.angular_momentum[i - 3] += probe;
+    }
+    jacobian_step.col(i) =
+        (wrench_vector(BodyState(shifted, model.constants)) - base) * (h / probe);
+  }
+  const Vector6 change = phi1_times(jacobian_step, base * h);
+  PrimaryState out = in.primary();
+  out.momentum += change.head<3>();
+  out.angular_momentum += change.tail<3>();
+  return out;
+}
+
+// The kick: the exact flow over h of dp/dt = F, dL/dt = τ with position, orientation and time
+// frozen. Every law in forces.hpp is then affine in (p, L): laws that ignore the momenta give a
+// constant wrench; linear damping −(c/m) p decays p exponentially; angular damping −c I_world⁻¹ L
+// is diagonal in the body frame (I_world is frozen with q), so each body component of L decays at
+// its own rate c/I_i. Both are exact for any h, hence stable however stiff. Only a damped spring
+// couples p and L, and takes the φ₁ series above.
+PrimaryState kick(const BodyModel& model, const BodyState& in, double t, double h) {
+  const BodyConstants& constants = model.constants;
+  Wrench fixed;                  // the laws that ignore the momenta (N, N m)
+  double linear_damping = 0.0;   // Σ c over LinearDamping (N s/m)
+  double angular_damping = 0.0;  // Σ c over AngularDamping (N m s)
+  for (const ForceLaw& law : model.forces) {
+    if (const auto* damping = std::get_if<LinearDamping>(&law)) {
+      linear_damping += damping->coefficient;
+    } else if (const auto* damping = std::get_if<AngularDamping>(&law)) {
+      angular_damping += damping->coefficient;
+    } else if (const auto* spring = std::get_if<Spring>(&law); spring && spring->damping != 0.0) {
+      return coupled_kick(model, in, t, h);
+    } else {
+      const Wrench w = evaluate(law, constants, in, t);
+      fixed.force += w.force;
+      fixed.torque += w.torque;
+    }
+  }
+  PrimaryState out = in.primary();
+  out.momentum = decay(linear_damping * constants.inverse_mass, h, out.momentum, fixed.force);
+  if (angular_damping == 0.0) {
+    out.angular_momentum += h * fixed.torque;
+  } else if (constants.isotropic) {
+    out.angular_momentum = decay(angular_damping * constants.inverse_inertia.x(), h,
+                                 out.angular_momentum, fixed.torque);
+  } else {
+    const Mat3 rotation = in.orientation().toRotationMatrix();
+    Vec3 body_momentum = rotation.transpose() * out.angular_momentum;
+    const Vec3 body_torque = rotation.transpose() * fixed.torque;
+    for (int i = 0; i < 3; ++i) {
+      body_momentum[i] = decay(angular_damping * constants.inverse_inertia[i], h, body_momentum[i],
+                               body_torque[i]);
+    }
+    out.angular_momentum = rotation * body_momentum;
+  }
+  return out;
+}
+
+// The drift: the exact flow of the kinetic energy alone, x += (p/m) h and the torque-free rotation.
+PrimaryState drift(const BodyModel& model, PrimaryState state, double h) {
+  state.position += (h * model.constants.inverse_mass) * state.momentum;
+  state.orientation =
+      free_rigid_body(model.constants, state.orientation, state.angular_momentum, h);
+  return state;
+}
+
+// kick(k₀ dt) drift(d₀ dt) kick(k₁ dt) … drift(d_{n−1} dt) kick(k_n dt); forces are evaluated at
+// the time the drifts have reached.
+template <std::size_t Drifts>
+BodyState compose(const BodyModel& model, const BodyState& in, double t, double dt,
+                  const std::array<double, Drifts + 1>& kicks,
+                  const std::array<double, Drifts>& drifts) {
+  BodyState state = in;
+  double elapsed = 0.0;  // fraction of dt
+  for (std::size_t i = 0; i < Drifts; ++i) {
+    const PrimaryState kicked = kick(model, state, t + elapsed * dt, kicks[i] * dt);
+    state = BodyState(drift(model, kicked, drifts[i] * dt), model.constants);
+    elapsed += drifts[i];
+  }
+  return BodyState(kick(model, state, t + dt, kicks[Drifts] * dt), model.constants);
+}
+
+BodyState splitting_step(const BodyModel& model, const BodyState& in, double t, double dt) {
+  return compose<1>(model, in, t, dt, {0.5, 0.5}, {1.0});
+}
+
+// Yoshida 1990's triple jump S(γ₁h) S(γ₂h) S(γ₁h) with 2γ₁³ + γ₂³ = 0, 2γ₁ + γ₂ = 1; the kicks
+// that meet between two Strang steps are merged (both are exact flows of the same frozen field).
+BodyState splitting4_step(const BodyModel& model, const BodyState& in, double t, double dt) {
+  const double outer = 1.0 / (2.0 - std::cbrt(2.0));
+  const double inner = 1.0 - 2.0 * outer;
+  return compose<3>(model, in, t, dt,
+                    {0.5 * outer, 0.5 * (outer + inner), 0.5 * (outer + inner), 0.5 * outer},
+                    {outer, inner, outer});
+}
+
 }  // namespace
 
 std::string_view integrator_name(Integrator integrator) {
@@ -75,6 +244,10 @@ std::string_view integrator_name(Integrator integrator) {
       return "symplectic_euler";
     case Integrator::rk4:
       return "rk4";
+    case Integrator::splitting:
+      return "splitting";
+    case Integrator::splitting4:
+      return "splitting4";
   }
   return "unknown";
 }
@@ -95,6 +268,10 @@ BodyState step(Integrator integrator, const BodyModel& model, const BodyState& s
       return symplectic_euler_step(model, state, t, dt);
     case Integrator::rk4:
       return rk4_step(model, state, t, dt);
+    case Integrator::splitting:
+      return splitting_step(model, state, t, dt);
+    case Integrator::splitting4:
+      return splitting4_step(model, state, t, dt);
   }
   return state;
 }

@@ -20,13 +20,28 @@ enum class Integrator {
   euler,             // explicit Euler: every derivative from the start of the step (order 1)
   symplectic_euler,  // semi-implicit Euler: momenta first, then positions from new velocities
   rk4,               // classical Runge-Kutta as in Fiedler's "Physics in 3D" (order 4)
+  // Strang splitting kick(dt/2) drift(dt) kick(dt/2) of exact sub-flows: the drift moves the
+  // position by v dt and the orientation by the exact torque-free rotation
+  // (physics/free_rigid_body.hpp), the kick is the exact flow of the momenta under the forces with
+  // the pose frozen (damping as exponential decay). Order 2, symmetric; exact for torque-free
+  // bodies, stable for any damping. Costs 2 wrench evaluations and one free-rigid-body flow per
+  // step, a damped spring 12 more evaluations; measured 0.2 µs (cube) to 1 µs (box, three
+  // different moments), 2.5 µs with a damped spring, against RK4's 0.25-0.45 µs.
+  splitting,
+  // Yoshida's triple jump of `splitting` (steps γ dt, (1 − 2γ) dt, γ dt, γ = 1/(2 − 2^(1/3))),
+  // order 4; three drifts and four kicks per step, about 3× `splitting`. The middle step runs
+  // backwards in time, so very stiff damping (measured: c/m = 3000 /s at dt = 1/30) blows up
+  // here: use `splitting` for stiff scenes.
+  splitting4,
 };
 
 // The integrators in the order they are listed to users.
 inline constexpr Integrator kAllIntegrators[] = {Integrator::euler, Integrator::symplectic_euler,
-                                                 Integrator::rk4};
+                                                 Integrator::rk4, Integrator::splitting,
+                                                 Integrator::splitting4};
 
-// The scene-file name of an integrator ("euler", "symplectic_euler", "rk4").
+// The scene-file name of an integrator ("euler", "symplectic_euler", "rk4", "splitting",
+// "splitting4").
 std::string_view integrator_name(Integrator integrator);
 std::optional<Integrator> integrator_from_name(std::string_view name);
 

@@ -1,0 +1,162 @@
+#include "bench/accuracy.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace tumble::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// |difference| / scale; a difference from a zero scale is infinitely large.
+double relative(double difference, double scale) {
+  if (scale > 0.0) return std::abs(difference) / scale;
+  return difference == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+}
+
+// Beyond these a run has blown up: a million times the largest value the true motion has (or a
+// floor of 1 m, 1 m/s and 1 rad/s of the body), far past any merely inaccurate run, and far below
+// overflow, so every state stays finite (the physics asserts that in debug builds).
+struct BlowUpBounds {
+  double displacement;      // |x - x0| (m)
+  double momentum;          // |p| (kg m/s)
+  double angular_momentum;  // |L| (kg m²/s)
+
+  BlowUpBounds(const HardCase& c, const FinalState& reference) {
+    constexpr double kFactor = 1e6;
+    const physics::BodyState& start = c.initial;
+    const physics::BodyConstants& constants = c.model.constants;
+    displacement = kFactor * std::max((reference.position - start.position()).norm(), 1.0);
+    momentum = kFactor *
+               std::max({start.momentum().norm(), reference.momentum.norm(), constants.mass * 1.0});
+    angular_momentum =
+        kFactor * std::max({start.angular_momentum().norm(), reference.angular_momentum.norm(),
+                            constants.inertia.maxCoeff() * 1.0});
+  }
+
+  bool exceeded_by(const physics::BodyState& s, const physics::Vec3& start_position) const {
+    // Written so that NaN counts as exceeding.
+    return !((s.position() - start_position).norm() <= displacement &&
+             s.momentum().norm() <= momentum && s.angular_momentum().norm() <= angular_momentum &&
+             s.orientation().coeffs().allFinite());
+  }
+};
+
+// `steps` steps from the case's start, unchecked: the loop that is timed.
+physics::BodyState run(const HardCase& c, physics::Integrator integrator, double dt,
+                       std::int64_t steps) {
+  physics::BodyState state = c.initial;
+  for (std::int64_t n = 0; n < steps; ++n) {
+    state = physics::step(integrator, c.model, state, static_cast<double>(n) * dt, dt);
+  }
+  return state;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+}  // namespace
+
+AccuracySettings quick_accuracy_settings() {
+  return {.cases = {"article_cube", "stiff_linear_damping", "box_on_spring"},
+          .steps = {1.0 / 30, 1.0 / 60},
+          .timing = {.samples = 1, .min_sample_seconds = 0.0}};
+}
+
+AccuracyRow measure_accuracy(const HardCase& c, physics::Integrator integrator, double dt,
+                             const TimingSettings& timing) {
+  const Reference& reference = c.reference();
+  AccuracyRow row{.case_name = c.name,
+                  .integrator = std::string(physics::integrator_name(integrator)),
+                  .dt = dt,
+                  .steps = std::llround(c.duration / dt)};
+
+  // The error run: every step checked, so a blow-up stops it while the state is still finite.
+  const BlowUpBounds bounds(c, reference.state);
+  const Clock::time_point error_run_start = Clock::now();
+  physics::BodyState state = c.initial;
+  std::int64_t taken = 0;
+  while (taken < row.steps && !row.blew_up) {
+    state = physics::step(integrator, c.model, state, static_cast<double>(taken) * dt, dt);
+    ++taken;
+    row.blew_up = bounds.exceeded_by(state, c.initial.position());
+  }
+  const double error_run_seconds = seconds_since(error_run_start);
+
+  if (row.blew_up) {
+    row.orientation_error = row.position_error = kNaN;
+    row.angular_momentum_error = row.energy_error = kNaN;
+  } else {
+    const FinalState end = final_state_of(state);
+    const FinalState start = final_state_of(c.initial);
+    const FinalState& exact = reference.state;
+    row.orientation_error = physics::angle_between(end.orientation, exact.orientation);
+    row.position_error = (end.position - exact.position).norm();
+    row.angular_momentum_error =
+        c.conserves_angular_momentum
+            ? relative(end.angular_momentum.norm() - start.angular_momentum.norm(),
+                       start.angular_momentum.norm())
+            : relative((end.angular_momentum - exact.angular_momentum).norm(),
+                       std::max(exact.angular_momentum.norm(), start.angular_momentum.norm()));
+    row.energy_error = c.conserves_energy
+                           ? relative(end.energy - start.energy, start.energy)
+                           : relative(end.energy - exact.energy,
+                                      std::max(std::abs(exact.energy), std::abs(start.energy)));
+  }
+
+  // The timing samples repeat exactly the steps the error run took (all of them finite: the runs
+  // are deterministic), without the per-step check.
+  const std::int64_t repeats = std::max<std::int64_t>(
+      1, std::llround(std::ceil(timing.min_sample_seconds / std::max(error_run_seconds, 1e-9))));
+  std::vector<double> ns_per_step;
+  volatile double sink = 0.0;  // keeps the timed runs from being optimised away
+  for (int sample = 0; sample < std::max(1, timing.samples); ++sample) {
+    const Clock::time_point start = Clock::now();
+    for (std::int64_t r = 0; r < repeats; ++r) {
+      sink = sink + run(c, integrator, dt, taken).position().x();
+    }
+    ns_per_step.push_back(seconds_since(start) * 1e9 / static_cast<double>(repeats * taken));
+  }
+  row.ns_per_step = median(ns_per_step);
+  row.ns_per_simulated_second = row.ns_per_step / dt;
+  return row;
+}
+
+std::vector<AccuracyRow> measure_accuracy(
+    const AccuracySettings& settings,
+    const std::function<void(const HardCase&, physics::Integrator)>& on_start) {
+  std::vector<const HardCase*> cases;
+  if (settings.cases.empty()) {
+    for (const HardCase& c : hard_cases()) cases.push_back(&c);
+  } else {
+    for (const std::string& name : settings.cases) {
+      const HardCase* c = find_hard_case(name);
+      if (!c) throw std::invalid_argument("no hard case named " + name);
+      cases.push_back(c);
+    }
+  }
+  std::vector<AccuracyRow> rows;
+  for (const HardCase* c : cases) {
+    for (const physics::Integrator integrator : physics::kAllIntegrators) {
+      if (on_start) on_start(*c, integrator);
+      for (const double dt : settings.steps) {
+        rows.push_back(measure_accuracy(*c, integrator, dt, settings.timing));
+      }
+    }
+  }
+  return rows;
+}
+
+}  // namespace tumble::bench

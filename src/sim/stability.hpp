@@ -1,0 +1,56 @@
+// Step-size advice from a body's force laws, before a run: where an explicit integrator turns
+// unstable, from the linear test equation of each stiff law, and where the body turns so far per
+// step that the orientation will be inaccurate. Pure computation: the commands print it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "physics/integrators.hpp"
+#include "physics/rigid_body.hpp"
+
+namespace tumble::sim {
+
+// One linear mode the force laws give the motion: y'' + k y' + ω_n² y = 0, or, with ω_n = 0, the
+// decay p' = -k p of a momentum (linear or angular damping).
+struct LinearMode {
+  double damping_rate = 0.0;  // k (1/s): c/m, c/I_min, or a spring's c/m_eff
+  double frequency = 0.0;     // ω_n (rad/s): sqrt(stiffness / m_eff); 0 for a pure decay
+};
+
+// The largest dt (s) at which `integrator` keeps the mode from growing: the one-step map of the
+// linear system has spectral radius <= 1 for every step up to it. For a pure decay this is
+// k dt <= 2 for euler and symplectic_euler and k dt <= 2.785 for rk4; for an undamped oscillator
+// ω dt <= 2 for symplectic_euler and 2√2 for rk4, and 0 for euler (it gains energy at any
+// step). The splitting methods apply damping exactly (no limit on a pure decay) and kick springs
+// like Störmer-Verlet (ω dt <= 2 for splitting; splitting4, Yoshida's triple jump of it, has a
+// smaller limit). +infinity when no step is unstable; nullopt for an integrator this model does
+// not know.
+std::optional<double> stability_limit(physics::Integrator integrator, const LinearMode& mode);
+
+// Above this rotation per step (rad) the integrators that advance q along a straight line in
+// quaternion space (euler, symplectic_euler, rk4) lose the orientation's accuracy.
+inline constexpr double kMaxRotationPerStep = 0.5;
+// A suggested step is this fraction of the limit it must respect.
+inline constexpr double kSuggestedFractionOfLimit = 0.8;
+
+struct StepWarning {
+  std::string message;                 // one sentence: the cause, its numbers and the limit
+  std::optional<double> suggested_dt;  // s; absent when no step would do (euler on a spring)
+  // An integrator without this problem at the current dt, when one exists.
+  std::optional<physics::Integrator> suggested_integrator;
+};
+
+// The warnings for one body stepped by `integrator` at `dt` (s) for `duration` (s): one per
+// stiff law beyond its stability limit (linear damping: k = c/m; angular damping: k = c/I_min;
+// a spring at attachment r: ω_n² = stiffness μ and k = damping μ + c_linear/m with
+// μ = 1/m + |r|²/I_min, the lightest the body can seem to it) and one when the fastest spin
+// expected (from the initial spin, the energy and the constant torques; springs and pushes are
+// not predicted) turns the body more than kMaxRotationPerStep per step. Modes are checked one
+// at a time; where laws interact the limit is an estimate.
+std::vector<StepWarning> check_step(const physics::BodyModel& model,
+                                    const physics::BodyState& initial,
+                                    physics::Integrator integrator, double dt, double duration);
+
+}  // namespace tumble::sim

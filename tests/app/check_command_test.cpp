@@ -1,0 +1,79 @@
+// End-to-end tests of `tumble check` and of the same stability warnings from `tumble simulate`.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "support/command_test.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using tumble::testing::Outcome;
+
+class CheckCommand : public tumble::testing::CommandTest {};
+
+// A 2 kg cube in linear damping 600 N s/m: k = 300 /s, and k dt = 2.5 with explicit Euler.
+constexpr const char* kStiffScene = R"(duration = 1.0
+[physics]
+dt = 0.008333333333333333
+integrator = "euler"
+[[bodies]]
+name = "cube"
+shape = "cube"
+size = 1.0
+mass = 2.0
+velocity = [1.0, 0.0, 0.0]
+[[bodies.forces]]
+kind = "linear_damping"
+coefficient = 600.0
+)";
+
+TEST_F(CheckCommand, EveryExampleSceneIsValidWithoutWarnings) {
+  for (const auto& entry : fs::directory_iterator(fs::path(TUMBLE_SOURCE_DIR) / "scenes")) {
+    const Outcome run = tumble("check " + entry.path().string());
+    EXPECT_EQ(run.exit_code, 0) << entry.path() << run.err;
+    EXPECT_NE(run.out.find(": valid: "), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("; 0 warnings"), std::string::npos) << run.out;
+    EXPECT_EQ(run.err, "");
+  }
+}
+
+TEST_F(CheckCommand, PrintsTheWarningsOfAValidSceneAndExitsZero) {
+  const fs::path scene = write("stiff.toml", kStiffScene);
+  const Outcome run = tumble("check " + scene.string());
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("tumble: warning: body \"cube\": linear damping makes the momentum "
+                         "decay at k = c/m = 300 /s: k·dt = 2.5 is beyond euler's stability "
+                         "limit k·dt <= 2, so the motion will blow up; use dt <= 0.00533 s"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("valid: 1 body, 120 steps of 0.00833333 s with euler; 1 warning\n"),
+            std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.err, "");
+}
+
+TEST_F(CheckCommand, AnInvalidSceneExitsTwoWithItsLocation) {
+  const fs::path scene =
+      write("bad.toml", "duration = 1.0\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = -1.0\n");
+  const Outcome run = tumble("check " + scene.string());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("bad.toml:5:8: bodies[0].mass: must be greater than 0"), std::string::npos)
+      << run.err;
+  EXPECT_EQ(run.out, "");
+  EXPECT_EQ(tumble("check " + path("absent.toml")).exit_code, 2);
+}
+
+TEST_F(CheckCommand, SimulatePrintsTheSameWarningsOnStandardError) {
+  const fs::path scene = write("stiff.toml", kStiffScene);
+  const Outcome run = tumble("simulate " + scene.string() + " --every 1000");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.err.rfind("tumble: warning: body \"cube\": linear damping makes the momentum", 0),
+            0u)
+      << run.err;
+  EXPECT_EQ(run.out.rfind("t,body,x,y,z,", 0), 0u);  // the CSV is untouched on standard output
+}
+
+}  // namespace
