@@ -12,6 +12,7 @@
 namespace tumble::physics {
 namespace {
 
+using testing::ArticleCube;
 using testing::DampedSpinUp;
 using testing::SpinningProjectile;
 
@@ -21,15 +22,6 @@ BodyState run(Integrator integrator, const BodyModel& model, BodyState state, do
   for (int n = 0; n < steps; ++n) state = step(integrator, model, state, n * dt, dt);
   return state;
 }
-
-struct ArticleCube {
-  DampedSpinUp exact;
-  BodyModel model{.constants = cube_constants(1.0, 1.0),
-                  .forces = {ConstantTorque{.torque = Vec3(exact.torque, 0, 0)},
-                             AngularDamping{.coefficient = exact.coefficient}}};
-  BodyState start =
-      make_state(model.constants, Vec3::Zero(), Vec3::Zero(), Quat::Identity(), Vec3::Zero());
-};
 
 // A box hanging from a corner on a damped spring under gravity, released with a twist: every
 // coupling between translation and rotation is active and the motion is smooth.

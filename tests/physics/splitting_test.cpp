@@ -14,6 +14,7 @@
 namespace tumble::physics {
 namespace {
 
+using testing::ArticleCube;
 using testing::DampedSpinUp;
 
 BodyState run(Integrator integrator, const BodyModel& model, BodyState state, double duration,
@@ -167,15 +168,6 @@ TEST(Splitting, StaysBoundedUnderAnyDamping) {
 }
 
 // ---- Under torques: measured order and error against RK4 --------------------------------------
-
-struct ArticleCube {
-  DampedSpinUp exact;
-  BodyModel model{.constants = cube_constants(1.0, 1.0),
-                  .forces = {ConstantTorque{.torque = Vec3(exact.torque, 0, 0)},
-                             AngularDamping{.coefficient = exact.coefficient}}};
-  BodyState start =
-      make_state(model.constants, Vec3::Zero(), Vec3::Zero(), Quat::Identity(), Vec3::Zero());
-};
 
 // A constant world force at a body point off the centre: its torque turns with the body.
 struct PushedBox {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
 
 namespace tumble::testing {
@@ -26,6 +27,16 @@ struct DampedSpinUp {
     return torque / coefficient * (t - (1.0 - std::exp(-rate() * t)) / rate());
   }
   Quat orientation(double t) const { return Quat(Eigen::AngleAxisd(angle(t), Vec3::UnitX())); }
+};
+
+// Fiedler's example as a body: a unit cube from rest under the torque and damping above.
+struct ArticleCube {
+  DampedSpinUp exact;
+  physics::BodyModel model{.constants = physics::cube_constants(1.0, 1.0),
+                           .forces = {physics::ConstantTorque{.torque = Vec3(exact.torque, 0, 0)},
+                                      physics::AngularDamping{.coefficient = exact.coefficient}}};
+  physics::BodyState start = physics::make_state(model.constants, Vec3::Zero(), Vec3::Zero(),
+                                                 Quat::Identity(), Vec3::Zero());
 };
 
 // A torque-free body with isotropic inertia under uniform gravity: a parabola for the centre,
