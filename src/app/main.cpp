@@ -14,17 +14,8 @@
 
 namespace {
 
-// A whole number >= 1, with a message a person can read (CLI11's ranges print DBL_MAX).
-const CLI::Validator kAtLeastOne(
-    [](std::string& value) {
-      long long parsed = 0;
-      const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), parsed);
-      const bool whole = error == std::errc() && end == value.data() + value.size();
-      return whole && parsed >= 1 ? std::string() : "expected a whole number >= 1, got " + value;
-    },
-    "N>=1");
-
-// A whole number from `min` to `max`, in the same readable style; `range` says which in words.
+// A whole number from `min` to `max`, with a message a person can read (CLI11's own ranges print
+// DBL_MAX); `range` says which in words.
 CLI::Validator whole_number_in(long long min, long long max, const std::string& range) {
   return CLI::Validator(
       [=](std::string& value) {
@@ -53,7 +44,7 @@ int main(int argc, char** argv) {
   simulate_command->add_option("--out", simulate.out, "CSV file to write, or - for stdout")
       ->capture_default_str();
   simulate_command->add_option("--every", simulate.every, "Write a row every N steps")
-      ->check(kAtLeastOne)
+      ->check(whole_number_in(1, LLONG_MAX, ">= 1"))
       ->capture_default_str();
 
   RenderOptions render;
