@@ -23,15 +23,15 @@ struct Camera {
 
 struct DirectionalLight {
   Vec3 direction = Vec3(0.25, -1.2, -0.75);  // the way the light travels, world frame
-  Color color = Color(1.0, 1.0, 1.0);       // key light colour and intensity (sRGB)
-  double ambient = 0.3;                     // ambient intensity, a fraction of the key
+  Color color = Color(1.0, 1.0, 1.0);        // key light colour and intensity (sRGB)
+  double ambient = 0.3;                      // ambient intensity, a fraction of the key
 };
 
 struct Ground {
   bool enabled = true;
-  double height = -1.5;                  // y of the plane (m)
+  double height = -1.5;                   // y of the plane (m)
   Color color = Color(0.62, 0.64, 0.66);  // sRGB
-  double grid_spacing = 1.0;             // m between grid lines; 0 = no grid
+  double grid_spacing = 1.0;              // m between grid lines; 0 = no grid
 };
 
 // A box (a cube when the edges are equal) at a pose.

@@ -66,8 +66,9 @@ std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height
                             0};
   OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!context) {
-    error = "OSMesaCreateContextAttribs failed: no OpenGL 3.3 core context (is Mesa's OSMesa "
-            "installed? Debian: libosmesa6)";
+    error =
+        "OSMesaCreateContextAttribs failed: no OpenGL 3.3 core context (is Mesa's OSMesa "
+        "installed? Debian: libosmesa6)";
     return nullptr;
   }
   auto out = std::make_unique<OsmesaContext>(context, width, height);

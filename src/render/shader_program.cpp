@@ -107,8 +107,8 @@ ShaderProgram ShaderProgram::build(const std::string& directory,
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
-    error = vertex_label + ", " + fragment_label + ": shader link failed:\n" +
-            info_log(program, true);
+    error =
+        vertex_label + ", " + fragment_label + ": shader link failed:\n" + info_log(program, true);
     glDeleteProgram(program);
     return {};
   }
