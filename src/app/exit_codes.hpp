@@ -4,6 +4,9 @@
 namespace tumble::app {
 
 // kExitMismatch: the command ran but its check failed (e.g. `tumble diff` found differences).
-enum ExitCode : int { kExitOk = 0, kExitMismatch = 1, kExitBadInput = 2 };
+// kExitBadInput: bad usage, a bad scene or image, or a failure to write the output.
+// kExitInterrupted + N: stopped cleanly by signal N (130 for SIGINT, 143 for SIGTERM), as a
+// shell reports a program killed by it.
+enum ExitCode : int { kExitOk = 0, kExitMismatch = 1, kExitBadInput = 2, kExitInterrupted = 128 };
 
 }  // namespace tumble::app

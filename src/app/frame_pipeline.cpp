@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -59,6 +60,19 @@ struct Slot {
   std::atomic<int> pending{0};  // sinks that have not finished with this frame
 };
 
+// Simulates and draws frame k into `image`: "" or the error the source threw (a blow-up, an
+// interruption, a renderer failure).
+std::string draw_frame(const FrameSource& source, std::int64_t k, io::Image& image,
+                       PipelineReport& report) {
+  try {
+    const render::FrameView view = timed(report.simulate, [&] { return source.view(k); });
+    timed(report.render, [&] { source.draw(view, image); });
+    return {};
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+}
+
 }  // namespace
 
 PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSource& source,
@@ -80,10 +94,8 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSourc
   if (serial) {
     io::Image image;
     for (std::int64_t k = first; k < end; ++k) {
-      const render::FrameView view = timed(report.simulate, [&] { return source.view(k); });
-      timed(report.render, [&] { source.draw(view, image); });
-      std::string error;
-      if (sinks.png) error = timed(report.png, [&] { return sinks.png(k, image); });
+      std::string error = draw_frame(source, k, image, report);
+      if (error.empty() && sinks.png) error = timed(report.png, [&] { return sinks.png(k, image); });
       if (error.empty() && sinks.video) {
         error = timed(report.video, [&] { return sinks.video(image); });
       }
@@ -146,8 +158,10 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSourc
     const std::optional<std::size_t> slot = free_slots.pop();
     if (!slot) break;  // a worker failed
     Slot& s = slots[*slot];
-    const render::FrameView view = timed(report.simulate, [&] { return source.view(k); });
-    timed(report.render, [&] { source.draw(view, s.image); });
+    if (const std::string error = draw_frame(source, k, s.image, report); !error.empty()) {
+      fail(error);
+      break;
+    }
     s.frame = k;
     s.pending = sinks_per_frame;
     if (sinks_per_frame == 0) {  // drawing only, as when measuring the renderer alone

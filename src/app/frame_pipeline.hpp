@@ -14,6 +14,7 @@
 
 namespace tumble::app {
 
+// Either may throw std::exception to stop the run: its what() becomes the run's error.
 struct FrameSource {
   std::function<render::FrameView(std::int64_t frame)> view;  // simulate to the frame's time
   std::function<void(const render::FrameView&, io::Image&)> draw;

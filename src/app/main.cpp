@@ -8,9 +8,11 @@
 #include "app/bench_pipeline.hpp"
 #include "app/check_command.hpp"
 #include "app/diff_command.hpp"
+#include "app/interrupt.hpp"
 #include "app/render_command.hpp"
 #include "app/simulate_command.hpp"
 #include "io/png_io.hpp"
+#include "scene/limits.hpp"
 
 namespace {
 
@@ -34,6 +36,7 @@ CLI::Validator whole_number_in(long long min, long long max, const std::string& 
 
 int main(int argc, char** argv) {
   using namespace tumble::app;
+  ignore_file_size_signal();
   CLI::App app{"tumble: rigid-body scenes to frames and video, headless"};
   app.require_subcommand(1);
 
@@ -57,9 +60,9 @@ int main(int argc, char** argv) {
                    "Output folder; files go to OUTPUT/<scene name>/")
       ->capture_default_str();
   render_command->add_option("--width", render.width, "Image width (pixels)")
-      ->check(CLI::Range(16, 8192));
+      ->check(CLI::Range(tumble::scene::kMinImageSide, tumble::scene::kMaxImageSide));
   render_command->add_option("--height", render.height, "Image height (pixels)")
-      ->check(CLI::Range(16, 8192));
+      ->check(CLI::Range(tumble::scene::kMinImageSide, tumble::scene::kMaxImageSide));
   render_command->add_option("--fps", render.fps, "Frames per second")->check(CLI::Range(1, 240));
   render_command->add_option("--frames", frame_range, "Render frames A to B-1 only (A:B)");
   render_command->add_flag("!--no-frames", render.frames, "Do not write PNG frames");
@@ -102,10 +105,10 @@ int main(int argc, char** argv) {
       "--scene", bench_pipeline.scene_path,
       "Scene to render (default: a built-in lit cube with ground and shadow)");
   bench_pipeline_command->add_option("--width", bench_pipeline.width, "Image width")
-      ->check(CLI::Range(16, 8192))
+      ->check(CLI::Range(tumble::scene::kMinImageSide, tumble::scene::kMaxImageSide))
       ->capture_default_str();
   bench_pipeline_command->add_option("--height", bench_pipeline.height, "Image height")
-      ->check(CLI::Range(16, 8192))
+      ->check(CLI::Range(tumble::scene::kMinImageSide, tumble::scene::kMaxImageSide))
       ->capture_default_str();
   bench_pipeline_command->add_option("--frames", bench_pipeline.frames, "Frames per path")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{100000}))

@@ -11,10 +11,13 @@
 #include <thread>
 
 #include "app/exit_codes.hpp"
+#include "app/interrupt.hpp"
 #include "app/progress.hpp"
 #include "app/render_job.hpp"
 #include "app/stability_report.hpp"
 #include "io/atomic_file.hpp"
+#include "io/staged_directory.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace tumble::app {
@@ -99,6 +102,19 @@ std::string write_text_file(const std::string& path, const std::string& text) {
 
 }  // namespace
 
+// Why the folder at `directory` must not be replaced by a render ("" when it may): tumble
+// replaces its output folder as a whole, so it only ever replaces one of its own.
+std::string replace_problem(const fs::path& directory) {
+  std::error_code error;
+  const fs::file_status status = fs::status(directory, error);
+  if (!fs::exists(status)) return {};
+  if (!fs::is_directory(status)) return directory.string() + " exists and is not a folder";
+  if (fs::exists(directory / "report.json", error) || fs::is_empty(directory, error)) return {};
+  return "output folder " + directory.string() +
+         " exists and is not a tumble render (it has no report.json); a render replaces its "
+         "folder as a whole, so choose another -o or [output] directory, or remove it";
+}
+
 int run_render(const RenderOptions& options, std::FILE* err) {
   const auto start = Clock::now();
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
@@ -110,6 +126,14 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   if (options.width) scene.render.width = *options.width;
   if (options.height) scene.render.height = *options.height;
   if (options.fps) scene.fps = *options.fps;
+  for (const std::string& problem :
+       {scene::pixel_limit_problem(scene.render.width, scene.render.height),
+        scene::frame_limit_problem(scene.duration, scene.fps)}) {
+    if (!problem.empty()) {
+      std::fprintf(err, "tumble: %s\n", problem.c_str());
+      return kExitBadInput;
+    }
+  }
   if (!options.quiet) print_stability_warnings(scene, err);
   const bool write_frames = options.frames && scene.output.frames;
   const bool write_video = options.video && scene.output.video;
@@ -134,29 +158,41 @@ int run_render(const RenderOptions& options, std::FILE* err) {
                  static_cast<long long>(total));
     return kExitBadInput;
   }
-
-  const fs::path directory = fs::path(options.output_root) / scene.output.directory;
-  const fs::path frames_directory = directory / "frames";
-  std::error_code error_code;
-  fs::create_directories(write_frames ? frames_directory : directory, error_code);
-  if (error_code) {
-    std::fprintf(err, "tumble: cannot create output folder %s: %s\n",
-                 (write_frames ? frames_directory : directory).c_str(),
-                 error_code.message().c_str());
-    return kExitBadInput;
-  }
-
-  RenderPlan plan{.first = first,
-                  .end = end,
-                  .frames_directory = write_frames ? frames_directory.string() : "",
-                  .video_path = write_video ? (directory / (scene.name + ".mp4")).string() : "",
-                  .png = options.png,
-                  .serial = options.serial,
-                  .shader_directory = find_shader_directory()};
-  if (plan.shader_directory.empty()) {
+  const std::string shader_directory = find_shader_directory();
+  if (shader_directory.empty()) {
     std::fprintf(err, "tumble: cannot find the shaders/ folder (set TUMBLE_SHADER_DIR)\n");
     return kExitBadInput;
   }
+
+  // Everything is written into a hidden folder beside the final one and swapped in at the end:
+  // a failed or interrupted render leaves the earlier output as it was.
+  const fs::path directory = fs::path(options.output_root) / scene.output.directory;
+  if (const std::string problem = replace_problem(directory); !problem.empty()) {
+    std::fprintf(err, "tumble: %s\n", problem.c_str());
+    return kExitBadInput;
+  }
+  io::StagedDirectory staged(directory.string());
+  const fs::path staging = staged.path();
+  std::error_code error_code;
+  if (staged.ok() && write_frames) fs::create_directory(staging / "frames", error_code);
+  if (!staged.ok() || error_code) {
+    std::fprintf(err, "tumble: %s\n",
+                 staged.ok() ? ("cannot create " + (staging / "frames").string() + ": " +
+                                error_code.message())
+                                   .c_str()
+                             : staged.error().c_str());
+    return kExitBadInput;
+  }
+  const std::string video_name = scene.name + ".mp4";
+  RenderPlan plan{.first = first,
+                  .end = end,
+                  .frames_directory = write_frames ? (staging / "frames").string() : "",
+                  .video_path = write_video ? (staging / video_name).string() : "",
+                  .png = options.png,
+                  .serial = options.serial,
+                  .shader_directory = shader_directory};
+  install_interrupt_handlers();
+  plan.stop_requested = [] { return interrupt_signal() != 0; };
   Progress progress(end - first, options.quiet, err);
   plan.on_frame_done = [&](std::int64_t done) { progress.update(done); };
   const RenderResult result = render_scene(scene, plan);
@@ -164,22 +200,40 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   if (options.verbose && !result.renderer.empty()) {
     std::fprintf(err, "tumble: renderer %s\n", result.renderer.c_str());
   }
+  const auto stopped = [&](const std::string& why) {
+    std::fprintf(err, "tumble: %s after %lld of %lld frames; %s was left as it was\n",
+                 why.c_str(), static_cast<long long>(result.pipeline.frames_done),
+                 static_cast<long long>(end - first), directory.c_str());
+  };
+  if (const int signal = interrupt_signal()) {
+    stopped(std::string("stopped by ") + signal_name(signal));
+    return kExitInterrupted + signal;
+  }
   if (!result.error.empty()) {
     std::fprintf(err, "tumble: %s\n", result.error.c_str());
+    stopped("render failed");
     return kExitBadInput;
   }
+
+  // The report names the final paths, where the files will be once the folder is in place.
+  RenderPlan final_paths = plan;
+  final_paths.frames_directory = write_frames ? (directory / "frames").string() : "";
+  final_paths.video_path = write_video ? (directory / video_name).string() : "";
   const double total_seconds = seconds_since(start);
-  const std::string error = write_text_file((directory / "report.json").string(),
-                                            report_json(scene, plan, result, total_seconds));
+  std::string error = write_text_file((staging / "report.json").string(),
+                                      report_json(scene, final_paths, result, total_seconds));
+  if (error.empty() && !staged.commit()) error = staged.error();
   if (!error.empty()) {
     std::fprintf(err, "tumble: %s\n", error.c_str());
+    stopped("render failed");
     return kExitBadInput;
   }
   if (!options.quiet) {
     std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",
                  static_cast<long long>(end - first), total_seconds,
                  static_cast<double>(end - first) / total_seconds,
-                 write_video ? plan.video_path.c_str() : plan.frames_directory.c_str());
+                 write_video ? final_paths.video_path.c_str()
+                             : final_paths.frames_directory.c_str());
   }
   return kExitOk;
 }

@@ -49,7 +49,13 @@ RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
   RenderResult result;
   const auto setup_start = std::chrono::steady_clock::now();
   const std::int64_t total = std::llround(scene.duration * scene.fps);
-  const Framing framing = frame_scene(scene, total);
+  Framing framing;
+  try {
+    framing = frame_scene(scene, total, plan.stop_requested);
+  } catch (const RenderStopped& stopped) {
+    result.error = stopped.what();
+    return result;
+  }
   render::RenderSettings settings = scene.render;
   settings.ground.height = framing.ground_height;
 
@@ -80,7 +86,10 @@ RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
   const FrameSource source{.view =
                                [&](std::int64_t k) {
                                  const double t = static_cast<double>(k) / scene.fps;
-                                 return frame_view(scene, framing, simulation.states_at(t), t);
+                                 return frame_view(
+                                     scene, framing,
+                                     checked_states_at(simulation, scene, t, plan.stop_requested),
+                                     t);
                                },
                            .draw = [&](const render::FrameView& view,
                                        io::Image& image) { renderer->draw(view, image); }};

@@ -22,6 +22,7 @@ struct RenderPlan {
   bool serial = false;  // one thread, for comparison (same bytes as the pipeline)
   std::string shader_directory;
   std::function<void(std::int64_t done)> on_frame_done = [](std::int64_t) {};
+  std::function<bool()> stop_requested = [] { return false; };  // asked before each frame
 };
 
 struct BodyDiagnostics {

@@ -4,11 +4,22 @@
 #include <cmath>
 #include <limits>
 
+#include "app/stability_report.hpp"
 #include "scene/scene_builder.hpp"
 
 namespace tumble::app {
 
-Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count) {
+std::vector<physics::BodyState> checked_states_at(sim::Simulation& simulation,
+                                                  const scene::Scene& scene, double t,
+                                                  const StopRequested& stop_requested) {
+  if (stop_requested()) throw RenderStopped("interrupted");
+  std::vector<physics::BodyState> states = simulation.states_at(t);
+  if (simulation.blow_up()) throw RenderStopped(blow_up_message(scene, *simulation.blow_up()));
+  return states;
+}
+
+Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
+                    const StopRequested& stop_requested) {
   // Bounds of every body, at every frame, as spheres around their centres.
   physics::Vec3 low = physics::Vec3::Constant(std::numeric_limits<double>::infinity());
   physics::Vec3 high = -low;
@@ -16,7 +27,8 @@ Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count) {
   double lowest_point = std::numeric_limits<double>::infinity();
   sim::Simulation simulation = scene::build_simulation(scene);
   for (std::int64_t k = 0; k < std::max<std::int64_t>(frame_count, 1); ++k) {
-    const auto states = simulation.states_at(static_cast<double>(k) / scene.fps);
+    const auto states =
+        checked_states_at(simulation, scene, static_cast<double>(k) / scene.fps, stop_requested);
     for (std::size_t i = 0; i < states.size(); ++i) {
       const double radius = 0.5 * scene.bodies[i].size.norm();
       low = low.cwiseMin(states[i].position());

@@ -3,6 +3,8 @@
 #include <memory>
 #include <variant>
 
+#include "app/exit_codes.hpp"
+#include "app/interrupt.hpp"
 #include "app/stability_report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/state_csv.hpp"
@@ -59,9 +61,21 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
 
   sim::Simulation simulation = scene::build_simulation(scene);
   const std::int64_t steps = scene::step_count(scene);
+  install_interrupt_handlers();
   bool ok = io::write_state_header(out) && write_rows(out, scene, simulation);
   for (std::int64_t n = 1; n <= steps && ok; ++n) {
     simulation.step();
+    // Either leaves the file unwritten: AtomicFile removes its temporary file when not committed.
+    if (const int signal = interrupt_signal()) {
+      std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", signal_name(signal),
+                   simulation.time(), scene.duration,
+                   file ? (options.out + " was not written").c_str() : "output incomplete");
+      return kExitInterrupted + signal;
+    }
+    if (const auto& blow_up = simulation.blow_up()) {
+      std::fprintf(err, "tumble: %s\n", blow_up_message(scene, *blow_up).c_str());
+      return kExitBadInput;
+    }
     if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
   }
   if (file) {

@@ -4,19 +4,22 @@
 #include <array>
 #include <filesystem>
 
+#include "scene/limits.hpp"
+
 namespace tumble::scene::detail {
 namespace {
 
-// Largest image side: 8K. Bigger is almost surely a typo, and costs minutes per frame here.
-constexpr std::int64_t kMaxImageSide = 8192;
 constexpr std::array<std::string_view, 10> kPresets = {
     "ultrafast", "superfast", "veryfast", "faster",   "fast",
     "medium",    "slow",      "slower",   "veryslow", "placebo"};
 
 void read_render(TableReader& in, Scene& scene) {
   render::RenderSettings& r = scene.render;
-  r.width = static_cast<int>(in.optional_integer("width", r.width, 16, kMaxImageSide));
-  r.height = static_cast<int>(in.optional_integer("height", r.height, 16, kMaxImageSide));
+  r.width = static_cast<int>(in.optional_integer("width", r.width, kMinImageSide, kMaxImageSide));
+  r.height = static_cast<int>(in.optional_integer("height", r.height, kMinImageSide, kMaxImageSide));
+  if (const std::string problem = pixel_limit_problem(r.width, r.height); !problem.empty()) {
+    in.fail(in.has("height") ? "height" : "width", problem);
+  }
   scene.fps = static_cast<int>(in.optional_integer("fps", scene.fps, 1, 240));
   r.msaa = static_cast<int>(in.optional_integer("msaa", r.msaa, 1, 16));
   if (r.msaa & (r.msaa - 1)) {
@@ -78,12 +81,15 @@ void read_output(TableReader& in, Scene& scene) {
   o.directory = in.optional_string("directory", o.directory);
   // The scene chooses a folder below the output root, never a place elsewhere.
   const std::filesystem::path directory(o.directory);
+  // Nor the output folder itself: the scene's folder is replaced as a whole by each render.
   const bool escapes =
-      directory.is_absolute() || std::any_of(directory.begin(), directory.end(),
-                                             [](const auto& part) { return part == ".."; });
+      directory.is_absolute() ||
+      std::any_of(directory.begin(), directory.end(),
+                  [](const auto& part) { return part == ".." || part == "." || part.empty(); });
   if (o.directory.empty() || escapes) {
     in.fail("directory",
-            "must be a relative folder inside the output folder (no \"..\", not absolute)");
+            "must be a relative folder inside the output folder (no \"..\" or \".\", not "
+            "absolute)");
   }
   o.frames = in.optional_bool("frames", o.frames);
   o.video = in.optional_bool("video", o.video);
@@ -112,6 +118,12 @@ void read_render_tables(TableReader& root, Scene& scene) {
   read("light", read_light);
   read("ground", read_ground);
   read("output", read_output);
+  if (const std::string problem = frame_limit_problem(scene.duration, scene.fps);
+      !problem.empty()) {
+    const toml::table* render = root.table().get_as<toml::table>("render");
+    if (render && render->contains("fps")) TableReader(*render, "render", root.file()).fail("fps", problem);
+    root.fail("duration", problem);
+  }
 }
 
 }  // namespace tumble::scene::detail

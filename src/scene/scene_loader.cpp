@@ -6,6 +6,8 @@
 
 #include <toml++/toml.h>
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -107,6 +109,10 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   if (in.has("forces")) {
     const toml::array* forces = in.table().get("forces")->as_array();
     if (!forces) in.fail("forces", "expected [[bodies.forces]] tables");
+    if (forces->size() > static_cast<std::size_t>(kMaxForcesPerBody)) {
+      in.fail("forces", std::to_string(forces->size()) + " force laws, more than the limit of " +
+                            std::to_string(kMaxForcesPerBody) + " per body");
+    }
     for (std::size_t i = 0; i < forces->size(); ++i) {
       const toml::table* table = (*forces)[i].as_table();
       const std::string path = in.path() + ".forces[" + std::to_string(i) + "]";
@@ -169,6 +175,11 @@ Scene read_scene(const toml::table& root, const std::string& file) {
 
   const toml::array* bodies = in.required("bodies").as_array();
   if (!bodies || bodies->empty()) in.fail("bodies", "expected at least one [[bodies]] table");
+  if (bodies->size() > static_cast<std::size_t>(kMaxBodies)) {
+    in.fail_at((*bodies)[static_cast<std::size_t>(kMaxBodies)].source(), "bodies",
+               std::to_string(bodies->size()) + " bodies, more than the limit of " +
+                   std::to_string(kMaxBodies));
+  }
   std::set<std::string> names;
   for (std::size_t i = 0; i < bodies->size(); ++i) {
     const std::string path = "bodies[" + std::to_string(i) + "]";
@@ -202,12 +213,23 @@ SceneOrError parse_scene(std::string_view text, const std::string& path) {
 }
 
 SceneOrError load_scene_file(const std::string& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    return SceneError{path + ": is a folder, not a scene file"};
+  }
   std::ifstream file(path, std::ios::binary);
-  if (!file) return SceneError{path + ": cannot open scene file"};
-  std::ostringstream text;
-  text << file.rdbuf();
+  if (!file) return SceneError{path + ": cannot open scene file: " + std::strerror(errno)};
+  std::string text;
+  char chunk[1 << 16];
+  while (file.read(chunk, sizeof chunk) || file.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(file.gcount()));
+    if (text.size() > static_cast<std::size_t>(kMaxSceneFileBytes)) {
+      return SceneError{path + ": scene file is larger than the limit of " +
+                        std::to_string(kMaxSceneFileBytes / (1024 * 1024)) + " MB"};
+    }
+  }
   if (file.bad()) return SceneError{path + ": error reading scene file"};
-  return parse_scene(text.str(), path);
+  return parse_scene(text, path);
 }
 
 }  // namespace tumble::scene

@@ -6,12 +6,10 @@
 #include <string_view>
 #include <variant>
 
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::scene {
-
-// Most steps a scene may ask for (duration / dt): a typo must not start a run of days.
-inline constexpr std::int64_t kMaxSteps = 100'000'000;
 
 // A scene that could not be loaded. `message` is complete and ready to print, in the form
 // "path:line:column: key: what is wrong".

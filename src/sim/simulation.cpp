@@ -1,6 +1,7 @@
 #include "sim/simulation.hpp"
 
 #include <cassert>
+#include <cstdio>
 #include <utility>
 
 #include "physics/interpolation.hpp"
@@ -19,17 +20,44 @@ Simulation::Simulation(std::vector<physics::BodyModel> models,
   assert(dt_ > 0.0);
 }
 
+std::string blow_up_problem(const physics::BodyState& state) {
+  const auto check = [](const auto& value, double bound, const char* name,
+                        const char* unit) -> std::string {
+    if (!value.allFinite()) return std::string("its ") + name + " is not finite";
+    const double size = value.norm();
+    if (size <= bound) return {};
+    char text[160];
+    std::snprintf(text, sizeof text, "its %s reached %.3g %s, past the bound of %.0e %s", name,
+                  size, unit, bound, unit);
+    return text;
+  };
+  if (!state.orientation().coeffs().allFinite()) return "its orientation is not finite";
+  std::string problem = check(state.position(), kMaxPosition, "distance from the origin", "m");
+  if (problem.empty()) problem = check(state.velocity(), kMaxSpeed, "speed", "m/s");
+  if (problem.empty()) {
+    problem = check(state.angular_velocity(), kMaxAngularSpeed, "angular speed", "rad/s");
+  }
+  return problem;
+}
+
 void Simulation::step() {
+  if (blow_up_) return;
   const double t = time();
   previous_.swap(current_);
   for (std::size_t i = 0; i < models_.size(); ++i) {
     current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
   }
   ++step_count_;
+  for (std::size_t i = 0; i < models_.size(); ++i) {
+    if (std::string problem = blow_up_problem(current_[i]); !problem.empty()) {
+      blow_up_ = BlowUp{.body = i, .time = time(), .step = step_count_, .what = std::move(problem)};
+      return;
+    }
+  }
 }
 
 std::vector<physics::BodyState> Simulation::states_at(double t) {
-  while (time() < t) step();
+  while (time() < t && !blow_up_) step();
   if (step_count_ == 0) return current_;
   const double previous_time = time_of_step(step_count_ - 1);
   assert(t >= previous_time);

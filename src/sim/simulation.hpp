@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "physics/integrators.hpp"
@@ -10,19 +12,40 @@
 
 namespace tumble::sim {
 
+// Past these a body's motion is taken to have blown up (a step far beyond the integrator's
+// stability limit, or forces that are not what the scene meant): no scene tumble can draw moves
+// a billion metres, at a third of the speed of light, or turns ten million radians a second.
+inline constexpr double kMaxPosition = 1e9;      // m from the origin
+inline constexpr double kMaxSpeed = 1e8;         // m/s
+inline constexpr double kMaxAngularSpeed = 1e7;  // rad/s
+
+// The first body whose state became non-finite or passed a bound, and when.
+struct BlowUp {
+  std::size_t body = 0;
+  double time = 0.0;       // s: the step at which it was found
+  std::int64_t step = 0;   // that step's number
+  std::string what;        // e.g. "its velocity is not finite"
+};
+
+// "" when the state is finite and within the bounds above, else what is wrong with it.
+std::string blow_up_problem(const physics::BodyState& state);
+
 class Simulation {
  public:
   // One model and one initial state per body; bodies do not interact.
   Simulation(std::vector<physics::BodyModel> models, std::vector<physics::BodyState> initial,
              physics::Integrator integrator, double dt /* s */);
 
-  // Advances every body by one step of dt.
+  // Advances every body by one step of dt. Once a body has blown up, nothing moves any more.
   void step();
 
   // Steps until the current step time is at or past t (s), then returns every body's state at t,
   // interpolated between the previous and the current step. t must not go backwards past the
-  // previous step.
+  // previous step. Check blow_up() after each call: the states are meaningless once it is set.
   std::vector<physics::BodyState> states_at(double t);
+
+  // Set by the step at which the first body blew up (see kMaxPosition).
+  const std::optional<BlowUp>& blow_up() const { return blow_up_; }
 
   double dt() const { return dt_; }
   std::int64_t step_count() const { return step_count_; }
@@ -41,6 +64,7 @@ class Simulation {
   physics::Integrator integrator_;
   double dt_;
   std::int64_t step_count_ = 0;
+  std::optional<BlowUp> blow_up_;
 };
 
 }  // namespace tumble::sim

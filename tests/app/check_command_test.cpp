@@ -66,13 +66,16 @@ TEST_F(CheckCommand, AnInvalidSceneExitsTwoWithItsLocation) {
   EXPECT_EQ(tumble("check " + path("absent.toml")).exit_code, 2);
 }
 
-TEST_F(CheckCommand, SimulatePrintsTheSameWarningsOnStandardError) {
+TEST_F(CheckCommand, SimulatePrintsTheSameWarningsThenStopsWhereTheBodyBlowsUp) {
   const fs::path scene = write("stiff.toml", kStiffScene);
   const Outcome run = tumble("simulate " + scene.string() + " --every 1000");
-  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_EQ(run.err.rfind("tumble: warning: body \"cube\": linear damping makes the momentum", 0),
             0u)
       << run.err;
+  // The warning was right: k dt = 2.5 makes euler's velocity grow by 1.5 a step.
+  EXPECT_NE(run.err.find("tumble: body \"cube\" blew up at t = "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("Likely cause: linear damping"), std::string::npos) << run.err;
   EXPECT_EQ(run.out.rfind("t,body,x,y,z,", 0), 0u);  // the CSV is untouched on standard output
 }
 

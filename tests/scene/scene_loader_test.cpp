@@ -350,7 +350,7 @@ size = 1.0
 mass = 1.0
 [render]
 width = 8192
-height = 8192
+height = 4320
 fps = 240
 msaa = 16
 [light]
@@ -359,7 +359,7 @@ ambient = 1
 crf = 51
 )");
   EXPECT_EQ(high.render.width, 8192);
-  EXPECT_EQ(high.render.height, 8192);
+  EXPECT_EQ(high.render.height, 4320);  // exactly kMaxPixels
   EXPECT_EQ(high.fps, 240);
   EXPECT_EQ(high.render.msaa, 16);
   EXPECT_EQ(high.render.light.ambient, 1.0);

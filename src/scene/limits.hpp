@@ -1,0 +1,31 @@
+// The largest scene tumble will attempt. Beyond these a value is almost surely a typo, and an
+// attempt would run for days or fill the disk, so the loader refuses it with a message instead.
+// The README's "Errors and limits" lists them; change both together.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace tumble::scene {
+
+inline constexpr std::int64_t kMinImageSide = 16;
+inline constexpr std::int64_t kMaxImageSide = 8192;
+// width × height: 8192 × 4320, the largest frame of H.264's highest level (6.2: 139 264
+// macroblocks of 16 × 16), about 142 MB per RGBA frame.
+inline constexpr std::int64_t kMaxPixels = 8192 * 4320;
+// duration × fps: 1 000 000 frames is 4.6 hours at 60 fps.
+inline constexpr std::int64_t kMaxFrames = 1'000'000;
+// duration / dt: a typo must not start a run of days.
+inline constexpr std::int64_t kMaxSteps = 100'000'000;
+inline constexpr std::int64_t kMaxBodies = 1000;
+inline constexpr std::int64_t kMaxForcesPerBody = 100;
+// Scene files are read whole.
+inline constexpr std::int64_t kMaxSceneFileBytes = 16 * 1024 * 1024;
+
+// "" when a width × height frame is within kMaxPixels, else what is wrong, as a clause.
+std::string pixel_limit_problem(std::int64_t width, std::int64_t height);
+
+// "" when `duration` seconds at `fps` give at most kMaxFrames frames, else what is wrong.
+std::string frame_limit_problem(double duration, std::int64_t fps);
+
+}  // namespace tumble::scene
