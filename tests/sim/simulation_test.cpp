@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "physics/interpolation.hpp"
 #include "support/closed_forms.hpp"
 
@@ -86,4 +88,44 @@ TEST(Simulation, BodiesAdvanceIndependently) {
 }
 
 }  // namespace
+// Explicit Euler on damping k: v_{n+1} = (1 - k dt) v_n. With k dt = 5, |v| = 4^n v_0.
+TEST(Simulation, AStepBeyondTheStabilityLimitIsCaughtAtTheStepThatPassesTheBound) {
+  BodyModel model{.constants = physics::cube_constants(1.0, 1.0),
+                  .forces = {physics::LinearDamping{.coefficient = 100.0}}};
+  const BodyState start = physics::make_state(model.constants, Vec3::Zero(), Vec3(1.0, 0.0, 0.0),
+                                              Quat::Identity(), Vec3::Zero());
+  const BodyModel calm{.constants = physics::cube_constants(1.0, 1.0), .forces = {}};
+  Simulation simulation({calm, model}, {start, start}, physics::Integrator::euler, 0.05);
+  simulation.states_at(10.0);
+  ASSERT_TRUE(simulation.blow_up().has_value());
+  const BlowUp& blow_up = *simulation.blow_up();
+  EXPECT_EQ(blow_up.body, 1u);
+  // 4^13 = 6.7e7 <= 1e8 < 4^14 = 2.7e8.
+  EXPECT_EQ(blow_up.step, 14);
+  EXPECT_DOUBLE_EQ(blow_up.time, 14 * 0.05);
+  EXPECT_EQ(blow_up.what.rfind("its speed reached 2.68e+08 m/s", 0), 0u) << blow_up.what;
+  // Nothing moves after it: the states stay where the blow-up was found.
+  EXPECT_EQ(simulation.step_count(), 14);
+  simulation.step();
+  EXPECT_EQ(simulation.step_count(), 14);
+}
+
+TEST(Simulation, BlowUpProblemsNameNonFiniteAndOutOfBoundValues) {
+  const physics::BodyConstants cube = physics::cube_constants(1.0, 1.0);
+  const auto state = [&](Vec3 x, Vec3 v, Vec3 w) {
+    return physics::make_state(cube, x, v, Quat::Identity(), w);
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(blow_up_problem(state(Vec3::Zero(), Vec3::Zero(), Vec3::Zero())), "");
+  EXPECT_EQ(blow_up_problem(state(Vec3(kMaxPosition, 0, 0), Vec3(0, kMaxSpeed, 0),
+                                  Vec3(0, 0, kMaxAngularSpeed))),
+            "");  // the bounds themselves are allowed
+  EXPECT_EQ(blow_up_problem(state(Vec3(nan, 0, 0), Vec3::Zero(), Vec3::Zero())),
+            "its distance from the origin is not finite");
+  EXPECT_EQ(blow_up_problem(state(Vec3::Zero(), Vec3::Zero(), Vec3(0, 2e7, 0))),
+            "its angular speed reached 2e+07 rad/s, past the bound of 1e+07 rad/s");
+  EXPECT_EQ(blow_up_problem(state(Vec3(0, 0, -3e9), Vec3::Zero(), Vec3::Zero())),
+            "its distance from the origin reached 3e+09 m, past the bound of 1e+09 m");
+}
+
 }  // namespace tumble::sim

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -23,7 +24,7 @@ inline std::string read_file(const fs::path& path) {
 }
 
 struct Outcome {
-  int exit_code;    // -1 if the process died by a signal
+  int exit_code;    // -1 if the process died by a signal (never expected of tumble)
   std::string out;  // standard output
   std::string err;  // standard error
 };
@@ -46,11 +47,28 @@ class CommandTest : public ::testing::Test {
     return dir_ / name;
   }
 
-  // Runs `tumble ARGUMENTS` with standard output and error captured.
-  Outcome tumble(const std::string& arguments) const {
-    const std::string command = std::string(TUMBLE_EXECUTABLE) + " " + arguments + " >" +
-                                path("stdout") + " 2>" + path("stderr");
-    const int status = std::system(command.c_str());
+  // Runs `tumble ARGUMENTS` with standard output and error captured. `prefix` is the shell text
+  // before the executable's path, such as "ulimit -f 100; exec ".
+  Outcome tumble(const std::string& arguments, const std::string& prefix = "exec ") const {
+    return wait(start(arguments, prefix));
+  }
+
+  // Starts `tumble ARGUMENTS` (as tumble() does) without waiting for it.
+  pid_t start(const std::string& arguments, const std::string& prefix = "exec ") const {
+    const std::string command = prefix + std::string(TUMBLE_EXECUTABLE) + " " +
+                                arguments + " >" + path("stdout") + " 2>" + path("stderr");
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    return pid;
+  }
+
+  // Waits for a command from start() and collects what it printed.
+  Outcome wait(pid_t pid) const {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
     Outcome outcome{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(dir_ / "stdout"),
                     read_file(dir_ / "stderr")};
     fs::remove(dir_ / "stdout");
