@@ -197,10 +197,14 @@ std::string read_png(const std::string& path, Image& out) {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);
   if (!file) return path + ": cannot open: " + std::strerror(errno);
+  return read_png(file.get(), path, out);
+}
+
+std::string read_png(std::FILE* file, const std::string& path, Image& out) {
   png_byte signature[kSignatureBytes];
-  if (std::fread(signature, 1, kSignatureBytes, file.get()) != kSignatureBytes ||
+  if (std::fread(signature, 1, kSignatureBytes, file) != kSignatureBytes ||
       png_sig_cmp(signature, 0, kSignatureBytes) != 0) {
-    if (std::ferror(file.get())) return path + ": cannot read: " + std::strerror(errno);
+    if (std::ferror(file)) return path + ": cannot read: " + std::strerror(errno);
     return path + ": not a PNG file (it does not start with the PNG signature)";
   }
 
@@ -210,7 +214,7 @@ std::string read_png(const std::string& path, Image& out) {
   const std::string cannot_decode = path + ": cannot decode PNG: ";
   png_uint_32 width = 0;
   png_uint_32 height = 0;
-  if (!read_header_guarded(structs.png(), structs.info(), file.get(), &width, &height)) {
+  if (!read_header_guarded(structs.png(), structs.info(), file, &width, &height)) {
     return cannot_decode + failure.message;
   }
   if (std::uint64_t{width} * height > kMaxReadPixels) {

@@ -2,6 +2,7 @@
 // what failed; an empty string means success.
 #pragma once
 
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -36,5 +37,8 @@ std::string write_png(const std::string& path, const Image& image,
 // transparent pixel reads as black whatever colour it stores. Images over 100 megapixels are
 // refused. `out` is only assigned on success.
 std::string read_png(const std::string& path, Image& out);
+
+// The same from an open stream positioned at the PNG's first byte; `path` names it in messages.
+std::string read_png(std::FILE* file, const std::string& path, Image& out);
 
 }  // namespace tumble::io

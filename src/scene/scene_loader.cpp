@@ -3,13 +3,14 @@
 #include "scene/render_tables.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/table_reader.hpp"
+#include "sim/simulation.hpp"
 
 #include <toml++/toml.h>
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
 #include <array>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -105,6 +106,16 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   body.velocity = in.optional_vector("velocity", Vec3::Zero());
   body.orientation = in.optional_quaternion("orientation");
   body.angular_velocity = in.optional_vector("angular_velocity", Vec3::Zero());
+  // A start already past the bounds of a blow-up (sim/simulation.hpp) would stop at step 1.
+  const auto within = [&](std::string_view key, const Vec3& value, double bound, const char* unit) {
+    if (value.norm() > bound) {
+      in.fail(key, "its length " + format_number(value.norm()) + " " + unit + " is past the " +
+                       format_number(bound) + " " + unit + " tumble can simulate");
+    }
+  };
+  within("position", body.position, sim::kMaxPosition, "m");
+  within("velocity", body.velocity, sim::kMaxSpeed, "m/s");
+  within("angular_velocity", body.angular_velocity, sim::kMaxAngularSpeed, "rad/s");
   body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
   if (in.has("forces")) {
     const toml::array* forces = in.table().get("forces")->as_array();

@@ -413,5 +413,35 @@ TEST_F(PngIo, InterlacedImagesReadLikeTheirPixels) {
   EXPECT_EQ(read_ok(path).rgb, original.rgb);
 }
 
+// The fuzzer's PNG seeds (tests/fuzz/corpus/png/) are valid files of the kinds tumble never
+// writes (1-bit grey, 2-bit palette with transparency, 16-bit RGBA, interlaced grey + alpha): each
+// must decode, from a file and from a memory stream, to the size its header gives.
+TEST(PngFuzzSeeds, EachDecodesToTheSizeInItsHeader) {
+  const fs::path seeds = fs::path(TUMBLE_SOURCE_DIR) / "tests/fuzz/corpus/png";
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(seeds)) {
+    const std::string bytes = read_bytes(entry.path());
+    ASSERT_GE(bytes.size(), 24u);
+    const auto be32 = [&](std::size_t at) {
+      return static_cast<int>(static_cast<std::uint8_t>(bytes[at]) << 24 |
+                              static_cast<std::uint8_t>(bytes[at + 1]) << 16 |
+                              static_cast<std::uint8_t>(bytes[at + 2]) << 8 |
+                              static_cast<std::uint8_t>(bytes[at + 3]));
+    };
+    Image from_file;
+    ASSERT_EQ(read_png(entry.path().string(), from_file), "") << entry.path();
+    EXPECT_EQ(from_file.width, be32(16)) << entry.path();
+    EXPECT_EQ(from_file.height, be32(20)) << entry.path();
+    std::FILE* memory = fmemopen(const_cast<char*>(bytes.data()), bytes.size(), "rb");
+    ASSERT_NE(memory, nullptr);
+    Image from_memory;
+    EXPECT_EQ(read_png(memory, "seed", from_memory), "");
+    std::fclose(memory);
+    EXPECT_EQ(from_memory.rgb, from_file.rgb) << entry.path();
+    ++count;
+  }
+  EXPECT_EQ(count, 5);
+}
+
 }  // namespace
 }  // namespace tumble::io
