@@ -2,13 +2,14 @@
 //   build/physics_bench [--benchmark_filter=Cube]
 // Each integrator on a cube (scalar inertia: no matrix work) and on a box (R I⁻¹ Rᵀ per
 // evaluation), and a cube with no force laws against one with four: a body pays only for the
-// laws its scene lists.
+// laws its scene lists. BlowUpCheck is the per-body check Simulation adds to every step.
 #include <benchmark/benchmark.h>
 
 #include <iterator>
 #include <string>
 
 #include "physics/integrators.hpp"
+#include "sim/simulation.hpp"
 
 namespace {
 
@@ -59,9 +60,17 @@ void StepCubeWithForceLaws(benchmark::State& state) {
   step_repeatedly(state, integrator_at(state.range(0)), model, spinning(model.constants));
 }
 
+// The check every Simulation::step makes of each body for a blow-up (non-finite values, bounds):
+// compare with StepCube to see what it adds to a step.
+void BlowUpCheck(benchmark::State& state) {
+  const BodyState body = spinning(cube_constants(1.0, 1.0));
+  for (auto _ : state) benchmark::DoNotOptimize(tumble::sim::blow_up_problem(body));
+}
+
 constexpr std::int64_t kLastIntegrator = std::size(kAllIntegrators) - 1;
 
 BENCHMARK(StepCube)->DenseRange(0, kLastIntegrator)->ArgName("integrator");
+BENCHMARK(BlowUpCheck);
 BENCHMARK(StepBox)->DenseRange(0, kLastIntegrator)->ArgName("integrator");
 BENCHMARK(StepCubeWithForceLaws)
     ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 4}})

@@ -100,8 +100,6 @@ std::string write_text_file(const std::string& path, const std::string& text) {
   return file.commit() ? std::string() : file.error();
 }
 
-}  // namespace
-
 // Why the folder at `directory` must not be replaced by a render ("" when it may): tumble
 // replaces its output folder as a whole, so it only ever replaces one of its own.
 std::string replace_problem(const fs::path& directory) {
@@ -114,6 +112,8 @@ std::string replace_problem(const fs::path& directory) {
          " exists and is not a tumble render (it has no report.json); a render replaces its "
          "folder as a whole, so choose another -o or [output] directory, or remove it";
 }
+
+}  // namespace
 
 int run_render(const RenderOptions& options, std::FILE* err) {
   const auto start = Clock::now();
@@ -173,14 +173,16 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   }
   io::StagedDirectory staged(directory.string());
   const fs::path staging = staged.path();
-  std::error_code error_code;
-  if (staged.ok() && write_frames) fs::create_directory(staging / "frames", error_code);
-  if (!staged.ok() || error_code) {
-    std::fprintf(err, "tumble: %s\n",
-                 staged.ok() ? ("cannot create " + (staging / "frames").string() + ": " +
-                                error_code.message())
-                                   .c_str()
-                             : staged.error().c_str());
+  std::string setup_error = staged.error();
+  if (setup_error.empty() && write_frames) {
+    std::error_code error_code;
+    fs::create_directory(staging / "frames", error_code);
+    if (error_code) {
+      setup_error = "cannot create " + (staging / "frames").string() + ": " + error_code.message();
+    }
+  }
+  if (!setup_error.empty()) {
+    std::fprintf(err, "tumble: %s\n", setup_error.c_str());
     return kExitBadInput;
   }
   const std::string video_name = scene.name + ".mp4";
@@ -201,8 +203,8 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     std::fprintf(err, "tumble: renderer %s\n", result.renderer.c_str());
   }
   const auto stopped = [&](const std::string& why) {
-    std::fprintf(err, "tumble: %s after %lld of %lld frames; %s was left as it was\n",
-                 why.c_str(), static_cast<long long>(result.pipeline.frames_done),
+    std::fprintf(err, "tumble: %s after %lld of %lld frames; %s was left as it was\n", why.c_str(),
+                 static_cast<long long>(result.pipeline.frames_done),
                  static_cast<long long>(end - first), directory.c_str());
   };
   if (const int signal = interrupt_signal()) {
@@ -229,11 +231,11 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     return kExitBadInput;
   }
   if (!options.quiet) {
-    std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",
-                 static_cast<long long>(end - first), total_seconds,
-                 static_cast<double>(end - first) / total_seconds,
-                 write_video ? final_paths.video_path.c_str()
-                             : final_paths.frames_directory.c_str());
+    std::fprintf(
+        err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",
+        static_cast<long long>(end - first), total_seconds,
+        static_cast<double>(end - first) / total_seconds,
+        write_video ? final_paths.video_path.c_str() : final_paths.frames_directory.c_str());
   }
   return kExitOk;
 }
