@@ -95,7 +95,8 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSourc
     io::Image image;
     for (std::int64_t k = first; k < end; ++k) {
       std::string error = draw_frame(source, k, image, report);
-      if (error.empty() && sinks.png) error = timed(report.png, [&] { return sinks.png(k, image); });
+      if (error.empty() && sinks.png)
+        error = timed(report.png, [&] { return sinks.png(k, image); });
       if (error.empty() && sinks.video) {
         error = timed(report.video, [&] { return sinks.video(image); });
       }

@@ -10,11 +10,15 @@ namespace {
 std::atomic<int> received{0};
 static_assert(std::atomic<int>::is_always_lock_free, "read from a signal handler");
 
-extern "C" void on_interrupt(int signal) { received.store(signal); }
+extern "C" void on_interrupt(int signal) {
+  received.store(signal);
+}
 
 }  // namespace
 
-void ignore_file_size_signal() { std::signal(SIGXFSZ, SIG_IGN); }
+void ignore_file_size_signal() {
+  std::signal(SIGXFSZ, SIG_IGN);
+}
 
 void install_interrupt_handlers() {
   struct sigaction action;
@@ -26,13 +30,18 @@ void install_interrupt_handlers() {
   sigaction(SIGTERM, &action, nullptr);
 }
 
-int interrupt_signal() { return received.load(); }
+int interrupt_signal() {
+  return received.load();
+}
 
 const char* signal_name(int signal) {
   switch (signal) {
-    case SIGINT: return "SIGINT";
-    case SIGTERM: return "SIGTERM";
-    default: return "a signal";
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    default:
+      return "a signal";
   }
 }
 

@@ -14,7 +14,7 @@ void install_interrupt_handlers();
 // The signal that asked to stop (SIGINT or SIGTERM), or 0.
 int interrupt_signal();
 
-// "SIGINT", "SIGTERM" or "signal N".
+// "SIGINT", "SIGTERM", or "a signal" for any other.
 const char* signal_name(int signal);
 
 }  // namespace tumble::app

@@ -83,16 +83,15 @@ RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
   }
   result.setup_seconds = seconds_since(setup_start);
 
-  const FrameSource source{.view =
-                               [&](std::int64_t k) {
-                                 const double t = static_cast<double>(k) / scene.fps;
-                                 return frame_view(
-                                     scene, framing,
-                                     checked_states_at(simulation, scene, t, plan.stop_requested),
-                                     t);
-                               },
-                           .draw = [&](const render::FrameView& view,
-                                       io::Image& image) { renderer->draw(view, image); }};
+  const FrameSource source{
+      .view =
+          [&](std::int64_t k) {
+            const double t = static_cast<double>(k) / scene.fps;
+            return frame_view(scene, framing,
+                              checked_states_at(simulation, scene, t, plan.stop_requested), t);
+          },
+      .draw = [&](const render::FrameView& view,
+                  io::Image& image) { renderer->draw(view, image); }};
   FrameSinks sinks;
   if (!plan.frames_directory.empty()) {
     sinks.png = [&](std::int64_t k, const io::Image& image) {

@@ -6,7 +6,8 @@
 namespace tumble::app {
 namespace {
 
-std::vector<sim::StepWarning> body_warnings(const scene::Scene& scene, const scene::BodySpec& body) {
+std::vector<sim::StepWarning> body_warnings(const scene::Scene& scene,
+                                            const scene::BodySpec& body) {
   const physics::BodyModel model{.constants = scene::body_constants(body), .forces = body.forces};
   return sim::check_step(model, scene::initial_state(body), scene.physics.integrator,
                          scene.physics.dt, scene.duration);

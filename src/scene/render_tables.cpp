@@ -16,7 +16,8 @@ constexpr std::array<std::string_view, 10> kPresets = {
 void read_render(TableReader& in, Scene& scene) {
   render::RenderSettings& r = scene.render;
   r.width = static_cast<int>(in.optional_integer("width", r.width, kMinImageSide, kMaxImageSide));
-  r.height = static_cast<int>(in.optional_integer("height", r.height, kMinImageSide, kMaxImageSide));
+  r.height =
+      static_cast<int>(in.optional_integer("height", r.height, kMinImageSide, kMaxImageSide));
   if (const std::string problem = pixel_limit_problem(r.width, r.height); !problem.empty()) {
     in.fail(in.has("height") ? "height" : "width", problem);
   }
@@ -82,10 +83,10 @@ void read_output(TableReader& in, Scene& scene) {
   // The scene chooses a folder below the output root, never a place elsewhere.
   const std::filesystem::path directory(o.directory);
   // Nor the output folder itself: the scene's folder is replaced as a whole by each render.
-  const bool escapes =
-      directory.is_absolute() ||
-      std::any_of(directory.begin(), directory.end(),
-                  [](const auto& part) { return part == ".." || part == "." || part.empty(); });
+  const bool escapes = directory.is_absolute() ||
+                       std::any_of(directory.begin(), directory.end(), [](const auto& part) {
+                         return part == ".." || part == "." || part.empty();
+                       });
   if (o.directory.empty() || escapes) {
     in.fail("directory",
             "must be a relative folder inside the output folder (no \"..\" or \".\", not "
@@ -121,7 +122,8 @@ void read_render_tables(TableReader& root, Scene& scene) {
   if (const std::string problem = frame_limit_problem(scene.duration, scene.fps);
       !problem.empty()) {
     const toml::table* render = root.table().get_as<toml::table>("render");
-    if (render && render->contains("fps")) TableReader(*render, "render", root.file()).fail("fps", problem);
+    if (render && render->contains("fps"))
+      TableReader(*render, "render", root.file()).fail("fps", problem);
     root.fail("duration", problem);
   }
 }

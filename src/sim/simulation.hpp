@@ -22,9 +22,9 @@ inline constexpr double kMaxAngularSpeed = 1e7;  // rad/s
 // The first body whose state became non-finite or passed a bound, and when.
 struct BlowUp {
   std::size_t body = 0;
-  double time = 0.0;       // s: the step at which it was found
-  std::int64_t step = 0;   // that step's number
-  std::string what;        // e.g. "its velocity is not finite"
+  double time = 0.0;      // s: the step at which it was found
+  std::int64_t step = 0;  // that step's number
+  std::string what;       // e.g. "its velocity is not finite"
 };
 
 // "" when the state is finite and within the bounds above, else what is wrong with it.

@@ -111,8 +111,8 @@ shape = "cube"
 size = 1.0
 mass = 1.0
 )");
-  const pid_t simulate = start("simulate " + scene.string() + " --every 1000000 --out " +
-                               path("states.csv"));
+  const pid_t simulate =
+      start("simulate " + scene.string() + " --every 1000000 --out " + path("states.csv"));
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_EQ(::kill(simulate, SIGINT), 0);
   const Outcome run = wait(simulate);
@@ -135,17 +135,17 @@ TEST_F(Faults, AnUnwritableOutputFolderIsAClearErrorBeforeAnyWork) {
       tumble("render " + scene + " -o " + path("locked/out"), "exec " + without_root_override());
   fs::permissions(dir_ / "locked", fs::perms::owner_all);
   EXPECT_EQ(render.exit_code, 2) << render.err;
-  EXPECT_NE(render.err.find("cannot create output folder " + path("locked/out") +
-                            ": Permission denied"),
-            std::string::npos)
+  EXPECT_NE(
+      render.err.find("cannot create output folder " + path("locked/out") + ": Permission denied"),
+      std::string::npos)
       << render.err;
   EXPECT_EQ(files_below(dir_ / "locked"), 0);
 }
 
 TEST_F(Faults, AnOutputFolderThatIsAFileIsAClearError) {
   write("taken", "a file, not a folder");
-  const Outcome run = tumble("render " + write("short.toml", spin_scene(0.5)).string() + " -o " +
-                             path("taken"));
+  const Outcome run =
+      tumble("render " + write("short.toml", spin_scene(0.5)).string() + " -o " + path("taken"));
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("cannot create output folder " + path("taken")), std::string::npos)
       << run.err;
@@ -200,8 +200,8 @@ TEST_F(Faults, AFolderThatIsNotATumbleRenderIsNeverReplaced) {
   write("notes.txt", "");
   fs::create_directories(dir_ / "out/spin");
   std::ofstream(dir_ / "out/spin/notes.txt") << "mine";
-  const Outcome run = tumble("render " + write("short.toml", spin_scene(0.5)).string() + " -o " +
-                             path("out"));
+  const Outcome run =
+      tumble("render " + write("short.toml", spin_scene(0.5)).string() + " -o " + path("out"));
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("exists and is not a tumble render"), std::string::npos) << run.err;
   EXPECT_EQ(read_file(dir_ / "out/spin/notes.txt"), "mine");
@@ -227,7 +227,7 @@ width = 160
 height = 120
 )");
   for (const std::string& command : {"render " + scene.string() + " -o " + path("out") + " -q",
-                                    "simulate " + scene.string() + " --out " + path("s.csv")}) {
+                                     "simulate " + scene.string() + " --out " + path("s.csv")}) {
     const Outcome run = tumble(command);
     EXPECT_EQ(run.exit_code, 2) << command << ": " << run.err;
     // |v| = 4^n passes 1e8 m/s at step 14 (4^14 = 2.7e8): t = 0.7 s.
@@ -246,8 +246,8 @@ height = 120
 
 TEST_F(Faults, CommandLineSizesAreHeldToTheSameLimits) {
   const std::string scene = write("short.toml", spin_scene(0.5)).string();
-  const Outcome big = tumble("render " + scene + " -o " + path("out") +
-                             " --width 8192 --height 8192");
+  const Outcome big =
+      tumble("render " + scene + " -o " + path("out") + " --width 8192 --height 8192");
   EXPECT_EQ(big.exit_code, 2) << big.err;
   EXPECT_NE(big.err.find("8192 × 8192 is 67108864 pixels, more than the limit of 35389440"),
             std::string::npos)
@@ -260,7 +260,8 @@ TEST_F(Faults, CommandLineSizesAreHeldToTheSameLimits) {
 TEST_F(Faults, TooManyBodiesAreRefusedAtTheFirstOneTooMany) {
   std::string text = "duration = 1.0\nbodies = [\n";
   for (int i = 0; i < 1001; ++i) {
-    text += "  { name = \"b" + std::to_string(i) + "\", shape = \"cube\", size = 1.0, mass = 1.0 },\n";
+    text +=
+        "  { name = \"b" + std::to_string(i) + "\", shape = \"cube\", size = 1.0, mass = 1.0 },\n";
   }
   const fs::path scene = write("crowd.toml", text + "]\n");
   const Outcome run = tumble("check " + scene.string());
@@ -293,14 +294,13 @@ TEST_F(Faults, AnOversizedOrMissingSceneFileIsAClearError) {
 TEST_F(Faults, EveryCommandExitsWithTwoOnBadUsage) {
   const std::string scene = write("short.toml", spin_scene(0.5)).string();
   for (const std::string& arguments : std::vector<std::string>{
-           "", std::string("frobnicate"), std::string("render"),
-        "render " + scene + " --fps 0", "render " + scene + " --frames 9:3",
-        "render " + scene + " --png-compression huge", std::string("simulate"),
-        "simulate " + scene + " --every 0", std::string("diff a.png"),
-        "diff " + path("a.png") + " " + path("b.png"), std::string("diff x y --threshold 300"),
-        std::string("bench"), std::string("bench pipeline --width 1"),
-        std::string("bench accuracy --bogus"), std::string("check"),
-        std::string("check a.toml b.toml")}) {
+           "", std::string("frobnicate"), std::string("render"), "render " + scene + " --fps 0",
+           "render " + scene + " --frames 9:3", "render " + scene + " --png-compression huge",
+           std::string("simulate"), "simulate " + scene + " --every 0", std::string("diff a.png"),
+           "diff " + path("a.png") + " " + path("b.png"), std::string("diff x y --threshold 300"),
+           std::string("bench"), std::string("bench pipeline --width 1"),
+           std::string("bench accuracy --bogus"), std::string("check"),
+           std::string("check a.toml b.toml")}) {
     const Outcome run = tumble(arguments);
     EXPECT_EQ(run.exit_code, 2) << "tumble " << arguments << ": " << run.err;
     EXPECT_FALSE(run.err.empty()) << "tumble " << arguments << " said nothing";

@@ -155,6 +155,11 @@ struct ReferenceCase {
   int regime;  // sign of |L|² − 2E I_intermediate: +1 about the major axis, −1 minor
 };
 
+// Names the case in test listings (GoogleTest would print its bytes, pointers included).
+std::ostream& operator<<(std::ostream& out, const ReferenceCase& c) {
+  return out << c.name;
+}
+
 class AgainstReference : public ::testing::TestWithParam<ReferenceCase> {};
 
 // Both circulation regimes, each ordering of the moments, and the tennis-racket case close to

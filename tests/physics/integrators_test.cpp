@@ -76,6 +76,11 @@ struct ConvergenceCase {
   double expected_order;
 };
 
+// Names the case in test listings (GoogleTest would print its bytes).
+std::ostream& operator<<(std::ostream& out, const ConvergenceCase& c) {
+  return out << integrator_name(c.integrator);
+}
+
 void expect_order(const ConvergenceCase& c, const std::function<double(int)>& error_at) {
   const double e1 = error_at(c.coarsest_steps);
   const double e2 = error_at(2 * c.coarsest_steps);

@@ -39,6 +39,11 @@ struct TorqueFreeCase {
   double tolerance;       // rad, at dt = 1/60
 };
 
+// Names the case in test listings (GoogleTest would print its bytes, pointers included).
+std::ostream& operator<<(std::ostream& out, const TorqueFreeCase& c) {
+  return out << c.name;
+}
+
 class TorqueFree : public ::testing::TestWithParam<TorqueFreeCase> {};
 
 // The end orientation after duration × 60 steps against one evaluation of the exact flow over
@@ -233,8 +238,14 @@ struct OrderCase {
   double rk4_ratio_limit;
 };
 
-class UnderTorques
-    : public ::testing::TestWithParam<std::tuple<OrderCase, std::function<TorqueCase()>>> {};
+using UnderTorquesCase = std::tuple<OrderCase, std::function<TorqueCase()>>;
+
+// Names the case in test listings (GoogleTest would print the std::function's bytes).
+void PrintTo(const UnderTorquesCase& c, std::ostream* out) {
+  *out << integrator_name(std::get<0>(c).integrator) << " on " << std::get<1>(c)().name;
+}
+
+class UnderTorques : public ::testing::TestWithParam<UnderTorquesCase> {};
 
 // Order from three step sizes, each half the one before, within 0.3 of theory; and the error at
 // dt = 1/60 against RK4's there.

@@ -55,8 +55,8 @@ class CommandTest : public ::testing::Test {
 
   // Starts `tumble ARGUMENTS` (as tumble() does) without waiting for it.
   pid_t start(const std::string& arguments, const std::string& prefix = "exec ") const {
-    const std::string command = prefix + std::string(TUMBLE_EXECUTABLE) + " " +
-                                arguments + " >" + path("stdout") + " 2>" + path("stderr");
+    const std::string command = prefix + std::string(TUMBLE_EXECUTABLE) + " " + arguments + " >" +
+                                path("stdout") + " 2>" + path("stderr");
     const pid_t pid = ::fork();
     if (pid == 0) {
       ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
