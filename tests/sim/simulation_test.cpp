@@ -126,6 +126,15 @@ TEST(Simulation, BlowUpProblemsNameNonFiniteAndOutOfBoundValues) {
             "its angular speed reached 2e+07 rad/s, past the bound of 1e+07 rad/s");
   EXPECT_EQ(blow_up_problem(state(Vec3(0, 0, -3e9), Vec3::Zero(), Vec3::Zero())),
             "its distance from the origin reached 3e+09 m, past the bound of 1e+09 m");
+  // Squared, 1e200 overflows to infinity: the message still gives the finite size.
+  EXPECT_EQ(blow_up_problem(state(Vec3::Zero(), Vec3(1e200, 0, 0), Vec3::Zero())),
+            "its speed reached 1e+200 m/s, past the bound of 1e+08 m/s");
+  const double infinity = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(blow_up_problem(state(Vec3::Zero(), Vec3(0, -infinity, 0), Vec3::Zero())),
+            "its speed is not finite");
+  physics::PrimaryState primary = state(Vec3::Zero(), Vec3::Zero(), Vec3::Zero()).primary();
+  primary.orientation = Quat(nan, 0, 0, 0);
+  EXPECT_EQ(blow_up_problem(physics::BodyState(primary, cube)), "its orientation is not finite");
 }
 
 }  // namespace tumble::sim
