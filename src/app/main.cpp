@@ -3,6 +3,8 @@
 #include <charconv>
 #include <climits>
 #include <cstdio>
+#include <optional>
+#include <utility>
 
 #include "app/bench_command.hpp"
 #include "app/bench_pipeline.hpp"
@@ -30,6 +32,17 @@ CLI::Validator whole_number_in(long long min, long long max, const std::string& 
                    : "expected a whole number " + range + ", got " + value;
       },
       range);
+}
+
+// "A:B" as two whole numbers, each within long long; nothing else.
+std::optional<std::pair<long long, long long>> parse_range(const std::string& text) {
+  const char* const end = text.data() + text.size();
+  long long first = 0, last = 0;
+  const auto [colon, first_error] = std::from_chars(text.data(), end, first);
+  if (first_error != std::errc() || colon == end || *colon != ':') return std::nullopt;
+  const auto [after, last_error] = std::from_chars(colon + 1, end, last);
+  if (last_error != std::errc() || after != end) return std::nullopt;
+  return std::make_pair(first, last);
 }
 
 }  // namespace
@@ -144,25 +157,34 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
 
-  if (simulate_command->parsed()) return run_simulate(simulate, stderr);
-  if (bench_pipeline_command->parsed()) return run_bench_pipeline(bench_pipeline, stdout, stderr);
-  if (bench_accuracy_command->parsed()) return run_bench_accuracy(bench_accuracy, stdout, stderr);
-  if (check_command->parsed()) return run_check(check, stdout, stderr);
-  if (diff_command->parsed()) return run_diff(diff, stdout, stderr);
-  if (render_command->parsed()) {
-    if (!frame_range.empty()) {
-      long long first = 0, end = 0;
-      char extra = 0;
-      if (std::sscanf(frame_range.c_str(), "%lld:%lld%c", &first, &end, &extra) != 2) {
-        std::fprintf(stderr, "--frames: expected A:B (frames A to B-1), got %s\n",
-                     frame_range.c_str());
-        return kExitBadInput;
+  const auto run_parsed = [&]() -> int {
+    if (simulate_command->parsed()) return run_simulate(simulate, stderr);
+    if (bench_pipeline_command->parsed()) return run_bench_pipeline(bench_pipeline, stdout, stderr);
+    if (bench_accuracy_command->parsed()) return run_bench_accuracy(bench_accuracy, stdout, stderr);
+    if (check_command->parsed()) return run_check(check, stdout, stderr);
+    if (diff_command->parsed()) return run_diff(diff, stdout, stderr);
+    if (render_command->parsed()) {
+      if (!frame_range.empty()) {
+        const std::optional<std::pair<long long, long long>> range = parse_range(frame_range);
+        if (!range) {
+          std::fprintf(stderr, "tumble: --frames: expected A:B (frames A to B-1), got %s\n",
+                       frame_range.c_str());
+          return kExitBadInput;
+        }
+        render.first_frame = range->first;
+        render.end_frame = range->second;
       }
-      render.first_frame = first;
-      render.end_frame = end;
+      render.png = *tumble::io::png_settings_named(png_compression);  // checked by IsMember
+      return run_render(render, stderr);
     }
-    render.png = *tumble::io::png_settings_named(png_compression);  // checked by IsMember
-    return run_render(render, stderr);
+    return kExitBadInput;
+  };
+  try {
+    return run_parsed();
+  } catch (const std::bad_alloc&) {
+    std::fputs("tumble: out of memory\n", stderr);
+  } catch (const std::exception& error) {  // a last resort: each command reports its own errors
+    std::fprintf(stderr, "tumble: %s\n", error.what());
   }
   return kExitBadInput;
 }

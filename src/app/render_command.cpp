@@ -104,8 +104,13 @@ std::string write_text_file(const std::string& path, const std::string& text) {
 // replaces its output folder as a whole, so it only ever replaces one of its own.
 std::string replace_problem(const fs::path& directory) {
   std::error_code error;
-  const fs::file_status status = fs::status(directory, error);
+  const fs::file_status status = fs::symlink_status(directory, error);
   if (!fs::exists(status)) return {};
+  if (fs::is_symlink(status)) {
+    return directory.string() +
+           " is a symbolic link; a render replaces its folder as a whole, so it will not replace "
+           "a link: choose another -o or [output] directory, or remove the link";
+  }
   if (!fs::is_directory(status)) return directory.string() + " exists and is not a folder";
   if (fs::exists(directory / "report.json", error) || fs::is_empty(directory, error)) return {};
   return "output folder " + directory.string() +
@@ -117,6 +122,7 @@ std::string replace_problem(const fs::path& directory) {
 
 int run_render(const RenderOptions& options, std::FILE* err) {
   const auto start = Clock::now();
+  install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
   if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
@@ -128,7 +134,7 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   if (options.fps) scene.fps = *options.fps;
   for (const std::string& problem :
        {scene::pixel_limit_problem(scene.render.width, scene.render.height),
-        scene::frame_limit_problem(scene.duration, scene.fps)}) {
+        scene::frame_count_problem(scene.duration, scene.fps)}) {
     if (!problem.empty()) {
       std::fprintf(err, "tumble: %s\n", problem.c_str());
       return kExitBadInput;
@@ -193,7 +199,6 @@ int run_render(const RenderOptions& options, std::FILE* err) {
                   .png = options.png,
                   .serial = options.serial,
                   .shader_directory = shader_directory};
-  install_interrupt_handlers();
   plan.stop_requested = [] { return interrupt_signal() != 0; };
   Progress progress(end - first, options.quiet, err);
   plan.on_frame_done = [&](std::int64_t done) { progress.update(done); };
@@ -230,6 +235,7 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     stopped("render failed");
     return kExitBadInput;
   }
+  if (!staged.leftover().empty()) std::fprintf(err, "tumble: warning: %s\n", staged.leftover().c_str());
   if (!options.quiet) {
     std::fprintf(
         err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",

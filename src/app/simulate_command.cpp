@@ -40,6 +40,11 @@ bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation
 }  // namespace
 
 int run_simulate(const SimulateOptions& options, std::FILE* err) {
+  install_interrupt_handlers();  // from the start: a signal is acted on at the first step
+  if (options.out.empty()) {
+    std::fprintf(err, "tumble: --out: expected a file name, or - for standard output\n");
+    return kExitBadInput;
+  }
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
   if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
@@ -61,7 +66,6 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
 
   sim::Simulation simulation = scene::build_simulation(scene);
   const std::int64_t steps = scene::step_count(scene);
-  install_interrupt_handlers();
   bool ok = io::write_state_header(out) && write_rows(out, scene, simulation);
   for (std::int64_t n = 1; n <= steps && ok; ++n) {
     simulation.step();

@@ -13,38 +13,62 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Removes a folder tree; errors are ignored (it is a temporary folder of ours, or the old output
-// already swapped out of the way).
-void remove_tree(const std::string& path) {
-  std::error_code ignored;
-  fs::remove_all(path, ignored);
+// Removes a folder tree: "" or why it could not.
+std::string remove_tree(const std::string& path) {
+  std::error_code error;
+  fs::remove_all(path, error);
+  return error ? error.message() : std::string();
 }
 
 }  // namespace
 
 StagedDirectory::StagedDirectory(std::string final_path) : final_path_(std::move(final_path)) {
   const fs::path target = fs::path(final_path_).lexically_normal();
+  const std::string name = target.filename().string();
+  if (final_path_.find('\0') != std::string::npos || name.empty() || name == "." || name == "..") {
+    error_ = "cannot write output to \"" + target.string() + "\": not a folder name";
+    return;
+  }
   const fs::path parent = target.parent_path();
-  std::string name = ".";  // built by appending: GCC 12 warns wrongly on "." + string + ...
-  name += target.filename().string();
-  name += ".partial-";
-  name += std::to_string(::getpid());
-  temporary_path_ = (parent / name).string();
+  // The parents that do not exist yet, so that a failed render can take them away again.
   std::error_code error;
+  for (fs::path folder = parent; !folder.empty() && !fs::exists(fs::symlink_status(folder, error));
+       folder = folder.parent_path()) {
+    created_parents_.insert(created_parents_.begin(), folder.string());
+    if (folder == folder.root_path()) break;
+  }
   if (!parent.empty()) fs::create_directories(parent, error);
   if (error) {
     error_ = "cannot create output folder " + parent.string() + ": " + error.message();
     return;
   }
+  std::string hidden = ".";  // built by appending: GCC 12 warns wrongly on "." + string + ...
+  hidden += name;
+  hidden += ".partial-";
+  hidden += std::to_string(::getpid());
+  temporary_path_ = (parent / hidden).string();
   remove_tree(temporary_path_);  // left by an earlier run that had this process id
   if (!fs::create_directory(temporary_path_, error)) {
     error_ = "cannot create a folder in " + (parent.empty() ? std::string(".") : parent.string()) +
              ": " + (error ? error.message() : "it already exists");
+    temporary_path_.clear();
   }
 }
 
 StagedDirectory::~StagedDirectory() {
-  if (!committed_ && !temporary_path_.empty()) remove_tree(temporary_path_);
+  if (committed_) return;
+  if (!temporary_path_.empty()) remove_tree(temporary_path_);
+  std::error_code ignored;  // fs::remove leaves a folder that is not empty
+  for (auto folder = created_parents_.rbegin(); folder != created_parents_.rend(); ++folder) {
+    fs::remove(*folder, ignored);
+  }
+}
+
+void StagedDirectory::remove_temporary() {
+  if (const std::string why = remove_tree(temporary_path_); !why.empty()) {
+    leftover_ = "the earlier output, moved aside to " + temporary_path_ +
+                ", could not be deleted (" + why + "); delete it by hand";
+  }
 }
 
 bool StagedDirectory::commit() {
@@ -62,7 +86,7 @@ bool StagedDirectory::commit() {
   if (::renameat2(AT_FDCWD, temporary_path_.c_str(), AT_FDCWD, final_path_.c_str(),
                   RENAME_EXCHANGE) == 0) {
     committed_ = true;
-    remove_tree(temporary_path_);
+    remove_temporary();
     return true;
   }
   if (errno != EINVAL && errno != ENOSYS) {
@@ -71,16 +95,18 @@ bool StagedDirectory::commit() {
   }
   // A file system without the exchange: move the old folder aside first. A reader may find no
   // folder for a moment, but never a mixed one.
-  const std::string old_path = temporary_path_ + "-old";
-  remove_tree(old_path);
-  if (::rename(final_path_.c_str(), old_path.c_str()) != 0 ||
-      ::rename(temporary_path_.c_str(), final_path_.c_str()) != 0) {
+  const std::string new_path = temporary_path_;
+  temporary_path_ += "-old";
+  remove_tree(temporary_path_);
+  if (::rename(final_path_.c_str(), temporary_path_.c_str()) != 0 ||
+      ::rename(new_path.c_str(), final_path_.c_str()) != 0) {
     error_ = "cannot replace " + final_path_ + ": " + std::strerror(errno);
-    ::rename(old_path.c_str(), final_path_.c_str());  // put the old one back if it was moved
+    ::rename(temporary_path_.c_str(), final_path_.c_str());  // put the old one back if moved
+    temporary_path_ = new_path;  // the new folder: removed by the destructor
     return false;
   }
   committed_ = true;
-  remove_tree(old_path);
+  remove_temporary();
   return true;
 }
 

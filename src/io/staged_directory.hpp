@@ -5,15 +5,19 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace tumble::io {
 
 class StagedDirectory {
  public:
-  // Creates the final path's parent folders and "<parent>/.<name>.partial-<pid>". Check ok() /
-  // error() before use.
+  // Creates the final path's missing parent folders and "<parent>/.<name>.partial-<pid>". Check
+  // ok() / error() before use. The final path must end in a plain name (not "", "." or "..") and
+  // hold no NUL byte: the temporary folder is named after it, and removed again.
   explicit StagedDirectory(std::string final_path);
-  ~StagedDirectory();  // removes the temporary folder and everything in it unless committed
+  // Unless committed: removes the temporary folder and everything in it, and the parent folders
+  // the constructor created (those still empty).
+  ~StagedDirectory();
   StagedDirectory(const StagedDirectory&) = delete;
   StagedDirectory& operator=(const StagedDirectory&) = delete;
 
@@ -23,13 +27,21 @@ class StagedDirectory {
   const std::string& final_path() const { return final_path_; }
 
   // Puts the folder in place, replacing what was there. Returns false (see error()) on failure,
-  // in which case the final path is as it was and the temporary folder is removed.
+  // in which case the final path is as it was.
   bool commit();
 
+  // After a successful commit: "" or why the replaced folder could not be deleted, naming where
+  // it was left. The new folder is in place either way.
+  const std::string& leftover() const { return leftover_; }
+
  private:
+  void remove_temporary();
+
   std::string final_path_;
   std::string temporary_path_;
+  std::vector<std::string> created_parents_;  // outermost first
   std::string error_;
+  std::string leftover_;
   bool committed_ = false;
 };
 

@@ -258,8 +258,9 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
     GLint max_samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     if (settings.msaa > max_samples) {
-      return "msaa = " + std::to_string(settings.msaa) + " is more than this OpenGL allows (" +
-             std::to_string(max_samples) + ")";
+      return "[render] msaa = " + std::to_string(settings.msaa) +
+             " is more than this OpenGL allows: set it to " + std::to_string(max_samples) +
+             " or less";
     }
     glGenFramebuffers(1, &msaa_fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);

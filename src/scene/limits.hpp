@@ -25,7 +25,7 @@ inline constexpr std::int64_t kMaxSceneFileBytes = 16 * 1024 * 1024;
 // "" when a width × height frame is within kMaxPixels, else what is wrong, as a clause.
 std::string pixel_limit_problem(std::int64_t width, std::int64_t height);
 
-// "" when `duration` seconds at `fps` give at most kMaxFrames frames, else what is wrong.
-std::string frame_limit_problem(double duration, std::int64_t fps);
+// "" when `duration` seconds at `fps` give 1 to kMaxFrames frames, else what is wrong.
+std::string frame_count_problem(double duration, std::int64_t fps);
 
 }  // namespace tumble::scene

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <filesystem>
 
 #include "scene/limits.hpp"
 
@@ -47,7 +46,7 @@ void read_camera(TableReader& in, Scene& scene) {
   if (!c.follow.empty() &&
       std::none_of(scene.bodies.begin(), scene.bodies.end(),
                    [&](const BodySpec& body) { return body.name == c.follow; })) {
-    in.fail("follow", "no body is named \"" + c.follow + "\"");
+    in.fail("follow", "no body is named " + in_quotes(c.follow));
   }
   if (c.position && c.look_at && (*c.position - *c.look_at).norm() == 0.0) {
     in.fail("look_at", "the camera cannot look at its own position");
@@ -80,25 +79,27 @@ void read_ground(TableReader& in, Scene& scene) {
 void read_output(TableReader& in, Scene& scene) {
   OutputSpec& o = scene.output;
   o.directory = in.optional_string("directory", o.directory);
-  // The scene chooses a folder below the output root, never a place elsewhere.
-  const std::filesystem::path directory(o.directory);
-  // Nor the output folder itself: the scene's folder is replaced as a whole by each render.
-  const bool escapes = directory.is_absolute() ||
-                       std::any_of(directory.begin(), directory.end(), [](const auto& part) {
-                         return part == ".." || part == "." || part.empty();
-                       });
-  if (o.directory.empty() || escapes) {
+  // The scene chooses a folder below the output root, never a place elsewhere, nor the output
+  // folder itself (the scene's folder is replaced as a whole by each render): every part a safe
+  // name, so no "..", ".", "/" at the start, empty part, NUL or control character.
+  bool safe = true;
+  for (std::size_t start = 0; safe && start <= o.directory.size();) {
+    const std::size_t slash = std::min(o.directory.find('/', start), o.directory.size());
+    safe = is_safe_name(o.directory.substr(start, slash - start));
+    start = slash + 1;
+  }
+  if (!safe) {
     in.fail("directory",
-            "must be a relative folder inside the output folder (no \"..\" or \".\", not "
-            "absolute)");
+            "must be a relative folder inside the output folder: parts separated by '/', each "
+            "1-100 letters, digits, '_', '-' or '.', not starting with '.' (so no \"..\")");
   }
   o.frames = in.optional_bool("frames", o.frames);
   o.video = in.optional_bool("video", o.video);
   o.crf = static_cast<int>(in.optional_integer("crf", o.crf, 0, 51));
   o.preset = in.optional_string("preset", o.preset);
   if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end()) {
-    in.fail("preset", "unknown x264 preset \"" + o.preset +
-                          "\" (ultrafast, superfast, veryfast, faster, fast, medium, slow, "
+    in.fail("preset", "unknown x264 preset " + in_quotes(o.preset) +
+                          " (ultrafast, superfast, veryfast, faster, fast, medium, slow, "
                           "slower, veryslow, placebo)");
   }
   in.reject_unknown_keys();
@@ -119,7 +120,7 @@ void read_render_tables(TableReader& root, Scene& scene) {
   read("light", read_light);
   read("ground", read_ground);
   read("output", read_output);
-  if (const std::string problem = frame_limit_problem(scene.duration, scene.fps);
+  if (const std::string problem = frame_count_problem(scene.duration, scene.fps);
       !problem.empty()) {
     const toml::table* render = root.table().get_as<toml::table>("render");
     if (render && render->contains("fps"))

@@ -1,5 +1,6 @@
 #include "scene/scene_loader.hpp"
 
+#include "scene/key_depth.hpp"
 #include "scene/render_tables.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/table_reader.hpp"
@@ -67,8 +68,8 @@ physics::ForceLaw read_force(TableReader& in) {
     require_non_negative(in, "rest_length", spring.rest_length);
     law = spring;
   } else {
-    in.fail("kind", "unknown force kind \"" + kind +
-                        "\" (expected gravity, force, torque, linear_damping, angular_damping, "
+    in.fail("kind", "unknown force kind " + in_quotes(kind) +
+                        " (expected gravity, force, torque, linear_damping, angular_damping, "
                         "force_at_point or spring)");
   }
   in.reject_unknown_keys();
@@ -92,7 +93,7 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
     body.shape = Shape::box;
     body.size = in.vector("size", size);
   } else {
-    in.fail("shape", "unknown shape \"" + shape + "\" (expected cube or box)");
+    in.fail("shape", "unknown shape " + in_quotes(shape) + " (expected cube or box)");
   }
   if (!(body.size.minCoeff() > 0.0)) in.fail("size", "every edge must be greater than 0");
   body.mass = in.required_number("mass");
@@ -116,6 +117,14 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   within("position", body.position, sim::kMaxPosition, "m");
   within("velocity", body.velocity, sim::kMaxSpeed, "m/s");
   within("angular_velocity", body.angular_velocity, sim::kMaxAngularSpeed, "rad/s");
+  const physics::BodyState start = initial_state(body);
+  if (!start.primary().momentum.allFinite()) {
+    in.fail("velocity", "with this mass the momentum is beyond double precision");
+  }
+  if (!start.primary().angular_momentum.allFinite()) {
+    in.fail("angular_velocity", "with this mass and size the angular momentum is beyond double "
+                                "precision");
+  }
   body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
   if (in.has("forces")) {
     const toml::array* forces = in.table().get("forces")->as_array();
@@ -140,11 +149,13 @@ Scene read_scene(const toml::table& root, const std::string& file) {
   Scene scene;
   scene.source_path = file;
   TableReader in(root, "", file);
+  const bool named = in.has("name");
   scene.name = in.optional_string("name", std::filesystem::path(file).stem().string());
   if (!is_safe_name(scene.name)) {
-    in.fail("name",
-            "must be 1-100 letters, digits, '_', '-' or '.', not starting with '.' "
-            "(it names the output folder)");
+    in.fail("name", std::string(named ? "" : "missing, and the file name ") +
+                        (named ? "" : in_quotes(scene.name) + " cannot stand in for it: ") +
+                        "must be 1-100 letters, digits, '_', '-' or '.', not starting with '.' "
+                        "(it names the output folder)");
   }
   scene.duration = in.required_number("duration");
   require_positive(in, "duration", scene.duration);
@@ -163,7 +174,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
       for (const auto i : physics::kAllIntegrators) {
         known += (known.empty() ? "" : ", ") + std::string(physics::integrator_name(i));
       }
-      physics.fail("integrator", "unknown integrator \"" + name + "\" (expected " + known + ")");
+      physics.fail("integrator", "unknown integrator " + in_quotes(name) + " (expected " + known + ")");
     }
     scene.physics.integrator = *integrator;
     physics.reject_unknown_keys();
@@ -210,6 +221,11 @@ Scene read_scene(const toml::table& root, const std::string& file) {
 }  // namespace
 
 SceneOrError parse_scene(std::string_view text, const std::string& path) {
+  if (const std::optional<TextPosition> at = find_overlong_dotted_key(text)) {
+    return SceneError{path + ':' + std::to_string(at->line) + ':' + std::to_string(at->column) +
+                      ": a dotted key of more than " + std::to_string(kMaxKeyParts) +
+                      " parts (scene keys have at most 3)"};
+  }
   try {
     const toml::table root = toml::parse(text, path);
     return read_scene(root, path);

@@ -1,6 +1,7 @@
 #include "scene/table_reader.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -45,6 +46,28 @@ std::string format_number(double value) {
   return out.str();
 }
 
+std::string printable(std::string_view text, std::size_t max_bytes) {
+  std::size_t length = std::min(text.size(), max_bytes);
+  while (length < text.size() && length > 0 && (text[length] & 0xc0) == 0x80) --length;  // UTF-8
+  std::string out;
+  for (const char c : text.substr(0, length)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  if (length < text.size()) out += "...";
+  return out;
+}
+
+std::string in_quotes(std::string_view text) { return '"' + printable(text) + '"'; }
+
 void require_positive(TableReader& reader, std::string_view key, double value) {
   if (!(value > 0.0)) reader.fail(key, "must be greater than 0 (got " + format_number(value) + ")");
 }
@@ -70,7 +93,7 @@ Vec3 TableReader::optional_color(std::string_view key, const Vec3& fallback) {
     const std::string text = *node.value<std::string>();
     const bool hex = text.size() == 7 && text[0] == '#' &&
                      text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
-    if (!hex) fail(key, "expected a colour \"#rrggbb\" or [r, g, b], found \"" + text + "\"");
+    if (!hex) fail(key, "expected a colour \"#rrggbb\" or [r, g, b], found " + in_quotes(text));
     Vec3 out;
     for (int i = 0; i < 3; ++i) {
       out[i] = std::stoi(text.substr(1 + 2 * static_cast<std::size_t>(i), 2), nullptr, 16) / 255.0;

@@ -29,6 +29,13 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 
 std::string format_number(double value);
 
+// Text from the scene file as it goes into a message: control characters escaped (\n, \x1b),
+// and cut to `max_bytes` with "..." so that a megabyte-long key does not fill the terminal.
+std::string printable(std::string_view text, std::size_t max_bytes = 80);
+
+// printable(text) in double quotes (not std::quoted: no escaping of quotes, and cut short).
+std::string in_quotes(std::string_view text);
+
 // A table being read: knows its dotted path for messages and which keys were asked for, so that
 // every key nobody asked for can be reported as unknown.
 class TableReader {
@@ -39,8 +46,8 @@ class TableReader {
   [[noreturn]] void fail_at(const toml::source_region& where, std::string_view key,
                             std::string_view what) const {
     std::ostringstream out;
-    out << file_ << ':' << where.begin.line << ':' << where.begin.column << ": " << key << ": "
-        << what;
+    out << file_ << ':' << where.begin.line << ':' << where.begin.column << ": " << printable(key)
+        << ": " << what;
     throw LoadFailure(out.str());
   }
   [[noreturn]] void fail(std::string_view key, std::string_view what) const {
@@ -63,7 +70,7 @@ class TableReader {
       for (auto&& [written, node] : table_) {
         if (!known_.count(std::string(written.str())) && edit_distance(written.str(), key) <= 2) {
           fail_at(written.source(), qualified(written.str()),
-                  "unknown key (did you mean \"" + std::string(key) + "\"?)");
+                  "unknown key (did you mean " + in_quotes(key) + "?)");
         }
       }
       fail_at(table_.source(), qualified(key),
