@@ -251,12 +251,21 @@ std::string run_gnuplot(const fs::path& directory, const fs::path& script) {
 }  // namespace
 
 int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std::FILE* err) {
-  const fs::path directory = fs::absolute(options.out);
   std::error_code error_code;
+  const fs::path directory = fs::absolute(options.out, error_code);
+  if (options.out.empty() || error_code) {
+    std::fprintf(err, "tumble: --out: expected a folder name, got \"%s\"\n", options.out.c_str());
+    return kExitBadInput;
+  }
   fs::create_directories(directory, error_code);
   if (error_code) {
     std::fprintf(err, "tumble: cannot create %s: %s\n", directory.c_str(),
                  error_code.message().c_str());
+    return kExitBadInput;
+  }
+  // The sweep takes about a minute: find an unwritable folder before it, not after.
+  if (io::AtomicFile probe((directory / ".tumble-write-test").string()); !probe.ok()) {
+    std::fprintf(err, "tumble: %s\n", probe.error().c_str());
     return kExitBadInput;
   }
 
@@ -298,7 +307,8 @@ int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std:
   if (gnuplot_error.empty()) fs::rename(directory / png_temporary, png, error_code);
   if (!gnuplot_error.empty() || error_code) {
     fs::remove(directory / png_temporary, error_code);
-    std::fprintf(err, "tumble: %s (accuracy.csv and accuracy.md are written)\n",
+    fs::remove(png, error_code);  // an earlier run's chart would not match the new figures
+    std::fprintf(err, "tumble: %s (accuracy.csv and accuracy.md are written; there is no accuracy.png)\n",
                  gnuplot_error.empty() ? ("cannot rename the chart into " + png.string()).c_str()
                                        : gnuplot_error.c_str());
     return kExitBadInput;

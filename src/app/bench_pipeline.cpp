@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "app/exit_codes.hpp"
+#include "app/interrupt.hpp"
 #include "app/render_job.hpp"
 #include "io/atomic_file.hpp"
+#include "io/staged_directory.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace tumble::app {
@@ -62,14 +64,17 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   scene.render.msaa = options.msaa;
   scene.duration = static_cast<double>(options.frames) / scene.fps;
 
-  const fs::path root = fs::path(options.out) / "pipeline";
-  std::error_code error_code;
-  fs::remove_all(root, error_code);
-  fs::create_directories(root, error_code);
-  if (error_code) {
-    std::fprintf(err, "tumble: cannot create %s: %s\n", root.c_str(), error_code.message().c_str());
+  // The frames and videos, written only to be timed, go to a hidden scratch folder beside the
+  // report (".pipeline.partial-<pid>"), never committed: it is removed on the way out, whatever
+  // happens, and nothing of the user's is replaced.
+  install_interrupt_handlers();
+  const io::StagedDirectory scratch((fs::path(options.out) / "pipeline").string());
+  if (!scratch.ok()) {
+    std::fprintf(err, "tumble: %s\n", scratch.error().c_str());
     return kExitBadInput;
   }
+  const fs::path root = scratch.path();
+  std::error_code error_code;
   const std::string shaders = find_shader_directory();
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
 
@@ -87,6 +92,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
                     .png = *io::png_settings_named(png),
                     .serial = serial,
                     .shader_directory = shaders};
+    plan.stop_requested = [] { return interrupt_signal() != 0; };
     std::fprintf(err, "bench: %s ...\n", name.c_str());
     const RenderResult rendered = render_scene(variant, plan);
     result.name = name;
@@ -106,6 +112,10 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   if (error.empty())
     error = run("png_then_ffmpeg", true, true, false, "default", "medium", results[3]);
   results[3].how = "one thread: draw, libpng defaults; then the ffmpeg program encodes the PNGs";
+  if (const int signal = interrupt_signal()) {
+    std::fprintf(err, "tumble: bench pipeline stopped by %s\n", signal_name(signal));
+    return kExitInterrupted + signal;
+  }
   if (!error.empty()) {
     std::fprintf(err, "tumble: %s\n", error.c_str());
     return kExitBadInput;
@@ -151,7 +161,6 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     std::fprintf(err, "tumble: %s\n", report.error().c_str());
     return kExitBadInput;
   }
-  fs::remove_all(root, error_code);  // hundreds of MB of frames, only written to be timed
   return kExitOk;
 }
 

@@ -1,5 +1,7 @@
 // Files that appear whole or not at all: written under a temporary name beside the target,
-// flushed, then renamed over it.
+// flushed, then renamed over it. A target that is not a regular file (a device such as
+// /dev/stdout, a FIFO) is written directly, since renaming over it would replace it; a symbolic
+// link to a regular file has the file it names replaced, and stays a link.
 #pragma once
 
 #include <cstdio>
@@ -15,7 +17,8 @@ class AtomicFile {
   // than writing the PNG.
   enum class Durability { synced, unsynced };
 
-  // Opens "<path>.tmp-<pid>" for writing. Check ok() / error() before use.
+  // Opens "<path>.tmp-<pid>" for writing (or the target itself, see above). Check ok() /
+  // error() before use.
   explicit AtomicFile(std::string path, Durability durability = Durability::synced);
   ~AtomicFile();  // removes the temporary file unless commit() succeeded
   AtomicFile(const AtomicFile&) = delete;
@@ -32,8 +35,9 @@ class AtomicFile {
  private:
   void fail(const std::string& what);
 
-  std::string path_;
-  std::string temporary_path_;
+  std::string path_;            // as given, for messages
+  std::string target_path_;     // where the file ends up: path_, or what its link names
+  std::string temporary_path_;  // "" when writing the target directly
   std::FILE* file_ = nullptr;
   std::string error_;
   bool committed_ = false;

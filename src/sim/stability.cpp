@@ -306,7 +306,10 @@ std::vector<StepWarning> check_step(const physics::BodyModel& model,
     const double spin = fastest_spin(model, initial, rates, duration);
     if (spin * dt > kMaxRotationPerStep) {
       StepWarning warning;
-      warning.suggested_dt = kSuggestedFractionOfLimit * kMaxRotationPerStep / spin;
+      // No step to suggest when the spin is beyond double range (a torque of 1e308 N m).
+      if (std::isfinite(spin)) {
+        warning.suggested_dt = kSuggestedFractionOfLimit * kMaxRotationPerStep / spin;
+      }
       warning.suggested_integrator = alternative(integrator, [](Integrator candidate) {
         const std::optional<Method> other = method_of(candidate);
         return other && is_splitting(*other);

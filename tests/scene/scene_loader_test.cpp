@@ -415,6 +415,65 @@ mass = 1.0
   EXPECT_EQ(std::get<Scene>(result).source_path, "some/folder/falling_lid.toml");
 }
 
+// The error message for `text`, or a test failure if it loads.
+std::string message_of(const std::string& text, const std::string& path = "test.toml") {
+  SceneOrError result = parse_scene(text, path);
+  if (std::holds_alternative<Scene>(result)) {
+    ADD_FAILURE() << "loaded, but should not have";
+    return {};
+  }
+  return std::get<SceneError>(result).message;
+}
+
+TEST(SceneLoader, AFileNameThatCannotBeTheSceneNameIsExplained) {
+  const std::string message = message_of(R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+                                         "renders/my scene.toml");
+  EXPECT_EQ(message.rfind("renders/my scene.toml:1:1: name: missing, and the file name \"my scene\" "
+                          "cannot stand in for it: must be 1-100 letters",
+                          0),
+            0u)
+      << message;
+}
+
+// A key of 100 000 characters: the message names it in 80 bytes and says it was cut.
+TEST(SceneLoader, AHugeUnknownKeyIsCutShortInTheMessage) {
+  const std::string message = message_of("duration = 1.0\n" + std::string(100000, 'k') +
+                                         " = 1\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\n");
+  EXPECT_EQ(message.rfind("test.toml:2:1: " + std::string(80, 'k') + "...: unknown key", 0), 0u)
+      << message.substr(0, 200);
+  EXPECT_LT(message.size(), 400u);
+}
+
+TEST(SceneLoader, ControlCharactersFromTheFileAreEscapedInMessages) {
+  const std::string message = message_of(R"(duration = 1.0
+[[bodies]]
+shape = "cu\u001b[2Jbe\n"
+size = 1.0
+mass = 1.0
+)");
+  EXPECT_NE(message.find("unknown shape \"cu\\x1b[2Jbe\\n\""), std::string::npos) << message;
+}
+
+// toml++ recurses once per part of a dotted key or table header and has no limit of its own
+// there: 40 000 parts overflowed the stack. Refused before parsing, with the key's position.
+TEST(SceneLoader, DeeplyDottedKeysAreRefusedBeforeParsing) {
+  std::string parts = "a";
+  for (int i = 1; i < 40000; ++i) parts += ".a";
+  for (const std::string& text : {"duration = 1.0\n[" + parts + "]\n",
+                                  "duration = 1.0\n  " + parts + " = 1\n",
+                                  "duration = 1.0\n[[" + parts + "]]\n"}) {
+    const std::string message = message_of(text);
+    EXPECT_EQ(message.rfind("test.toml:2:", 0), 0u) << message.substr(0, 200);
+    EXPECT_NE(message.find("a dotted key of more than 32 parts"), std::string::npos)
+        << message.substr(0, 200);
+  }
+}
+
 // A scene the loader must reject, and what its message must say. Lines and columns are
 // 1-based and were counted by hand from `text`; a value's column is where the value starts.
 struct BadScene {
