@@ -308,9 +308,10 @@ int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std:
   if (!gnuplot_error.empty() || error_code) {
     fs::remove(directory / png_temporary, error_code);
     fs::remove(png, error_code);  // an earlier run's chart would not match the new figures
-    std::fprintf(err, "tumble: %s (accuracy.csv and accuracy.md are written; there is no accuracy.png)\n",
-                 gnuplot_error.empty() ? ("cannot rename the chart into " + png.string()).c_str()
-                                       : gnuplot_error.c_str());
+    std::fprintf(
+        err, "tumble: %s (accuracy.csv and accuracy.md are written; there is no accuracy.png)\n",
+        gnuplot_error.empty() ? ("cannot rename the chart into " + png.string()).c_str()
+                              : gnuplot_error.c_str());
     return kExitBadInput;
   }
   std::fprintf(out, "%s\n", png.c_str());

@@ -123,6 +123,10 @@ std::string replace_problem(const fs::path& directory) {
 int run_render(const RenderOptions& options, std::FILE* err) {
   const auto start = Clock::now();
   install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
+  if (options.output_root.empty()) {
+    std::fprintf(err, "tumble: -o: expected a folder name\n");
+    return kExitBadInput;
+  }
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
   if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
@@ -235,7 +239,8 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     stopped("render failed");
     return kExitBadInput;
   }
-  if (!staged.leftover().empty()) std::fprintf(err, "tumble: warning: %s\n", staged.leftover().c_str());
+  if (!staged.leftover().empty())
+    std::fprintf(err, "tumble: warning: %s\n", staged.leftover().c_str());
   if (!options.quiet) {
     std::fprintf(
         err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",

@@ -14,6 +14,8 @@ namespace fs = std::filesystem;
 // Where the bytes go, and whether that is a file to replace by a rename ("" when not: a device,
 // a FIFO, a folder, a dangling link, which are opened and written as they are).
 std::string replaceable_target(const std::string& path) {
+  // /dev/stdout, /dev/fd/3, /proc/self/fd/1: a stream tumble was handed, whatever it leads to.
+  if (path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0) return {};
   std::error_code error;
   const fs::file_status status = fs::symlink_status(path, error);
   if (!fs::exists(status)) return path;  // a new file

@@ -1,7 +1,7 @@
 // Files that appear whole or not at all: written under a temporary name beside the target,
-// flushed, then renamed over it. A target that is not a regular file (a device such as
-// /dev/stdout, a FIFO) is written directly, since renaming over it would replace it; a symbolic
-// link to a regular file has the file it names replaced, and stays a link.
+// flushed, then renamed over it. A target that is not a regular file (a FIFO, a device), and any
+// path under /dev or /proc (/dev/stdout), is written directly, since renaming over it would
+// replace it; a symbolic link to a regular file has the file it names replaced, and stays a link.
 #pragma once
 
 #include <cstdio>

@@ -22,8 +22,9 @@ std::string frame_count_problem(double duration, std::int64_t fps) {
                   duration, static_cast<long long>(fps), 0.5 / static_cast<double>(fps));
   } else if (frames > static_cast<double>(kMaxFrames)) {
     std::snprintf(text, sizeof text,
-                  frames < 1e15 ? "duration × fps asks for %.0f frames, more than the limit of %lld"
-                                : "duration × fps asks for %.3g frames, more than the limit of %lld",
+                  frames < 1e15
+                      ? "duration × fps asks for %.0f frames, more than the limit of %lld"
+                      : "duration × fps asks for %.3g frames, more than the limit of %lld",
                   frames, static_cast<long long>(kMaxFrames));
   } else {
     return {};

@@ -122,8 +122,9 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
     in.fail("velocity", "with this mass the momentum is beyond double precision");
   }
   if (!start.primary().angular_momentum.allFinite()) {
-    in.fail("angular_velocity", "with this mass and size the angular momentum is beyond double "
-                                "precision");
+    in.fail("angular_velocity",
+            "with this mass and size the angular momentum is beyond double "
+            "precision");
   }
   body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
   if (in.has("forces")) {
@@ -174,7 +175,8 @@ Scene read_scene(const toml::table& root, const std::string& file) {
       for (const auto i : physics::kAllIntegrators) {
         known += (known.empty() ? "" : ", ") + std::string(physics::integrator_name(i));
       }
-      physics.fail("integrator", "unknown integrator " + in_quotes(name) + " (expected " + known + ")");
+      physics.fail("integrator",
+                   "unknown integrator " + in_quotes(name) + " (expected " + known + ")");
     }
     scene.physics.integrator = *integrator;
     physics.reject_unknown_keys();

@@ -66,7 +66,9 @@ std::string printable(std::string_view text, std::size_t max_bytes) {
   return out;
 }
 
-std::string in_quotes(std::string_view text) { return '"' + printable(text) + '"'; }
+std::string in_quotes(std::string_view text) {
+  return '"' + printable(text) + '"';
+}
 
 void require_positive(TableReader& reader, std::string_view key, double value) {
   if (!(value > 0.0)) reader.fail(key, "must be greater than 0 (got " + format_number(value) + ")");

@@ -207,6 +207,86 @@ TEST_F(Faults, AFolderThatIsNotATumbleRenderIsNeverReplaced) {
   EXPECT_EQ(read_file(dir_ / "out/spin/notes.txt"), "mine");
 }
 
+// "\u0000" once reached the file system as "", so that the hidden folder was the output root
+// itself, and a failed render emptied it.
+TEST_F(Faults, ASceneCannotTouchFilesBesideItsOwnFolder) {
+  fs::create_directories(dir_ / "out/other_render");
+  write("out/keep.txt", "mine");
+  write("out/other_render/report.json", "{}");
+  const Outcome run =
+      tumble("render " +
+             write("nul.toml", spin_scene(0.5) + "[output]\ndirectory = \"\\u0000\"\n").string() +
+             " -o " + path("out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("output.directory: must be a relative folder"), std::string::npos)
+      << run.err;
+  EXPECT_EQ(read_file(dir_ / "out/keep.txt"), "mine");
+  EXPECT_EQ(read_file(dir_ / "out/other_render/report.json"), "{}");
+  EXPECT_EQ(files_below(dir_ / "out"), 2);
+}
+
+// The scene's folder is swapped as a whole, which a link cannot be: refused before the work.
+TEST_F(Faults, ALinkAsTheScenesFolderIsRefusedBeforeAnyWork) {
+  render_earlier_output();
+  fs::rename(dir_ / "out/spin", dir_ / "real");
+  fs::create_directory_symlink(dir_ / "real", dir_ / "out/spin");
+  const Outcome run = tumble("render " + write("long.toml", spin_scene(10.0)).string() + " -o " +
+                             path("out") + " -q");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find(path("out/spin") + " is a symbolic link"), std::string::npos) << run.err;
+  EXPECT_TRUE(fs::is_symlink(dir_ / "out/spin"));
+  EXPECT_EQ(read_file(dir_ / "real/spin.mp4"), earlier_video_);
+}
+
+// The new render is in place; the old one, swapped out, cannot be deleted (its frames folder is
+// read-only): the run says where it is instead of leaving it unmentioned.
+TEST_F(Faults, AnOldRenderThatCannotBeDeletedIsReported) {
+  render_earlier_output();
+  fs::permissions(dir_ / "out/spin/frames", fs::perms::owner_read | fs::perms::owner_exec);
+  const Outcome run = tumble(
+      "render " + write("short.toml", spin_scene(0.5)).string() + " -o " + path("out") + " -q",
+      "exec " + without_root_override());
+  fs::permissions(dir_ / "out", fs::perms::owner_all);
+  for (const auto& entry : fs::recursive_directory_iterator(dir_ / "out")) {
+    if (entry.is_directory()) fs::permissions(entry.path(), fs::perms::owner_all);
+  }
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("tumble: warning: the earlier output, moved aside to " +
+                         path("out/.spin.partial-")),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("Permission denied); delete it by hand"), std::string::npos) << run.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out/spin/report.json"));
+}
+
+// `bench pipeline` times its renders in a scratch folder of its own: a "pipeline" folder of the
+// user's beside its report is left alone, and nothing else is left behind.
+TEST_F(Faults, BenchPipelineLeavesTheUsersFilesAlone) {
+  fs::create_directories(dir_ / "out/pipeline");
+  write("out/pipeline/thesis.tex", "mine");
+  const Outcome run =
+      tumble("bench pipeline --frames 2 --width 64 --height 48 --msaa 1 --out " + path("out"));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(read_file(dir_ / "out/pipeline/thesis.tex"), "mine");
+  EXPECT_NE(read_file(dir_ / "out/pipeline.md").find("| pipelined |"), std::string::npos);
+  EXPECT_EQ(files_below(dir_ / "out"), 2);
+}
+
+// Writing through /dev/stdout (a stream, not a file to replace), and through a link to a file.
+TEST_F(Faults, SimulateWritesThroughDevStdoutAndLinks) {
+  const std::string scene = write("short.toml", spin_scene(0.5)).string();
+  const Outcome to_stdout = tumble("simulate " + scene + " --every 10 --out /dev/stdout");
+  EXPECT_EQ(to_stdout.exit_code, 0) << to_stdout.err;
+  EXPECT_EQ(to_stdout.out.rfind("t,body,", 0), 0u) << to_stdout.out;
+  fs::create_directories(dir_ / "real");
+  write("real/states.csv", "old");
+  fs::create_symlink("real/states.csv", dir_ / "link.csv");
+  const Outcome through_link = tumble("simulate " + scene + " --out " + path("link.csv"));
+  EXPECT_EQ(through_link.exit_code, 0) << through_link.err;
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.csv"));
+  EXPECT_EQ(read_file(dir_ / "real/states.csv").rfind("t,body,", 0), 0u);
+}
+
 TEST_F(Faults, ABodyThatBlowsUpStopsTheRenderNamingItTheTimeAndTheStableStep) {
   // k dt = 100 / s × 0.05 s = 5, beyond explicit Euler's limit of 2: |v| grows 4× a step.
   const fs::path scene = write("stiff.toml", R"(duration = 2.0
@@ -293,14 +373,28 @@ TEST_F(Faults, AnOversizedOrMissingSceneFileIsAClearError) {
 // 0 on success, 1 on a failed comparison, 2 on bad usage or input; never a signal.
 TEST_F(Faults, EveryCommandExitsWithTwoOnBadUsage) {
   const std::string scene = write("short.toml", spin_scene(0.5)).string();
-  for (const std::string& arguments : std::vector<std::string>{
-           "", std::string("frobnicate"), std::string("render"), "render " + scene + " --fps 0",
-           "render " + scene + " --frames 9:3", "render " + scene + " --png-compression huge",
-           std::string("simulate"), "simulate " + scene + " --every 0", std::string("diff a.png"),
-           "diff " + path("a.png") + " " + path("b.png"), std::string("diff x y --threshold 300"),
-           std::string("bench"), std::string("bench pipeline --width 1"),
-           std::string("bench accuracy --bogus"), std::string("check"),
-           std::string("check a.toml b.toml")}) {
+  for (const std::string& arguments :
+       std::vector<std::string>{"",
+                                std::string("frobnicate"),
+                                std::string("render"),
+                                "render " + scene + " --fps 0",
+                                "render " + scene + " --frames 9:3",
+                                "render " + scene + " --png-compression huge",
+                                std::string("simulate"),
+                                "simulate " + scene + " --every 0",
+                                std::string("diff a.png"),
+                                "diff " + path("a.png") + " " + path("b.png"),
+                                std::string("diff x y --threshold 300"),
+                                std::string("bench"),
+                                std::string("bench pipeline --width 1"),
+                                std::string("bench accuracy --bogus"),
+                                std::string("bench accuracy --out ''"),
+                                "render " + scene + " --frames 99999999999999999999:3",
+                                "render " + scene + " --frames 1:",
+                                "render " + scene + " -o ''",
+                                "simulate " + scene + " --out ''",
+                                std::string("check"),
+                                std::string("check a.toml b.toml")}) {
     const Outcome run = tumble(arguments);
     EXPECT_EQ(run.exit_code, 2) << "tumble " << arguments << ": " << run.err;
     EXPECT_FALSE(run.err.empty()) << "tumble " << arguments << " said nothing";

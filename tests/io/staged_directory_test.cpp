@@ -86,5 +86,34 @@ TEST_F(StagedDirectoryTest, AParentThatIsAFileIsAnError) {
   EXPECT_FALSE(staged.commit());
 }
 
+// The temporary folder is named after the final one and removed again: a final path that is no
+// folder name (a NUL byte would cut it short at the file system) must never get that far.
+TEST_F(StagedDirectoryTest, AFinalPathThatIsNoFolderNameIsRefused) {
+  fs::create_directories(root_ / "out");
+  put(root_ / "out/keep.txt", "mine");
+  for (const std::string& bad :
+       {(root_ / "out/").string() + std::string(1, '\0'), (root_ / "out/..").string(),
+        (root_ / "out/.").string(), (root_ / "out").string() + "/"}) {
+    StagedDirectory staged(bad);
+    EXPECT_FALSE(staged.ok()) << bad;
+    EXPECT_NE(staged.error().find("not a folder name"), std::string::npos) << staged.error();
+    EXPECT_FALSE(staged.commit());
+  }
+  EXPECT_EQ(get(root_ / "out/keep.txt"), "mine");
+  EXPECT_EQ(entries(root_), 2);
+}
+
+TEST_F(StagedDirectoryTest, WithoutCommitTheParentsItCreatedAreRemovedToo) {
+  fs::create_directories(root_ / "kept");
+  { StagedDirectory staged((root_ / "kept/new/deeper/scene").string()); }
+  EXPECT_TRUE(fs::exists(root_ / "kept"));
+  EXPECT_EQ(entries(root_), 1);  // kept/ only
+  {
+    StagedDirectory staged((root_ / "kept/new/scene").string());
+    put(root_ / "kept/new/notes.txt", "written meanwhile");  // not ours: the folder stays
+  }
+  EXPECT_EQ(get(root_ / "kept/new/notes.txt"), "written meanwhile");
+}
+
 }  // namespace
 }  // namespace tumble::io

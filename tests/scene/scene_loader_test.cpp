@@ -433,17 +433,19 @@ size = 1.0
 mass = 1.0
 )",
                                          "renders/my scene.toml");
-  EXPECT_EQ(message.rfind("renders/my scene.toml:1:1: name: missing, and the file name \"my scene\" "
-                          "cannot stand in for it: must be 1-100 letters",
-                          0),
-            0u)
+  EXPECT_EQ(
+      message.rfind("renders/my scene.toml:1:1: name: missing, and the file name \"my scene\" "
+                    "cannot stand in for it: must be 1-100 letters",
+                    0),
+      0u)
       << message;
 }
 
 // A key of 100 000 characters: the message names it in 80 bytes and says it was cut.
 TEST(SceneLoader, AHugeUnknownKeyIsCutShortInTheMessage) {
-  const std::string message = message_of("duration = 1.0\n" + std::string(100000, 'k') +
-                                         " = 1\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\n");
+  const std::string message =
+      message_of("duration = 1.0\n" + std::string(100000, 'k') +
+                 " = 1\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\n");
   EXPECT_EQ(message.rfind("test.toml:2:1: " + std::string(80, 'k') + "...: unknown key", 0), 0u)
       << message.substr(0, 200);
   EXPECT_LT(message.size(), 400u);
@@ -464,9 +466,9 @@ mass = 1.0
 TEST(SceneLoader, DeeplyDottedKeysAreRefusedBeforeParsing) {
   std::string parts = "a";
   for (int i = 1; i < 40000; ++i) parts += ".a";
-  for (const std::string& text : {"duration = 1.0\n[" + parts + "]\n",
-                                  "duration = 1.0\n  " + parts + " = 1\n",
-                                  "duration = 1.0\n[[" + parts + "]]\n"}) {
+  for (const std::string& text :
+       {"duration = 1.0\n[" + parts + "]\n", "duration = 1.0\n  " + parts + " = 1\n",
+        "duration = 1.0\n[[" + parts + "]]\n"}) {
     const std::string message = message_of(text);
     EXPECT_EQ(message.rfind("test.toml:2:", 0), 0u) << message.substr(0, 200);
     EXPECT_NE(message.find("a dotted key of more than 32 parts"), std::string::npos)

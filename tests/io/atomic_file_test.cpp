@@ -1,0 +1,101 @@
+#include "io/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+namespace tumble::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class AtomicFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::path(::testing::TempDir()) /
+            ("tumble_atomic_" +
+             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  static std::string get(const fs::path& file) {
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  static bool write(AtomicFile& file, const std::string& text) {
+    return file.ok() && std::fputs(text.c_str(), file.stream()) >= 0 && file.commit();
+  }
+  int entries() const {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(root_)) count += entry.exists() ? 1 : 0;
+    return count;
+  }
+
+  fs::path root_;
+};
+
+TEST_F(AtomicFileTest, TheFileAppearsOnlyOnCommit) {
+  AtomicFile file((root_ / "a.csv").string());
+  ASSERT_TRUE(file.ok()) << file.error();
+  std::fputs("rows", file.stream());
+  EXPECT_FALSE(fs::exists(root_ / "a.csv"));
+  ASSERT_TRUE(file.commit()) << file.error();
+  EXPECT_EQ(get(root_ / "a.csv"), "rows");
+  EXPECT_EQ(entries(), 1);
+}
+
+TEST_F(AtomicFileTest, WithoutCommitNothingIsLeftAndTheOldFileIsKept) {
+  std::ofstream(root_ / "a.csv") << "old";
+  {
+    AtomicFile file((root_ / "a.csv").string());
+    std::fputs("half", file.stream());
+  }
+  EXPECT_EQ(get(root_ / "a.csv"), "old");
+  EXPECT_EQ(entries(), 1);
+}
+
+// Renaming over a link would replace the link: the file it names is replaced instead.
+TEST_F(AtomicFileTest, ALinkStaysALinkAndItsFileIsReplaced) {
+  fs::create_directories(root_ / "real");
+  std::ofstream(root_ / "real/a.csv") << "old";
+  fs::create_symlink("real/a.csv", root_ / "link.csv");
+  AtomicFile file((root_ / "link.csv").string());
+  ASSERT_TRUE(write(file, "new")) << file.error();
+  EXPECT_TRUE(fs::is_symlink(root_ / "link.csv"));
+  EXPECT_EQ(get(root_ / "real/a.csv"), "new");
+  EXPECT_EQ(entries(), 2);  // real/ and link.csv: no temporary file beside either
+}
+
+// A FIFO (like /dev/stdout on a pipe) is written through, not replaced by a regular file.
+TEST_F(AtomicFileTest, AFifoIsWrittenThroughNotReplaced) {
+  const fs::path fifo = root_ / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] { received = get(fifo); });
+  AtomicFile file(fifo.string());
+  const bool written = write(file, "through the pipe");
+  reader.join();
+  EXPECT_TRUE(written) << file.error();
+  EXPECT_EQ(received, "through the pipe");
+  EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+TEST_F(AtomicFileTest, AFolderAtThePathIsAnErrorAtOnce) {
+  fs::create_directories(root_ / "taken");
+  AtomicFile file((root_ / "taken").string());
+  EXPECT_FALSE(file.ok());
+  EXPECT_EQ(file.error(), (root_ / "taken").string() + ": cannot create: Is a directory");
+  EXPECT_TRUE(fs::is_directory(root_ / "taken"));
+}
+
+}  // namespace
+}  // namespace tumble::io
