@@ -68,6 +68,7 @@ class Scanner {
 
   // From an opening quote past the closing one (or the end of the text, if unclosed): basic
   // strings "…" and """…""" with backslash escapes, literal strings '…' and '''…''' without.
+  // This must end each string where the TOML parser does, or a key after it could go unseen.
   void skip_string(char quote) {
     const std::string_view triple = quote == '"' ? "\"\"\"" : "'''";
     const bool multi_line = starts_with(triple);
@@ -76,8 +77,13 @@ class Scanner {
       const char c = text_[at_];
       if (c == '\\' && quote == '"') {
         advance(2);
-      } else if (multi_line ? starts_with(triple) : c == quote) {
-        advance(multi_line ? 3 : 1);
+      } else if (multi_line && starts_with(triple)) {
+        // Up to two more quotes before the closing three belong to the string (TOML 1.0):
+        // the string ends after the whole run of quotes.
+        while (at_ < text_.size() && text_[at_] == quote) advance(1);
+        return;
+      } else if (!multi_line && c == quote) {
+        advance(1);
         return;
       } else if (c == '\n' && !multi_line) {
         return;  // an unterminated string: the parser reports it

@@ -47,6 +47,22 @@ TEST(KeyDepth, DotsInStringsCommentsAndNumbersAreNotParts) {
   EXPECT_FALSE(find_overlong_dotted_key(cat("size = [", chain(100, ", ", "1.5"), "]\n")));
 }
 
+// TOML lets one or two quotes stand just before a multi-line string's closing three. Read as
+// the end of the string, the extra quote opened another one in the scanner's eyes, which hid
+// the key on the next line from it, but not from the parser.
+TEST(KeyDepth, QuotesBeforeAMultiLineStringsCloseDoNotHideTheNextKey) {
+  const std::string deep = cat("[", chain(40), "]\n");
+  for (const std::string& first_line :
+       {std::string("x = { s = '''a'''', t = '''b''' }\n"),
+        std::string("x = ['''a''''', '''b''']\n"),
+        std::string("x = \"\"\"a\"\"\"\"\nx = \"\"\"b\"\"\"\n"),
+        std::string("x = \"\"\"\"\"\"\n"), std::string("x = ''''''\n")}) {
+    const auto found = find_overlong_dotted_key(cat(first_line, deep));
+    ASSERT_TRUE(found) << first_line;
+    EXPECT_EQ(found->column, 2) << first_line;
+  }
+}
+
 TEST(KeyDepth, AChainEndsAtAnythingButADotOrSpace) {
   // 20 parts, "=", 20 parts: two chains of 20, not one of 40.
   EXPECT_FALSE(find_overlong_dotted_key(cat(chain(20), " = ", chain(20), "\n")));
