@@ -7,6 +7,7 @@
 #include <chrono>
 #include <mutex>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -144,15 +145,23 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSourc
     }
   };
   std::vector<std::thread> threads;
-  if (sinks.png) {
-    threads.emplace_back([&] {
-      worker(png_queue, report.png, [&](Slot& slot) { return sinks.png(slot.frame, slot.image); });
-    });
-  }
-  if (sinks.video) {
-    threads.emplace_back([&] {
-      worker(video_queue, report.video, [&](Slot& slot) { return sinks.video(slot.image); });
-    });
+  threads.reserve(2);
+  try {
+    if (sinks.png) {
+      threads.emplace_back([&] {
+        worker(png_queue, report.png,
+               [&](Slot& slot) { return sinks.png(slot.frame, slot.image); });
+      });
+    }
+    if (sinks.video) {
+      threads.emplace_back([&] {
+        worker(video_queue, report.video, [&](Slot& slot) { return sinks.video(slot.image); });
+      });
+    }
+  } catch (const std::system_error& error) {  // out of memory or of threads (ulimit -v, -u)
+    fail(std::string("cannot start a worker thread: ") + error.what());
+    for (std::thread& thread : threads) thread.join();  // the aborted queues let it finish
+    return finish();
   }
 
   for (std::int64_t k = first; k < end; ++k) {

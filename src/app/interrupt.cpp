@@ -16,8 +16,9 @@ extern "C" void on_interrupt(int signal) {
 
 }  // namespace
 
-void ignore_file_size_signal() {
+void ignore_write_signals() {
   std::signal(SIGXFSZ, SIG_IGN);
+  std::signal(SIGPIPE, SIG_IGN);
 }
 
 void install_interrupt_handlers() {

@@ -4,9 +4,10 @@
 
 namespace tumble::app {
 
-// Ignores SIGXFSZ, so that a file-size limit (ulimit -f) fails a write with an error tumble
-// reports, as a full disk does, instead of killing it. For every command, at start.
-void ignore_file_size_signal();
+// Ignores SIGXFSZ and SIGPIPE, so that a file-size limit (ulimit -f) or a closed pipe (`tumble
+// render ... 2>&1 | head -1`) fails a write with an error tumble reports, as a full disk does,
+// instead of killing it half way through a render. For every command, at start.
+void ignore_write_signals();
 
 // Catches SIGINT and SIGTERM for a command that checks interrupt_signal() as it goes.
 void install_interrupt_handlers();

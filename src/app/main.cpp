@@ -49,7 +49,7 @@ std::optional<std::pair<long long, long long>> parse_range(const std::string& te
 
 int main(int argc, char** argv) {
   using namespace tumble::app;
-  ignore_file_size_signal();
+  ignore_write_signals();
   CLI::App app{"tumble: rigid-body scenes to frames and video, headless"};
   app.require_subcommand(1);
 

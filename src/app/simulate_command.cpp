@@ -1,5 +1,7 @@
 #include "app/simulate_command.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <memory>
 #include <variant>
 
@@ -86,7 +88,7 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
     ok = file->commit() && ok;
     if (!ok) std::fprintf(err, "tumble: %s\n", file->error().c_str());
   } else if (std::fflush(out) != 0 || !ok) {
-    std::fprintf(err, "tumble: error writing to standard output\n");
+    std::fprintf(err, "tumble: error writing to standard output: %s\n", std::strerror(errno));
     ok = false;
   }
   return ok ? kExitOk : kExitBadInput;

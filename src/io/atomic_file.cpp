@@ -1,5 +1,6 @@
 #include "io/atomic_file.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -11,26 +12,50 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Where the bytes go, and whether that is a file to replace by a rename ("" when not: a device,
-// a FIFO, a folder, a dangling link, which are opened and written as they are).
-std::string replaceable_target(const std::string& path) {
-  // /dev/stdout, /dev/fd/3, /proc/self/fd/1: a stream tumble was handed, whatever it leads to.
-  if (path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0) return {};
-  std::error_code error;
-  const fs::file_status status = fs::symlink_status(path, error);
-  if (!fs::exists(status)) return path;  // a new file
-  if (fs::is_regular_file(status)) return path;
-  if (!fs::is_symlink(status) || !fs::is_regular_file(fs::status(path, error))) return {};
-  const fs::path target = fs::canonical(path, error);
-  return error ? std::string() : target.string();
+// How a path is written.
+struct Target {
+  std::string path;     // the file to create or replace: the path, or the name its links lead to
+  int stream = -1;      // the standard stream (1 or 2) the path is, when it is one of them
+  bool direct = false;  // written as it is: a stream, FIFO, device or folder (no rename over it)
+};
+
+Target target_of(const std::string& path) {
+  struct stat followed;
+  if (::stat(path.c_str(), &followed) == 0) {
+    if (!S_ISREG(followed.st_mode)) return {path, -1, true};
+    // /dev/stdout into a file: write through the stream, which keeps an append (>>) an append.
+    for (const int stream : {STDOUT_FILENO, STDERR_FILENO}) {
+      struct stat stream_status;
+      if (::fstat(stream, &stream_status) == 0 && stream_status.st_dev == followed.st_dev &&
+          stream_status.st_ino == followed.st_ino) {
+        return {path, stream, true};
+      }
+    }
+  }
+  // A new file or a regular one, perhaps named by a chain of links: replace what they lead to,
+  // so that a link stays a link and a dangling one comes to name the new file.
+  fs::path resolved = path;
+  for (int hop = 0; hop < 40; ++hop) {  // 40: the kernel's own limit on a chain of links
+    std::error_code error;
+    if (!fs::is_symlink(fs::symlink_status(resolved, error))) break;
+    const fs::path link = fs::read_symlink(resolved, error);
+    if (error) break;
+    resolved = link.is_absolute() ? link : resolved.parent_path() / link;
+  }
+  return {resolved.string(), -1, false};
 }
 
 }  // namespace
 
 AtomicFile::AtomicFile(std::string path, Durability durability)
-    : path_(std::move(path)), target_path_(replaceable_target(path_)), durability_(durability) {
-  if (target_path_.empty()) {
-    target_path_ = path_;
+    : path_(std::move(path)), durability_(durability) {
+  const Target target = target_of(path_);
+  target_path_ = target.path;
+  if (target.stream >= 0) {
+    const int copy = ::dup(target.stream);
+    file_ = copy < 0 ? nullptr : ::fdopen(copy, "wb");
+    if (copy >= 0 && !file_) ::close(copy);
+  } else if (target.direct) {
     file_ = std::fopen(path_.c_str(), "wb");
   } else {
     temporary_path_ = target_path_ + ".tmp-" + std::to_string(::getpid());

@@ -1,7 +1,8 @@
 // Files that appear whole or not at all: written under a temporary name beside the target,
-// flushed, then renamed over it. A target that is not a regular file (a FIFO, a device), and any
-// path under /dev or /proc (/dev/stdout), is written directly, since renaming over it would
-// replace it; a symbolic link to a regular file has the file it names replaced, and stays a link.
+// flushed, then renamed over it. A target that is not a regular file (a FIFO, a device) or that
+// is tumble's own standard output or error (/dev/stdout into a file) is written directly, since
+// renaming over it would replace it; a symbolic link has the file it names replaced (or created,
+// if dangling), and stays a link.
 #pragma once
 
 #include <cstdio>
@@ -36,7 +37,7 @@ class AtomicFile {
   void fail(const std::string& what);
 
   std::string path_;            // as given, for messages
-  std::string target_path_;     // where the file ends up: path_, or what its link names
+  std::string target_path_;     // where the file ends up: path_, or what its links name
   std::string temporary_path_;  // "" when writing the target directly
   std::FILE* file_ = nullptr;
   std::string error_;

@@ -75,6 +75,29 @@ TEST_F(AtomicFileTest, ALinkStaysALinkAndItsFileIsReplaced) {
   EXPECT_EQ(entries(), 2);  // real/ and link.csv: no temporary file beside either
 }
 
+TEST_F(AtomicFileTest, ADanglingLinkComesToNameTheNewFile) {
+  fs::create_symlink("real.csv", root_ / "link.csv");
+  AtomicFile file((root_ / "link.csv").string());
+  ASSERT_TRUE(write(file, "new")) << file.error();
+  EXPECT_TRUE(fs::is_symlink(root_ / "link.csv"));
+  EXPECT_EQ(get(root_ / "real.csv"), "new");
+  EXPECT_EQ(entries(), 2);
+}
+
+// Only what a path *is* decides how it is written, not how it is spelt: a new file reached
+// through /proc (a magic link in the middle of the path) is still written beside and renamed.
+TEST_F(AtomicFileTest, APathThroughProcIsStillReplacedWhole) {
+  AtomicFile file("/proc/self/root" + (root_ / "a.csv").string());
+  ASSERT_TRUE(file.ok()) << file.error();
+  std::fputs("rows", file.stream());
+  std::fflush(file.stream());
+  EXPECT_FALSE(fs::exists(root_ / "a.csv"));
+  EXPECT_EQ(entries(), 1);  // the temporary file
+  ASSERT_TRUE(file.commit()) << file.error();
+  EXPECT_EQ(get(root_ / "a.csv"), "rows");
+  EXPECT_EQ(entries(), 1);
+}
+
 // A FIFO (like /dev/stdout on a pipe) is written through, not replaced by a regular file.
 TEST_F(AtomicFileTest, AFifoIsWrittenThroughNotReplaced) {
   const fs::path fifo = root_ / "pipe";
