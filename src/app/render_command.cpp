@@ -100,22 +100,57 @@ std::string write_text_file(const std::string& path, const std::string& text) {
   return file.commit() ? std::string() : file.error();
 }
 
-// Why the folder at `directory` must not be replaced by a render ("" when it may): tumble
-// replaces its output folder as a whole, so it only ever replaces one of its own.
-std::string replace_problem(const fs::path& directory) {
+// The first thing in a render's folder that a render does not write: it writes report.json,
+// <scene name>.mp4 and frames/frame_NNNNN.png, and nothing else. "" when there is none.
+std::string foreign_entry(const fs::path& directory) {
   std::error_code error;
-  const fs::file_status status = fs::symlink_status(directory, error);
-  if (!fs::exists(status)) return {};
-  if (fs::is_symlink(status)) {
-    return directory.string() +
-           " is a symbolic link; a render replaces its folder as a whole, so it will not replace "
-           "a link: choose another -o or [output] directory, or remove the link";
+  for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_symlink(error)) return name;
+    if (name == "frames" && entry.is_directory(error)) {
+      for (const fs::directory_entry& frame : fs::directory_iterator(entry.path(), error)) {
+        const std::string frame_name = frame.path().filename().string();
+        if (frame.is_symlink(error) || !frame.is_regular_file(error) ||
+            frame_name.rfind("frame_", 0) != 0 || frame.path().extension() != ".png") {
+          return "frames/" + frame_name;
+        }
+      }
+    } else if (!entry.is_regular_file(error) ||
+               (name != "report.json" && entry.path().extension() != ".mp4")) {
+      return name;
+    }
   }
-  if (!fs::is_directory(status)) return directory.string() + " exists and is not a folder";
-  if (fs::exists(directory / "report.json", error) || fs::is_empty(directory, error)) return {};
-  return "output folder " + directory.string() +
-         " exists and is not a tumble render (it has no report.json); a render replaces its "
-         "folder as a whole, so choose another -o or [output] directory, or remove it";
+  return error ? "(unreadable: " + error.message() + ")" : std::string();
+}
+
+// Why the scene's folder `relative` below the output root must not be replaced by a render
+// ("" when it may): tumble replaces its output folder as a whole, so it only ever replaces one
+// of its own, and never follows a link below the root out of it.
+std::string replace_problem(const fs::path& root, const fs::path& relative) {
+  const std::string advice =
+      "; a render replaces its folder as a whole, so choose another -o or [output] directory";
+  std::error_code error;
+  fs::path directory = root;
+  for (const fs::path& part : relative) {
+    if (directory != root && fs::exists(directory / "report.json", error)) {
+      return directory.string() + " is another render's folder, which a render inside it would " +
+             "change" + advice;
+    }
+    directory /= part;
+    const fs::file_status status = fs::symlink_status(directory, error);
+    if (!fs::exists(status)) return {};
+    if (fs::is_symlink(status)) return directory.string() + " is a symbolic link" + advice;
+    if (!fs::is_directory(status)) return directory.string() + " exists and is not a folder";
+  }
+  if (!fs::exists(directory / "report.json", error) && !fs::is_empty(directory, error)) {
+    return "output folder " + directory.string() + " exists and is not a tumble render (it has " +
+           "no report.json)" + advice + ", or remove it";
+  }
+  if (const std::string foreign = foreign_entry(directory); !foreign.empty()) {
+    return "output folder " + directory.string() + " holds " + foreign +
+           ", which a render does not write" + advice + ", or move it";
+  }
+  return {};
 }
 
 }  // namespace
@@ -127,6 +162,8 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     std::fprintf(err, "tumble: -o: expected a folder name\n");
     return kExitBadInput;
   }
+  // Spelt one way throughout ("a/../b" is "b"), as StagedDirectory spells it.
+  const fs::path root = fs::path(options.output_root).lexically_normal();
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
   if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
@@ -176,8 +213,9 @@ int run_render(const RenderOptions& options, std::FILE* err) {
 
   // Everything is written into a hidden folder beside the final one and swapped in at the end:
   // a failed or interrupted render leaves the earlier output as it was.
-  const fs::path directory = fs::path(options.output_root) / scene.output.directory;
-  if (const std::string problem = replace_problem(directory); !problem.empty()) {
+  const fs::path directory = root / scene.output.directory;
+  if (const std::string problem = replace_problem(root, scene.output.directory);
+      !problem.empty()) {
     std::fprintf(err, "tumble: %s\n", problem.c_str());
     return kExitBadInput;
   }
@@ -233,6 +271,8 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   const double total_seconds = seconds_since(start);
   std::string error = write_text_file((staging / "report.json").string(),
                                       report_json(scene, final_paths, result, total_seconds));
+  // Checked again: the folder may have been made or filled while the frames were drawn.
+  if (error.empty()) error = replace_problem(root, scene.output.directory);
   if (error.empty() && !staged.commit()) error = staged.error();
   if (!error.empty()) {
     std::fprintf(err, "tumble: %s\n", error.c_str());

@@ -22,11 +22,14 @@ std::string remove_tree(const std::string& path) {
 
 }  // namespace
 
-StagedDirectory::StagedDirectory(std::string final_path) : final_path_(std::move(final_path)) {
-  const fs::path target = fs::path(final_path_).lexically_normal();
+StagedDirectory::StagedDirectory(std::string final_path) {
+  // Lexically normal, so that the temporary folder and the final one are beside each other
+  // however the path was spelt ("a/../b": "b", even when a does not exist).
+  const fs::path target = fs::path(final_path).lexically_normal();
+  final_path_ = target.string();
   const std::string name = target.filename().string();
-  if (final_path_.find('\0') != std::string::npos || name.empty() || name == "." || name == "..") {
-    error_ = "cannot write output to \"" + target.string() + "\": not a folder name";
+  if (final_path.find('\0') != std::string::npos || name.empty() || name == "." || name == "..") {
+    error_ = "cannot write output to \"" + final_path_ + "\": not a folder name";
     return;
   }
   const fs::path parent = target.parent_path();

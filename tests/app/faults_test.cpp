@@ -238,6 +238,42 @@ TEST_F(Faults, ALinkAsTheScenesFolderIsRefusedBeforeAnyWork) {
   EXPECT_EQ(read_file(dir_ / "real/spin.mp4"), earlier_video_);
 }
 
+// A render only replaces a folder that holds nothing but a render's own files, and never writes
+// into another render's folder: scene "a/b" inside scene "a" would be deleted by a new "a".
+TEST_F(Faults, ARenderNeverReplacesOrEntersAnotherRendersFiles) {
+  const auto scene_in = [&](const std::string& name, const std::string& directory) {
+    return write(name + ".toml", spin_scene(0.5) + "[output]\ndirectory = \"" + directory + "\"\n")
+        .string();
+  };
+  ASSERT_EQ(tumble("render " + scene_in("outer", "a") + " -o " + path("out") + " -q").exit_code, 0);
+  const Outcome inner = tumble("render " + scene_in("inner", "a/b") + " -o " + path("out"));
+  EXPECT_EQ(inner.exit_code, 2) << inner.err;
+  EXPECT_NE(inner.err.find(path("out/a") + " is another render's folder"), std::string::npos)
+      << inner.err;
+  write("out/a/frames/notes.txt", "mine");
+  const Outcome again = tumble("render " + scene_in("outer", "a") + " -o " + path("out"));
+  EXPECT_EQ(again.exit_code, 2) << again.err;
+  EXPECT_NE(again.err.find(path("out/a") + " holds frames/notes.txt, which a render does not write"),
+            std::string::npos)
+      << again.err;
+  EXPECT_EQ(read_file(dir_ / "out/a/frames/notes.txt"), "mine");
+}
+
+// The folder is checked again just before the swap: a file put there during the render stays.
+TEST_F(Faults, AFolderFilledDuringTheRenderIsNotReplaced) {
+  const pid_t render = start("render " + write("long.toml", spin_scene(20.0)).string() + " -o " +
+                             path("out") + " -q");
+  ASSERT_TRUE(wait_for_frames(dir_ / "out", 3)) << "the render never got going";
+  fs::create_directories(dir_ / "out/spin");
+  write("out/spin/important.txt", "precious");
+  const Outcome run = wait(render);
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find(path("out/spin") + " exists and is not a tumble render"), std::string::npos)
+      << run.err;
+  EXPECT_EQ(read_file(dir_ / "out/spin/important.txt"), "precious");
+  EXPECT_EQ(files_below(dir_ / "out"), 1);
+}
+
 // The new render is in place; the old one, swapped out, cannot be deleted (its frames folder is
 // read-only): the run says where it is instead of leaving it unmentioned.
 TEST_F(Faults, AnOldRenderThatCannotBeDeletedIsReported) {
