@@ -120,12 +120,29 @@ void read_render_tables(TableReader& root, Scene& scene) {
   read("light", read_light);
   read("ground", read_ground);
   read("output", read_output);
+
+  // The scene describes a video: what no render of it could write is refused here, at the key
+  // in `table` when the file has it, else at `fallback` (a top-level key).
+  const auto fail_at = [&](const char* table, const char* key, const char* fallback,
+                           const std::string& problem) {
+    const toml::table* in = root.table().get_as<toml::table>(table);
+    if (in && in->contains(key)) TableReader(*in, table, root.file()).fail(key, problem);
+    root.fail(fallback, problem);
+  };
   if (const std::string problem = frame_count_problem(scene.duration, scene.fps);
       !problem.empty()) {
-    const toml::table* render = root.table().get_as<toml::table>("render");
-    if (render && render->contains("fps"))
-      TableReader(*render, "render", root.file()).fail("fps", problem);
-    root.fail("duration", problem);
+    fail_at("render", "fps", "duration", problem);
+  }
+  const render::RenderSettings& r = scene.render;
+  if (scene.output.video && (r.width % 2 != 0 || r.height % 2 != 0)) {
+    const bool odd_width = r.width % 2 != 0;
+    fail_at("render", odd_width ? "width" : "height", "render",
+            "must be even for H.264 yuv420p video, which stores colour per 2×2 pixels (got " +
+                std::to_string(odd_width ? r.width : r.height) +
+                "); or set [output] video = false for PNG frames only");
+  }
+  if (!scene.output.frames && !scene.output.video) {
+    fail_at("output", "video", "output", "frames and video are both off: nothing to write");
   }
 }
 

@@ -141,7 +141,7 @@ grid_spacing = 0.5
 
 [output]
 directory = "renders/full"
-frames = false
+frames = true
 video = false
 crf = 0
 preset = "slow"
@@ -251,7 +251,7 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenRenderingValues) {
   EXPECT_EQ(scene.render.ground.grid_spacing, 0.5);
 
   EXPECT_EQ(scene.output.directory, "renders/full");
-  EXPECT_FALSE(scene.output.frames);
+  EXPECT_TRUE(scene.output.frames);
   EXPECT_FALSE(scene.output.video);
   EXPECT_EQ(scene.output.crf, 0);
   EXPECT_EQ(scene.output.preset, "slow");
@@ -400,6 +400,17 @@ mass = 9007199254740993
                                           "test.toml");
   ASSERT_TRUE(std::holds_alternative<Scene>(result)) << std::get<SceneError>(result).message;
   EXPECT_EQ(std::get<Scene>(result).bodies[0].mass, 9007199254740992.0);
+}
+
+// Odd sizes are fine without a video (H.264 yuv420p needs even ones); frames can be turned off.
+TEST(SceneLoader, OutputSwitchesAreReadAndOddSizesNeedNoVideo) {
+  const std::string body = "duration = 1.0\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\n";
+  const Scene odd = parse_valid(body + "[render]\nwidth = 65\n[output]\nvideo = false\n");
+  EXPECT_EQ(odd.render.width, 65);
+  EXPECT_FALSE(odd.output.video);
+  const Scene video_only = parse_valid(body + "[output]\nframes = false\n");
+  EXPECT_FALSE(video_only.output.frames);
+  EXPECT_TRUE(video_only.output.video);
 }
 
 TEST(SceneLoader, DefaultNameIsTheStemOfTheGivenPath) {
