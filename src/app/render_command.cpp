@@ -54,6 +54,14 @@ std::string stage_json(const StageTime& stage) {
   return out.str();
 }
 
+// JSON has no infinity or NaN: null stands for them (a kinetic energy past 1.8e308 J).
+std::string json_number(double value) {
+  if (!std::isfinite(value)) return "null";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
 std::string report_json(const scene::Scene& scene, const RenderPlan& plan,
                         const RenderResult& result, double total_seconds) {
   const PipelineReport& p = result.pipeline;
@@ -85,9 +93,10 @@ std::string report_json(const scene::Scene& scene, const RenderPlan& plan,
   for (std::size_t i = 0; i < result.bodies.size(); ++i) {
     const BodyDiagnostics& b = result.bodies[i];
     out << (i ? "," : "") << "\n    {\"name\": " << json_string(scene.bodies[i].name)
-        << ", \"energy_start\": " << b.energy_start << ", \"energy_end\": " << b.energy_end
-        << ", \"angular_momentum_start\": " << b.angular_momentum_start
-        << ", \"angular_momentum_end\": " << b.angular_momentum_end << "}";
+        << ", \"energy_start\": " << json_number(b.energy_start)
+        << ", \"energy_end\": " << json_number(b.energy_end)
+        << ", \"angular_momentum_start\": " << json_number(b.angular_momentum_start)
+        << ", \"angular_momentum_end\": " << json_number(b.angular_momentum_end) << "}";
   }
   out << "\n  ]\n}\n";
   return out.str();

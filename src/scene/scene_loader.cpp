@@ -123,8 +123,10 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   }
   if (!start.primary().angular_momentum.allFinite()) {
     in.fail("angular_velocity",
-            "with this mass and size the angular momentum is beyond double "
-            "precision");
+            "with this mass and size the angular momentum is beyond double precision");
+  }
+  if (!std::isfinite(physics::kinetic_energy(start))) {
+    in.fail("mass", "with this mass and motion the kinetic energy is beyond double precision");
   }
   body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
   if (in.has("forces")) {

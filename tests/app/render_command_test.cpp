@@ -175,6 +175,34 @@ TEST_F(RenderCommand, OddSizeWithVideoIsRejectedButFramesAloneAreFine) {
   EXPECT_EQ(image.width, 161);
 }
 
+// JSON has no infinity: a kinetic energy that leaves double range during the run is null.
+// 1e300 kg at 1e4 m/s has 5e307 J; pushed to 2e4 m/s in half a second it would have 2e308.
+TEST_F(RenderCommand, AnEnergyBeyondDoubleRangeIsNullInTheReport) {
+  const Outcome run = tumble("render -q --no-video " +
+                             write("heavy.toml", R"(name = "heavy"
+duration = 0.5
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1e300
+velocity = [1e4, 0.0, 0.0]
+[[bodies.forces]]
+kind = "force"
+force = [2e304, 0.0, 0.0]
+[render]
+width = 64
+height = 48
+fps = 10
+)")
+                                 .string() +
+                             " -o " + path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string report = read_file(dir_ / "out/heavy/report.json");
+  EXPECT_NE(report.find("\"energy_start\": 5.0000000000000001e+307"), std::string::npos) << report;
+  EXPECT_NE(report.find("\"energy_end\": null"), std::string::npos) << report;
+  EXPECT_EQ(report.find("inf"), std::string::npos) << report;
+}
+
 // Every example scene renders: its first two frames, small.
 TEST_F(RenderCommand, EveryExampleSceneRenders) {
   int scenes = 0;
