@@ -106,7 +106,11 @@ struct VideoEncoder::State {
 std::string VideoEncoder::State::set_up_codec() {
   const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
   if (!x264) return error = path + ": avcodec_find_encoder_by_name: FFmpeg has no libx264 encoder";
-  int code = avformat_alloc_output_context2(&format, nullptr, "mp4", temporary_path.c_str());
+  // "file:" first: FFmpeg reads a path with a colon ("renders:day2/x.mp4", "pipe:1") as a
+  // protocol name, which a file name must never become. The muxer reopens this URL to move the
+  // index to the front, so it is spelt the same way here and in avio_open.
+  int code = avformat_alloc_output_context2(&format, nullptr, "mp4",
+                                            ("file:" + temporary_path).c_str());
   if (code < 0) return fail("avformat_alloc_output_context2", code);
   // No wall-clock creation time and no library version tag in the file: same frames, same bytes.
   format->flags |= AVFMT_FLAG_BITEXACT;
@@ -182,7 +186,7 @@ std::string VideoEncoder::State::set_up_conversion() {
 }
 
 std::string VideoEncoder::State::open_file() {
-  int code = avio_open(&format->pb, temporary_path.c_str(), AVIO_FLAG_WRITE);
+  int code = avio_open(&format->pb, format->url, AVIO_FLAG_WRITE);
   if (code < 0) return fail("avio_open(" + temporary_path + ")", code);
   // faststart: after the last frame the muxer moves the index (moov) in front of the media data
   // (mdat), so a player or browser can start before it has the whole file.

@@ -176,6 +176,18 @@ TEST_F(VideoEncoderTest, WritesH264Yuv420pAtTheRequestedSizeRateAndDuration) {
   EXPECT_EQ(directory_listing(), std::vector<std::string>{"moving.mp4"});  // no temporary left
 }
 
+// FFmpeg reads a relative path whose first part has a colon as protocol:rest ("renders:" would
+// be unknown, "pipe:1" would write to standard output): to tumble a path is always a file.
+TEST_F(VideoEncoderTest, ARelativePathWithAColonIsAFile) {
+  fs::create_directories(directory_ / "renders:day2");
+  const fs::path before = fs::current_path();
+  fs::current_path(directory_);
+  const std::string error = encode("renders:day2/moving.mp4", small_settings(), moving_frames());
+  fs::current_path(before);
+  ASSERT_EQ(error, "");
+  EXPECT_EQ(read_video(path("renders:day2/moving.mp4")).error, "");
+}
+
 TEST_F(VideoEncoderTest, DecodesOneFramePerAddedFrameAtTimeKOverFps) {
   const std::string out = path("moving.mp4");
   ASSERT_EQ(encode(out, small_settings(), moving_frames()), "");
