@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -29,16 +30,35 @@ const std::array<Vec3, 5> kPalette = {Vec3(0.89, 0.40, 0.18), Vec3(0.20, 0.51, 0
                                       Vec3(0.35, 0.67, 0.33), Vec3(0.85, 0.70, 0.20),
                                       Vec3(0.60, 0.40, 0.70)};
 
+// The vector at `key` no longer than `bound`: for places and motions the bounds past which a run
+// counts as blown up (sim/simulation.hpp), since a start beyond them would stop at step 1; for
+// forces and torques the largest double, since their length is used in the physics.
+Vec3 vector_within(TableReader& in, std::string_view key, const Vec3& value, double bound,
+                   const char* unit) {
+  const double length = value.norm();
+  if (!(length <= bound)) {
+    in.fail(key, "its length " + format_number(length) + " " + unit + " is past the " +
+                     format_number(bound) + " " + unit + " tumble can simulate");
+  }
+  return value;
+}
+
+constexpr double kLargest = std::numeric_limits<double>::max();
+
 physics::ForceLaw read_force(TableReader& in) {
   const std::string kind = in.required_string("kind");
   physics::ForceLaw law;
   if (kind == "gravity") {
-    law = physics::Gravity{.acceleration =
-                               in.optional_vector("acceleration", physics::Gravity{}.acceleration)};
+    law = physics::Gravity{
+        .acceleration = vector_within(
+            in, "acceleration", in.optional_vector("acceleration", physics::Gravity{}.acceleration),
+            kLargest, "m/s²")};
   } else if (kind == "force") {
-    law = physics::ConstantForce{.force = in.required_vector("force")};
+    law = physics::ConstantForce{
+        .force = vector_within(in, "force", in.required_vector("force"), kLargest, "N")};
   } else if (kind == "torque") {
-    law = physics::ConstantTorque{.torque = in.required_vector("torque")};
+    law = physics::ConstantTorque{
+        .torque = vector_within(in, "torque", in.required_vector("torque"), kLargest, "N m")};
   } else if (kind == "linear_damping" || kind == "angular_damping") {
     const double coefficient = in.required_number("coefficient");
     require_non_negative(in, "coefficient", coefficient);
@@ -48,8 +68,9 @@ physics::ForceLaw read_force(TableReader& in) {
       law = physics::AngularDamping{.coefficient = coefficient};
     }
   } else if (kind == "force_at_point") {
-    physics::ForceAtPoint push{.force = in.required_vector("force"),
-                               .point = in.required_vector("point")};
+    physics::ForceAtPoint push{
+        .force = vector_within(in, "force", in.required_vector("force"), kLargest, "N"),
+        .point = vector_within(in, "point", in.required_vector("point"), sim::kMaxPosition, "m")};
     push.start = in.optional_number("start", push.start);
     push.end = in.optional_number("end", push.end);
     if (push.start > push.end) {
@@ -58,9 +79,12 @@ physics::ForceLaw read_force(TableReader& in) {
     }
     law = push;
   } else if (kind == "spring") {
-    physics::Spring spring{.anchor = in.required_vector("anchor"),
-                           .attachment = in.optional_vector("attachment", Vec3::Zero()),
-                           .stiffness = in.required_number("stiffness")};
+    physics::Spring spring{
+        .anchor = vector_within(in, "anchor", in.required_vector("anchor"), sim::kMaxPosition, "m"),
+        .attachment = vector_within(in, "attachment",
+                                    in.optional_vector("attachment", Vec3::Zero()),
+                                    sim::kMaxPosition, "m"),
+        .stiffness = in.required_number("stiffness")};
     spring.damping = in.optional_number("damping", 0.0);
     spring.rest_length = in.optional_number("rest_length", 0.0);
     require_non_negative(in, "stiffness", spring.stiffness);
@@ -107,16 +131,9 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   body.velocity = in.optional_vector("velocity", Vec3::Zero());
   body.orientation = in.optional_quaternion("orientation");
   body.angular_velocity = in.optional_vector("angular_velocity", Vec3::Zero());
-  // A start already past the bounds of a blow-up (sim/simulation.hpp) would stop at step 1.
-  const auto within = [&](std::string_view key, const Vec3& value, double bound, const char* unit) {
-    if (value.norm() > bound) {
-      in.fail(key, "its length " + format_number(value.norm()) + " " + unit + " is past the " +
-                       format_number(bound) + " " + unit + " tumble can simulate");
-    }
-  };
-  within("position", body.position, sim::kMaxPosition, "m");
-  within("velocity", body.velocity, sim::kMaxSpeed, "m/s");
-  within("angular_velocity", body.angular_velocity, sim::kMaxAngularSpeed, "rad/s");
+  vector_within(in, "position", body.position, sim::kMaxPosition, "m");
+  vector_within(in, "velocity", body.velocity, sim::kMaxSpeed, "m/s");
+  vector_within(in, "angular_velocity", body.angular_velocity, sim::kMaxAngularSpeed, "rad/s");
   const physics::BodyState start = initial_state(body);
   if (!start.primary().momentum.allFinite()) {
     in.fail("velocity", "with this mass the momentum is beyond double precision");

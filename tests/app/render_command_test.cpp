@@ -203,6 +203,20 @@ fps = 10
   EXPECT_EQ(report.find("inf"), std::string::npos) << report;
 }
 
+// A camera placed where it would look by default (the centre of the motion) has no direction:
+// an error naming what to add, instead of a blank video.
+TEST_F(RenderCommand, ACameraWithNoDirectionIsAnError) {
+  const Outcome run = tumble("render -q " +
+                             write("inside.toml", std::string(kScene) +
+                                                      "[camera]\nposition = [0.0, 0.0, 0.0]\n")
+                                 .string() +
+                             " -o " + path("out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("the view has no direction; give [camera] look_at"), std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 // Every example scene renders: its first two frames, small.
 TEST_F(RenderCommand, EveryExampleSceneRenders) {
   int scenes = 0;
