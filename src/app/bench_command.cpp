@@ -253,7 +253,7 @@ std::string run_gnuplot(const fs::path& directory, const fs::path& script) {
 int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std::FILE* err) {
   std::error_code error_code;
   const fs::path directory = fs::absolute(options.out, error_code);
-  if (options.out.empty() || error_code) {
+  if (error_code) {
     std::fprintf(err, "tumble: --out: expected a folder name, got \"%s\"\n", options.out.c_str());
     return kExitBadInput;
   }

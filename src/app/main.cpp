@@ -45,6 +45,13 @@ std::optional<std::pair<long long, long long>> parse_range(const std::string& te
   return std::make_pair(first, last);
 }
 
+// A file or folder name given on the command line: "" would mean the current folder or nothing.
+const CLI::Validator kNotEmpty(
+    [](std::string& value) {
+      return value.empty() ? std::string("expected a name, got \"\"") : "";
+    },
+    "NAME");
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,6 +65,7 @@ int main(int argc, char** argv) {
       app.add_subcommand("simulate", "Run a scene's physics and write the states as CSV");
   simulate_command->add_option("scene", simulate.scene_path, "Scene file (TOML)")->required();
   simulate_command->add_option("--out", simulate.out, "CSV file to write, or - for stdout")
+      ->check(kNotEmpty)
       ->capture_default_str();
   simulate_command->add_option("--every", simulate.every, "Write a row every N steps")
       ->check(whole_number_in(1, LLONG_MAX, ">= 1"))
@@ -71,6 +79,7 @@ int main(int argc, char** argv) {
   render_command
       ->add_option("-o,--output", render.output_root,
                    "Output folder; files go to OUTPUT/<scene name>/")
+      ->check(kNotEmpty)
       ->capture_default_str();
   render_command->add_option("--width", render.width, "Image width (pixels)")
       ->check(CLI::Range(tumble::scene::kMinImageSide, tumble::scene::kMaxImageSide));
@@ -107,7 +116,8 @@ int main(int argc, char** argv) {
                    "The images match when at most this many pixels differ")
       ->check(whole_number_in(0, LLONG_MAX, ">= 0"))
       ->capture_default_str();
-  diff_command->add_option("--out", diff.out, "Write an image of the differences here (PNG)");
+  diff_command->add_option("--out", diff.out, "Write an image of the differences here (PNG)")
+      ->check(kNotEmpty);
 
   CLI::App* bench_command = app.add_subcommand("bench", "Measure tumble's speed");
   bench_command->require_subcommand(1);
@@ -130,6 +140,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({1, 2, 4, 8, 16}))
       ->capture_default_str();
   bench_pipeline_command->add_option("--out", bench_pipeline.out, "Folder for pipeline.md")
+      ->check(kNotEmpty)
       ->capture_default_str();
 
   BenchAccuracyOptions bench_accuracy;
@@ -137,6 +148,7 @@ int main(int argc, char** argv) {
       "accuracy", "Error against cost of every integrator on hard cases: CSV, Markdown, chart");
   bench_accuracy_command
       ->add_option("--out", bench_accuracy.out, "Folder for accuracy.csv, .md and .png")
+      ->check(kNotEmpty)
       ->capture_default_str();
   bench_accuracy_command->add_flag("--quick", bench_accuracy.quick,
                                    "A reduced sweep (3 cases, 2 step sizes, 1 timing) for tests");

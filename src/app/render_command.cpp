@@ -167,10 +167,6 @@ std::string replace_problem(const fs::path& root, const fs::path& relative) {
 int run_render(const RenderOptions& options, std::FILE* err) {
   const auto start = Clock::now();
   install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
-  if (options.output_root.empty()) {
-    std::fprintf(err, "tumble: -o: expected a folder name\n");
-    return kExitBadInput;
-  }
   // Spelt one way throughout ("a/../b" is "b"), as StagedDirectory spells it.
   const fs::path root = fs::path(options.output_root).lexically_normal();
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);

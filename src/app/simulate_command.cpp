@@ -43,10 +43,6 @@ bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation
 
 int run_simulate(const SimulateOptions& options, std::FILE* err) {
   install_interrupt_handlers();  // from the start: a signal is acted on at the first step
-  if (options.out.empty()) {
-    std::fprintf(err, "tumble: --out: expected a file name, or - for standard output\n");
-    return kExitBadInput;
-  }
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
   if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
     std::fprintf(err, "tumble: %s\n", error->message.c_str());

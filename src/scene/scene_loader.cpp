@@ -35,7 +35,7 @@ const std::array<Vec3, 5> kPalette = {Vec3(0.89, 0.40, 0.18), Vec3(0.20, 0.51, 0
 // forces and torques the largest double, since their length is used in the physics.
 Vec3 vector_within(TableReader& in, std::string_view key, const Vec3& value, double bound,
                    const char* unit) {
-  const double length = value.norm();
+  const double length = value.stableNorm();  // norm() squares: 1e200 would read as infinite
   if (!(length <= bound)) {
     in.fail(key, "its length " + format_number(length) + " " + unit + " is past the " +
                      format_number(bound) + " " + unit + " tumble can simulate");
@@ -49,10 +49,10 @@ physics::ForceLaw read_force(TableReader& in) {
   const std::string kind = in.required_string("kind");
   physics::ForceLaw law;
   if (kind == "gravity") {
-    law = physics::Gravity{
-        .acceleration = vector_within(
-            in, "acceleration", in.optional_vector("acceleration", physics::Gravity{}.acceleration),
-            kLargest, "m/s²")};
+    law = physics::Gravity{.acceleration = vector_within(
+                               in, "acceleration",
+                               in.optional_vector("acceleration", physics::Gravity{}.acceleration),
+                               kLargest, "m/s²")};
   } else if (kind == "force") {
     law = physics::ConstantForce{
         .force = vector_within(in, "force", in.required_vector("force"), kLargest, "N")};
@@ -81,9 +81,9 @@ physics::ForceLaw read_force(TableReader& in) {
   } else if (kind == "spring") {
     physics::Spring spring{
         .anchor = vector_within(in, "anchor", in.required_vector("anchor"), sim::kMaxPosition, "m"),
-        .attachment = vector_within(in, "attachment",
-                                    in.optional_vector("attachment", Vec3::Zero()),
-                                    sim::kMaxPosition, "m"),
+        .attachment =
+            vector_within(in, "attachment", in.optional_vector("attachment", Vec3::Zero()),
+                          sim::kMaxPosition, "m"),
         .stiffness = in.required_number("stiffness")};
     spring.damping = in.optional_number("damping", 0.0);
     spring.rest_length = in.optional_number("rest_length", 0.0);

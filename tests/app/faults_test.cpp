@@ -253,8 +253,9 @@ TEST_F(Faults, ARenderNeverReplacesOrEntersAnotherRendersFiles) {
   write("out/a/frames/notes.txt", "mine");
   const Outcome again = tumble("render " + scene_in("outer", "a") + " -o " + path("out"));
   EXPECT_EQ(again.exit_code, 2) << again.err;
-  EXPECT_NE(again.err.find(path("out/a") + " holds frames/notes.txt, which a render does not write"),
-            std::string::npos)
+  EXPECT_NE(
+      again.err.find(path("out/a") + " holds frames/notes.txt, which a render does not write"),
+      std::string::npos)
       << again.err;
   EXPECT_EQ(read_file(dir_ / "out/a/frames/notes.txt"), "mine");
 }
@@ -268,7 +269,8 @@ TEST_F(Faults, AFolderFilledDuringTheRenderIsNotReplaced) {
   write("out/spin/important.txt", "precious");
   const Outcome run = wait(render);
   EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_NE(run.err.find(path("out/spin") + " exists and is not a tumble render"), std::string::npos)
+  EXPECT_NE(run.err.find(path("out/spin") + " exists and is not a tumble render"),
+            std::string::npos)
       << run.err;
   EXPECT_EQ(read_file(dir_ / "out/spin/important.txt"), "precious");
   EXPECT_EQ(files_below(dir_ / "out"), 1);
@@ -433,6 +435,7 @@ TEST_F(Faults, EveryCommandExitsWithTwoOnBadUsage) {
                                 "render " + scene + " --frames 1:",
                                 "render " + scene + " -o ''",
                                 "simulate " + scene + " --out ''",
+                                "diff " + path("a.png") + " " + path("a.png") + " --out ''",
                                 std::string("check"),
                                 std::string("check a.toml b.toml")}) {
     const Outcome run = tumble(arguments);
