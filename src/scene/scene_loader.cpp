@@ -11,6 +11,7 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -233,6 +234,16 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     if (!names.insert(scene.bodies.back().name).second) {
       body.fail("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
     }
+  }
+  const double body_steps =
+      static_cast<double>(scene.bodies.size()) * (scene.duration / scene.physics.dt);
+  if (body_steps > static_cast<double>(kMaxBodySteps)) {
+    char what[160];
+    std::snprintf(what, sizeof what,
+                  "%zu bodies × duration / dt asks for %.3g body steps, more than the limit of "
+                  "%.0e",
+                  scene.bodies.size(), body_steps, static_cast<double>(kMaxBodySteps));
+    fail_on_dt(what);
   }
   read_render_tables(in, scene);
   in.reject_unknown_keys();
