@@ -2,31 +2,42 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdint>
 #include <cstring>
+#include <ctime>
 
 namespace tumble::app {
 namespace {
 
 std::atomic<int> received{0};
+std::atomic<std::int64_t> received_at{0};  // ns on the monotonic clock
 static_assert(std::atomic<int>::is_always_lock_free, "read from a signal handler");
+static_assert(std::atomic<std::int64_t>::is_always_lock_free, "read from a signal handler");
+
+// A second signal within this time repeats the first request: `timeout` sends its signal to the
+// child and then to the whole process group, so one stop arrives twice at once.
+constexpr std::int64_t kRepeatNanoseconds = 2'000'000'000;
 
 extern "C" void on_interrupt(int signal) {
-  received.store(signal);
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  const std::int64_t ns = std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
+  if (received.load() == 0) {
+    received_at.store(ns);
+    received.store(signal);
+  } else if (ns - received_at.load() > kRepeatNanoseconds) {
+    std::signal(signal, SIG_DFL);  // asked again, later: stop at once, as without tumble's handler
+    std::raise(signal);
+  }
 }
 
 }  // namespace
-
-void ignore_write_signals() {
-  std::signal(SIGXFSZ, SIG_IGN);
-  std::signal(SIGPIPE, SIG_IGN);
-}
 
 void install_interrupt_handlers() {
   struct sigaction action;
   std::memset(&action, 0, sizeof action);
   action.sa_handler = on_interrupt;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND;  // the second signal gets the default action: it kills
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 }

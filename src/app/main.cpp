@@ -1,8 +1,10 @@
 // The command line: parses arguments and hands them to the commands in src/app/.
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <charconv>
 #include <climits>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <utility>
 
@@ -10,7 +12,7 @@
 #include "app/bench_pipeline.hpp"
 #include "app/check_command.hpp"
 #include "app/diff_command.hpp"
-#include "app/interrupt.hpp"
+#include "app/process.hpp"
 #include "app/render_command.hpp"
 #include "app/simulate_command.hpp"
 #include "io/png_io.hpp"
@@ -56,7 +58,7 @@ const CLI::Validator kNotEmpty(
 
 int main(int argc, char** argv) {
   using namespace tumble::app;
-  ignore_write_signals();
+  set_up_process();
   CLI::App app{"tumble: rigid-body scenes to frames and video, headless"};
   app.require_subcommand(1);
 
@@ -192,7 +194,14 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   };
   try {
-    return run_parsed();
+    const int code = run_parsed();
+    // What a command printed must have reached standard output (`tumble check s.toml >
+    // /dev/full` must not succeed). A command that failed has said why already.
+    if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && code == kExitOk) {
+      std::fprintf(stderr, "tumble: error writing to standard output: %s\n", std::strerror(errno));
+      return kExitBadInput;
+    }
+    return code;
   } catch (const std::bad_alloc&) {
     std::fputs("tumble: out of memory\n", stderr);
   } catch (const std::exception& error) {  // a last resort: each command reports its own errors

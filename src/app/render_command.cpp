@@ -219,8 +219,7 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   // Everything is written into a hidden folder beside the final one and swapped in at the end:
   // a failed or interrupted render leaves the earlier output as it was.
   const fs::path directory = root / scene.output.directory;
-  if (const std::string problem = replace_problem(root, scene.output.directory);
-      !problem.empty()) {
+  if (const std::string problem = replace_problem(root, scene.output.directory); !problem.empty()) {
     std::fprintf(err, "tumble: %s\n", problem.c_str());
     return kExitBadInput;
   }

@@ -52,9 +52,18 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
   print_stability_warnings(scene, err);
 
   std::unique_ptr<io::AtomicFile> file;
+  double time = 0.0;  // s: how far the run got
+  // Either leaves the file unwritten: AtomicFile removes its temporary file when not committed.
+  const auto stopped = [&](int signal) {
+    std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", signal_name(signal),
+                 time, scene.duration,
+                 file ? (options.out + " was not written").c_str() : "output incomplete");
+    return kExitInterrupted + signal;
+  };
   std::FILE* out = stdout;
   if (options.out != "-") {
     file = std::make_unique<io::AtomicFile>(options.out);
+    if (const int signal = interrupt_signal()) return stopped(signal);  // a FIFO's open, cut short
     if (!file->ok()) {
       std::fprintf(err, "tumble: %s\n", file->error().c_str());
       return kExitBadInput;
@@ -67,19 +76,16 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
   bool ok = io::write_state_header(out) && write_rows(out, scene, simulation);
   for (std::int64_t n = 1; n <= steps && ok; ++n) {
     simulation.step();
-    // Either leaves the file unwritten: AtomicFile removes its temporary file when not committed.
-    if (const int signal = interrupt_signal()) {
-      std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", signal_name(signal),
-                   simulation.time(), scene.duration,
-                   file ? (options.out + " was not written").c_str() : "output incomplete");
-      return kExitInterrupted + signal;
-    }
+    time = simulation.time();
+    if (const int signal = interrupt_signal()) return stopped(signal);
     if (const auto& blow_up = simulation.blow_up()) {
       std::fprintf(err, "tumble: %s\n", blow_up_message(scene, *blow_up).c_str());
       return kExitBadInput;
     }
     if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
   }
+  // A write blocked on a full pipe and cut short by the signal fails with EINTR: a stop too.
+  if (const int signal = interrupt_signal(); signal && !ok) return stopped(signal);
   if (file) {
     ok = file->commit() && ok;
     if (!ok) std::fprintf(err, "tumble: %s\n", file->error().c_str());

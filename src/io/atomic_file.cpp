@@ -1,11 +1,14 @@
 #include "io/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <filesystem>
+#include <utility>
 
 namespace tumble::io {
 namespace {
@@ -15,15 +18,38 @@ namespace fs = std::filesystem;
 // How a path is written.
 struct Target {
   std::string path;     // the file to create or replace: the path, or the name its links lead to
-  int stream = -1;      // the standard stream (1 or 2) the path is, when it is one of them
+  int stream = -1;      // the open file descriptor the path names, when it names one
   bool direct = false;  // written as it is: a stream, FIFO, device or folder (no rename over it)
+  int mode = -1;        // permission bits of the regular file replaced, or -1 for a new file
+  bool loop = false;    // a chain of links too long to follow
 };
 
+// N for "/dev/fd/N", "/proc/self/fd/N", and 0, 1, 2 for /dev/stdin, stdout and stderr: a file
+// descriptor tumble was handed (`--out /dev/fd/3 3>>log`), whatever it leads to. -1 otherwise.
+int descriptor_named(const std::string& path) {
+  for (const auto& [name, number] :
+       {std::pair<const char*, int>{"/dev/stdin", 0}, {"/dev/stdout", 1}, {"/dev/stderr", 2}}) {
+    if (path == name) return number;
+  }
+  for (const std::string prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    if (path.size() <= prefix.size() || path.rfind(prefix, 0) != 0) continue;
+    int number = 0;
+    const char* const end = path.data() + path.size();
+    const auto [after, error] = std::from_chars(path.data() + prefix.size(), end, number);
+    if (error == std::errc() && after == end) return number;
+  }
+  return -1;
+}
+
 Target target_of(const std::string& path) {
+  if (const int stream = descriptor_named(path); stream >= 0 && ::fcntl(stream, F_GETFD) != -1) {
+    return {path, stream, true};
+  }
   struct stat followed;
   if (::stat(path.c_str(), &followed) == 0) {
     if (!S_ISREG(followed.st_mode)) return {path, -1, true};
-    // /dev/stdout into a file: write through the stream, which keeps an append (>>) an append.
+    // Standard output or error spelt another way: write through the stream, which keeps an
+    // append (>>) an append.
     for (const int stream : {STDOUT_FILENO, STDERR_FILENO}) {
       struct stat stream_status;
       if (::fstat(stream, &stream_status) == 0 && stream_status.st_dev == followed.st_dev &&
@@ -34,15 +60,19 @@ Target target_of(const std::string& path) {
   }
   // A new file or a regular one, perhaps named by a chain of links: replace what they lead to,
   // so that a link stays a link and a dangling one comes to name the new file.
+  Target target{.path = path};
   fs::path resolved = path;
-  for (int hop = 0; hop < 40; ++hop) {  // 40: the kernel's own limit on a chain of links
-    std::error_code error;
-    if (!fs::is_symlink(fs::symlink_status(resolved, error))) break;
+  std::error_code error;
+  int hops = 0;
+  for (; hops < 40 && fs::is_symlink(fs::symlink_status(resolved, error)); ++hops) {
     const fs::path link = fs::read_symlink(resolved, error);
     if (error) break;
     resolved = link.is_absolute() ? link : resolved.parent_path() / link;
   }
-  return {resolved.string(), -1, false};
+  target.loop = hops == 40;  // 40: the kernel's own limit on a chain of links
+  target.path = resolved.string();
+  if (::stat(target.path.c_str(), &followed) == 0) target.mode = followed.st_mode & 07777;
+  return target;
 }
 
 }  // namespace
@@ -51,17 +81,28 @@ AtomicFile::AtomicFile(std::string path, Durability durability)
     : path_(std::move(path)), durability_(durability) {
   const Target target = target_of(path_);
   target_path_ = target.path;
-  if (target.stream >= 0) {
+  if (target.loop) {
+    errno = ELOOP;
+    fail("cannot create");
+  } else if (target.stream >= 0) {
     const int copy = ::dup(target.stream);
     file_ = copy < 0 ? nullptr : ::fdopen(copy, "wb");
     if (copy >= 0 && !file_) ::close(copy);
+    if (!file_) fail("cannot write");
   } else if (target.direct) {
     file_ = std::fopen(path_.c_str(), "wb");
+    if (!file_) fail("cannot create");
   } else {
     temporary_path_ = target_path_ + ".tmp-" + std::to_string(::getpid());
     file_ = std::fopen(temporary_path_.c_str(), "wb");
+    if (!file_ && target.mode >= 0) {
+      fail("cannot create the temporary file " + temporary_path_ + " to replace it");
+    } else if (!file_) {
+      fail("cannot create");
+    } else if (target.mode >= 0) {
+      ::fchmod(::fileno(file_), static_cast<mode_t>(target.mode));  // keep its permissions
+    }
   }
-  if (!file_) fail("cannot create");
 }
 
 AtomicFile::~AtomicFile() {

@@ -101,6 +101,21 @@ TEST_F(Faults, SigtermDuringARenderKeepsTheEarlierOutputWhole) {
   expect_earlier_output_untouched();
 }
 
+// `timeout` sends its signal to tumble and then to the process group: the second one, at once,
+// is the same request and must not cut the clean-up short.
+TEST_F(Faults, ARepeatedSignalStillStopsCleanly) {
+  const pid_t render = start("render " + write("long.toml", spin_scene(600.0)).string() + " -o " +
+                             path("out") + " -q");
+  ASSERT_TRUE(wait_for_frames(dir_ / "out", 3)) << "the render never got going";
+  ASSERT_EQ(::kill(render, SIGTERM), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ::kill(render, SIGTERM);  // may find it gone already
+  const Outcome run = wait(render);
+  EXPECT_EQ(run.exit_code, 143) << run.err;
+  EXPECT_NE(run.err.find("tumble: stopped by SIGTERM after "), std::string::npos) << run.err;
+  EXPECT_EQ(files_below(dir_ / "out"), 0) << "an interrupted render left files";
+}
+
 TEST_F(Faults, SigintStopsASimulationWithoutWritingItsFile) {
   // 10^8 steps: far longer than the test waits.
   const fs::path scene = write("long.toml", R"(duration = 10000.0
@@ -308,6 +323,19 @@ TEST_F(Faults, BenchPipelineLeavesTheUsersFilesAlone) {
   EXPECT_EQ(read_file(dir_ / "out/pipeline/thesis.tex"), "mine");
   EXPECT_NE(read_file(dir_ / "out/pipeline.md").find("| pipelined |"), std::string::npos);
   EXPECT_EQ(files_below(dir_ / "out"), 2);
+}
+
+// With standard error closed, the MP4 would get descriptor 2, and the progress text would be
+// written into the video: the same bytes as a render with standard error open.
+TEST_F(Faults, AClosedStandardErrorDoesNotEndUpInTheVideo) {
+  const std::string scene = write("short.toml", spin_scene(2.0)).string();
+  const std::string closed =
+      std::string(TUMBLE_EXECUTABLE) + " render " + scene + " -o " + path("closed") + " 2>&-";
+  ASSERT_EQ(std::system(closed.c_str()), 0);
+  ASSERT_EQ(tumble("render -q " + scene + " -o " + path("open")).exit_code, 0);
+  const std::string video = read_file(dir_ / "open/spin/spin.mp4");
+  EXPECT_FALSE(video.empty());
+  EXPECT_TRUE(read_file(dir_ / "closed/spin/spin.mp4") == video) << "the videos differ";
 }
 
 // Writing through /dev/stdout (a stream, not a file to replace), and through a link to a file.

@@ -1,7 +1,9 @@
 #include "io/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -36,7 +38,9 @@ class AtomicFileTest : public ::testing::Test {
   }
   int entries() const {
     int count = 0;
-    for (const auto& entry : fs::directory_iterator(root_)) count += entry.exists() ? 1 : 0;
+    for (auto entry = fs::directory_iterator(root_); entry != fs::directory_iterator(); ++entry) {
+      ++count;
+    }
     return count;
   }
 
@@ -96,6 +100,42 @@ TEST_F(AtomicFileTest, APathThroughProcIsStillReplacedWhole) {
   ASSERT_TRUE(file.commit()) << file.error();
   EXPECT_EQ(get(root_ / "a.csv"), "rows");
   EXPECT_EQ(entries(), 1);
+}
+
+// `--out /dev/fd/N N>>log`: the descriptor tumble was handed is written, so an append appends.
+TEST_F(AtomicFileTest, ADescriptorPathWritesThroughTheDescriptor) {
+  std::ofstream(root_ / "log.csv") << "earlier\n";
+  const int descriptor = ::open((root_ / "log.csv").c_str(), O_WRONLY | O_APPEND);
+  ASSERT_GE(descriptor, 0);
+  for (const std::string spelling : {"/dev/fd/", "/proc/self/fd/"}) {
+    AtomicFile file(spelling + std::to_string(descriptor));
+    EXPECT_TRUE(write(file, spelling + "\n")) << file.error();
+  }
+  ::close(descriptor);
+  EXPECT_EQ(get(root_ / "log.csv"), "earlier\n/dev/fd/\n/proc/self/fd/\n");
+  EXPECT_EQ(entries(), 1);
+}
+
+TEST_F(AtomicFileTest, ALoopOfLinksIsAnError) {
+  fs::create_symlink("b.csv", root_ / "a.csv");
+  fs::create_symlink("a.csv", root_ / "b.csv");
+  AtomicFile file((root_ / "a.csv").string());
+  EXPECT_FALSE(file.ok());
+  EXPECT_EQ(file.error(),
+            (root_ / "a.csv").string() + ": cannot create: Too many levels of symbolic links");
+  EXPECT_TRUE(fs::is_symlink(root_ / "a.csv"));
+  EXPECT_EQ(entries(), 2);
+}
+
+// A replaced file keeps its permission bits: a private file must not become world-readable.
+TEST_F(AtomicFileTest, AReplacedFileKeepsItsPermissions) {
+  std::ofstream(root_ / "private.csv") << "old";
+  fs::permissions(root_ / "private.csv", fs::perms::owner_read | fs::perms::owner_write);
+  AtomicFile file((root_ / "private.csv").string());
+  ASSERT_TRUE(write(file, "new")) << file.error();
+  EXPECT_EQ(get(root_ / "private.csv"), "new");
+  EXPECT_EQ(fs::status(root_ / "private.csv").permissions(),
+            fs::perms::owner_read | fs::perms::owner_write);
 }
 
 // A FIFO (like /dev/stdout on a pipe) is written through, not replaced by a regular file.
