@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <variant>
 
 #include <algorithm>
+#include <string_view>
 #include <thread>
 
 #include "app/exit_codes.hpp"
@@ -109,6 +111,15 @@ std::string write_text_file(const std::string& path, const std::string& text) {
   return file.commit() ? std::string() : file.error();
 }
 
+// Whether `folder` is a render's: it holds a report.json as tumble writes them (report_json).
+bool is_render_folder(const fs::path& folder) {
+  constexpr std::string_view kStart = "{\n  \"scene\": ";
+  std::ifstream report(folder / "report.json", std::ios::binary);
+  char start[kStart.size()] = {};
+  report.read(start, static_cast<std::streamsize>(kStart.size()));
+  return std::string_view(start, static_cast<std::size_t>(report.gcount())) == kStart;
+}
+
 // The first thing in a render's folder that a render does not write: it writes report.json,
 // <scene name>.mp4 and frames/frame_NNNNN.png, and nothing else. "" when there is none.
 std::string foreign_entry(const fs::path& directory) {
@@ -138,22 +149,28 @@ std::string foreign_entry(const fs::path& directory) {
 std::string replace_problem(const fs::path& root, const fs::path& relative) {
   const std::string advice =
       "; a render replaces its folder as a whole, so choose another -o or [output] directory";
+  const auto inside_render = [&](const fs::path& folder) {
+    return folder.string() + " is a render's folder, which a render inside it would change" +
+           advice;
+  };
   std::error_code error;
+  // The output root and every folder above it, then each folder down to the scene's.
+  for (fs::path above = fs::absolute(root, error); !above.empty(); above = above.parent_path()) {
+    if (is_render_folder(above)) return inside_render(above);
+    if (above == above.root_path()) break;
+  }
   fs::path directory = root;
   for (const fs::path& part : relative) {
-    if (directory != root && fs::exists(directory / "report.json", error)) {
-      return directory.string() + " is another render's folder, which a render inside it would " +
-             "change" + advice;
-    }
+    if (directory != root && is_render_folder(directory)) return inside_render(directory);
     directory /= part;
     const fs::file_status status = fs::symlink_status(directory, error);
     if (!fs::exists(status)) return {};
     if (fs::is_symlink(status)) return directory.string() + " is a symbolic link" + advice;
     if (!fs::is_directory(status)) return directory.string() + " exists and is not a folder";
   }
-  if (!fs::exists(directory / "report.json", error) && !fs::is_empty(directory, error)) {
+  if (!is_render_folder(directory) && !fs::is_empty(directory, error)) {
     return "output folder " + directory.string() + " exists and is not a tumble render (it has " +
-           "no report.json)" + advice + ", or remove it";
+           "no report.json of tumble's)" + advice + ", or remove it";
   }
   if (const std::string foreign = foreign_entry(directory); !foreign.empty()) {
     return "output folder " + directory.string() + " holds " + foreign +

@@ -263,8 +263,15 @@ TEST_F(Faults, ARenderNeverReplacesOrEntersAnotherRendersFiles) {
   ASSERT_EQ(tumble("render " + scene_in("outer", "a") + " -o " + path("out") + " -q").exit_code, 0);
   const Outcome inner = tumble("render " + scene_in("inner", "a/b") + " -o " + path("out"));
   EXPECT_EQ(inner.exit_code, 2) << inner.err;
-  EXPECT_NE(inner.err.find(path("out/a") + " is another render's folder"), std::string::npos)
+  EXPECT_NE(inner.err.find(path("out/a") + " is a render's folder"), std::string::npos)
       << inner.err;
+  // Nor with -o pointing into it, at any depth.
+  for (const std::string& root : {path("out/a"), path("out/a/frames")}) {
+    const Outcome below = tumble("render " + scene_in("outer", "a") + " -o " + root);
+    EXPECT_EQ(below.exit_code, 2) << below.err;
+    EXPECT_NE(below.err.find(path("out/a") + " is a render's folder"), std::string::npos)
+        << below.err;
+  }
   write("out/a/frames/notes.txt", "mine");
   const Outcome again = tumble("render " + scene_in("outer", "a") + " -o " + path("out"));
   EXPECT_EQ(again.exit_code, 2) << again.err;
