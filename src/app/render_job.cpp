@@ -61,7 +61,11 @@ RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
 
   const std::unique_ptr<render::Renderer> renderer =
       render::Renderer::create(settings, plan.shader_directory, result.error);
-  if (!renderer) return result;
+  if (!renderer) {
+    // Mostly what the scene asks of this OpenGL ([render] msaa beyond its samples): name it.
+    result.error = scene.source_path + ": " + result.error;
+    return result;
+  }
   result.renderer = renderer->description();
 
   std::unique_ptr<io::VideoEncoder> encoder;

@@ -57,9 +57,10 @@ Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
   if (scene.camera.position) {
     out.camera.position = *scene.camera.position;
     if ((out.camera.position - out.camera.look_at).norm() == 0.0) {
-      throw RenderStopped(
-          "[camera] position is the centre of the motion, where the camera looks when look_at "
-          "is not given: the view has no direction; give [camera] look_at");
+      throw RenderStopped(scene.source_path +
+                          ": [camera] position is the centre of the motion, where the camera "
+                          "looks when look_at is not given: the view has no direction; give "
+                          "[camera] look_at");
     }
   } else {
     // Far enough that the bounding sphere spans 65% of the frame's height (R / d = sin of the

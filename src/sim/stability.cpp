@@ -239,6 +239,7 @@ std::optional<double> stability_limit(Integrator integrator, const LinearMode& m
   const double scale = std::max(mode.damping_rate, mode.frequency);  // 1/s
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   if (scale <= 0.0) return kInfinity;
+  if (!std::isfinite(scale)) return std::nullopt;  // a rate past double range: nothing to say
   // Walk up in steps of 1% of h until the map first grows, then bisect: the first crossing.
   constexpr double kSmallest = 1e-6, kLargest = 100.0;  // h · scale
   if (!stable(*method, mode, kSmallest / scale)) return 0.0;

@@ -137,6 +137,15 @@ TEST(CheckStep, WarnsExactlyBeyondTheDampingLimits) {
   expect_warns_exactly_beyond(spun, at_rest(spun), Integrator::rk4, 2.785, rate, "c/I_min");
 }
 
+// A damping rate past double range (c = 1.7e308 N m s over I_min < 1) says nothing rather than
+// something false: splitting damps exactly at any rate, and no step is 0 s.
+TEST(CheckStep, ARateBeyondDoubleRangeGivesNoFalseWarning) {
+  EXPECT_FALSE(stability_limit(Integrator::splitting, LinearMode{.damping_rate = INFINITY}));
+  const physics::BodyConstants box = physics::box_constants(1.0, Vec3(0.3, 1.0, 2.0));
+  const BodyModel spun{.constants = box, .forces = {physics::AngularDamping{.coefficient = 1.7e308}}};
+  EXPECT_TRUE(check_step(spun, at_rest(spun), Integrator::splitting, 0.01, 1.0).empty());
+}
+
 TEST(CheckStep, WarnsExactlyBeyondTheSpringLimit) {
   const physics::BodyConstants cube = physics::cube_constants(2.0, 1.0);
   const BodyModel model{.constants = cube,
