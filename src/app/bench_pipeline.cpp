@@ -58,6 +58,12 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
     return kExitBadInput;
   }
+  if (options.width % 2 != 0 || options.height % 2 != 0) {
+    std::fprintf(err,
+                 "tumble: --width and --height must be even: the benchmark encodes H.264 "
+                 "yuv420p, which stores colour per 2×2 pixels\n");
+    return kExitBadInput;
+  }
   scene::Scene scene = std::get<scene::Scene>(loaded);
   scene.render.width = options.width;
   scene.render.height = options.height;

@@ -19,9 +19,10 @@ int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err) {
   const std::vector<std::string> warnings = stability_warnings(scene);
   for (const std::string& line : warnings) std::fprintf(out, "tumble: warning: %s\n", line.c_str());
   const std::size_t bodies = scene.bodies.size();
-  std::fprintf(out, "%s: valid: %zu bod%s, %lld steps of %g s with %s; %zu warning%s\n",
+  const std::int64_t steps = scene::step_count(scene);
+  std::fprintf(out, "%s: valid: %zu bod%s, %lld step%s of %g s with %s; %zu warning%s\n",
                options.scene_path.c_str(), bodies, bodies == 1 ? "y" : "ies",
-               static_cast<long long>(scene::step_count(scene)), scene.physics.dt,
+               static_cast<long long>(steps), steps == 1 ? "" : "s", scene.physics.dt,
                std::string(physics::integrator_name(scene.physics.integrator)).c_str(),
                warnings.size(), warnings.size() == 1 ? "" : "s");
   return kExitOk;

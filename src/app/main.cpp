@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
   render_command->add_option("--height", render.height, "Image height (pixels)")
       ->check(CLI::Range(tumble::scene::kMinImageSide, tumble::scene::kMaxImageSide));
   render_command->add_option("--fps", render.fps, "Frames per second")->check(CLI::Range(1, 240));
-  render_command->add_option("--frames", frame_range, "Render frames A to B-1 only (A:B)");
+  render_command->add_option("--frames", frame_range, "Render frames A to B-1 only (A:B)")
+      ->check(kNotEmpty);
   render_command->add_flag("!--no-frames", render.frames, "Do not write PNG frames");
   render_command->add_flag("!--no-video", render.video, "Do not write the MP4");
   render_command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");

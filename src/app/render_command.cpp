@@ -32,19 +32,51 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// The length of the well-formed UTF-8 sequence at text[at] (RFC 3629: no overlong forms, no
+// surrogates, nothing past U+10FFFF), or 0.
+std::size_t utf8_length(const std::string& text, std::size_t at) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[at + i]); };
+  const unsigned char lead = byte(0);
+  const std::size_t length = lead < 0xc2   ? 0
+                             : lead < 0xe0 ? 2
+                             : lead < 0xf0 ? 3
+                             : lead < 0xf5 ? 4
+                                           : 0;
+  if (length == 0 || at + length > text.size()) return 0;
+  for (std::size_t i = 1; i < length; ++i) {
+    if ((byte(i) & 0xc0) != 0x80) return 0;
+  }
+  const unsigned char second = byte(1);
+  if ((lead == 0xe0 && second < 0xa0) || (lead == 0xed && second > 0x9f) ||
+      (lead == 0xf0 && second < 0x90) || (lead == 0xf4 && second > 0x8f)) {
+    return 0;
+  }
+  return length;
+}
+
+// A JSON string: quotes, backslashes and control characters escaped, and bytes that are not
+// UTF-8 (a file name can hold any) replaced by U+FFFD, so that the report stays valid JSON.
 std::string json_string(const std::string& text) {
   std::string out = "\"";
-  for (const char c : text) {
+  for (std::size_t at = 0; at < text.size();) {
+    const char c = text[at];
+    const auto byte = static_cast<unsigned char>(c);
     if (c == '"' || c == '\\') {
       out += '\\';
       out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
+    } else if (byte < 0x20) {
       char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", byte);
       out += escaped;
+    } else if (byte >= 0x80) {
+      const std::size_t length = utf8_length(text, at);
+      out += length ? text.substr(at, length) : "\\ufffd";
+      at += length ? length : 1;
+      continue;
     } else {
       out += c;
     }
+    ++at;
   }
   return out + "\"";
 }
@@ -229,7 +261,13 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   }
   const std::string shader_directory = find_shader_directory();
   if (shader_directory.empty()) {
-    std::fprintf(err, "tumble: cannot find the shaders/ folder (set TUMBLE_SHADER_DIR)\n");
+    const char* asked = std::getenv("TUMBLE_SHADER_DIR");
+    std::fprintf(err, "tumble: %s%s\n",
+                 asked ? "no shaders (body.vert) in TUMBLE_SHADER_DIR="
+                       : "cannot find the shaders/ "
+                         "folder (set "
+                         "TUMBLE_SHADER_DIR)",
+                 asked ? asked : "");
     return kExitBadInput;
   }
 

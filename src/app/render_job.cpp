@@ -25,9 +25,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 std::string find_shader_directory() {
-  std::vector<fs::path> candidates;
-  if (const char* env = std::getenv("TUMBLE_SHADER_DIR")) candidates.emplace_back(env);
   std::error_code ignored;
+  // Asked for by name: that folder or none, never a silent fall-back to another one.
+  if (const char* env = std::getenv("TUMBLE_SHADER_DIR")) {
+    return fs::exists(fs::path(env) / "body.vert", ignored) ? std::string(env) : std::string();
+  }
+  std::vector<fs::path> candidates;
   const fs::path executable = fs::read_symlink("/proc/self/exe", ignored);
   if (!executable.empty()) {
     candidates.push_back(executable.parent_path().parent_path() / "share/tumble/shaders");

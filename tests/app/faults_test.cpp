@@ -464,6 +464,7 @@ TEST_F(Faults, EveryCommandExitsWithTwoOnBadUsage) {
                                 std::string("diff x y --threshold 300"),
                                 std::string("bench"),
                                 std::string("bench pipeline --width 1"),
+                                std::string("bench pipeline --width 65"),
                                 std::string("bench accuracy --bogus"),
                                 std::string("bench accuracy --out ''"),
                                 "render " + scene + " --frames 99999999999999999999:3",

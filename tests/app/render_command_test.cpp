@@ -206,15 +206,25 @@ fps = 10
 // A camera placed where it would look by default (the centre of the motion) has no direction:
 // an error naming what to add, instead of a blank video.
 TEST_F(RenderCommand, ACameraWithNoDirectionIsAnError) {
-  const Outcome run = tumble("render -q " +
-                             write("inside.toml", std::string(kScene) +
-                                                      "[camera]\nposition = [0.0, 0.0, 0.0]\n")
-                                 .string() +
-                             " -o " + path("out"));
+  const Outcome run =
+      tumble("render -q " +
+             write("inside.toml", std::string(kScene) + "[camera]\nposition = [0.0, 0.0, 0.0]\n")
+                 .string() +
+             " -o " + path("out"));
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("the view has no direction; give [camera] look_at"), std::string::npos)
       << run.err;
   EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// A file name may hold any bytes; report.json must stay valid JSON: UTF-8 kept, the rest U+FFFD.
+TEST_F(RenderCommand, TheReportIsValidJsonWhateverTheSceneFileIsCalled) {
+  const fs::path scene = write("caf\xc3\xa9 \"\xff\".toml", kScene);
+  const Outcome run =
+      tumble("render -q --frames 0:1 --no-video '" + scene.string() + "' -o " + path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string report = read_file(dir_ / "out/spin/report.json");
+  EXPECT_NE(report.find("caf\xc3\xa9 \\\"\\ufffd\\\".toml\""), std::string::npos) << report;
 }
 
 // Every example scene renders: its first two frames, small.

@@ -142,7 +142,8 @@ TEST(CheckStep, WarnsExactlyBeyondTheDampingLimits) {
 TEST(CheckStep, ARateBeyondDoubleRangeGivesNoFalseWarning) {
   EXPECT_FALSE(stability_limit(Integrator::splitting, LinearMode{.damping_rate = INFINITY}));
   const physics::BodyConstants box = physics::box_constants(1.0, Vec3(0.3, 1.0, 2.0));
-  const BodyModel spun{.constants = box, .forces = {physics::AngularDamping{.coefficient = 1.7e308}}};
+  const BodyModel spun{.constants = box,
+                       .forces = {physics::AngularDamping{.coefficient = 1.7e308}}};
   EXPECT_TRUE(check_step(spun, at_rest(spun), Integrator::splitting, 0.01, 1.0).empty());
 }
 
