@@ -4,16 +4,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <variant>
 
 #include <algorithm>
-#include <string_view>
 #include <thread>
 
 #include "app/exit_codes.hpp"
 #include "app/interrupt.hpp"
+#include "app/output_folder.hpp"
 #include "app/progress.hpp"
 #include "app/render_job.hpp"
 #include "app/stability_report.hpp"
@@ -104,6 +103,7 @@ std::string report_json(const scene::Scene& scene, const RenderPlan& plan,
   const double efficiency = p.wall > 0 ? p.process_cpu / cores / p.wall : 0.0;
   std::ostringstream out;
   out.precision(17);
+  // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
   out << "{\n  \"scene\": " << json_string(scene.name)
       << ",\n  \"scene_file\": " << json_string(scene.source_path)
       << ",\n  \"width\": " << scene.render.width << ",\n  \"height\": " << scene.render.height
@@ -141,74 +141,6 @@ std::string write_text_file(const std::string& path, const std::string& text) {
   if (!file.ok()) return file.error();
   std::fwrite(text.data(), 1, text.size(), file.stream());
   return file.commit() ? std::string() : file.error();
-}
-
-// Whether `folder` is a render's: it holds a report.json as tumble writes them (report_json).
-bool is_render_folder(const fs::path& folder) {
-  constexpr std::string_view kStart = "{\n  \"scene\": ";
-  std::ifstream report(folder / "report.json", std::ios::binary);
-  char start[kStart.size()] = {};
-  report.read(start, static_cast<std::streamsize>(kStart.size()));
-  return std::string_view(start, static_cast<std::size_t>(report.gcount())) == kStart;
-}
-
-// The first thing in a render's folder that a render does not write: it writes report.json,
-// <scene name>.mp4 and frames/frame_NNNNN.png, and nothing else. "" when there is none.
-std::string foreign_entry(const fs::path& directory) {
-  std::error_code error;
-  for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_symlink(error)) return name;
-    if (name == "frames" && entry.is_directory(error)) {
-      for (const fs::directory_entry& frame : fs::directory_iterator(entry.path(), error)) {
-        const std::string frame_name = frame.path().filename().string();
-        if (frame.is_symlink(error) || !frame.is_regular_file(error) ||
-            frame_name.rfind("frame_", 0) != 0 || frame.path().extension() != ".png") {
-          return "frames/" + frame_name;
-        }
-      }
-    } else if (!entry.is_regular_file(error) ||
-               (name != "report.json" && entry.path().extension() != ".mp4")) {
-      return name;
-    }
-  }
-  return error ? "(unreadable: " + error.message() + ")" : std::string();
-}
-
-// Why the scene's folder `relative` below the output root must not be replaced by a render
-// ("" when it may): tumble replaces its output folder as a whole, so it only ever replaces one
-// of its own, and never follows a link below the root out of it.
-std::string replace_problem(const fs::path& root, const fs::path& relative) {
-  const std::string advice =
-      "; a render replaces its folder as a whole, so choose another -o or [output] directory";
-  const auto inside_render = [&](const fs::path& folder) {
-    return folder.string() + " is a render's folder, which a render inside it would change" +
-           advice;
-  };
-  std::error_code error;
-  // The output root and every folder above it, then each folder down to the scene's.
-  for (fs::path above = fs::absolute(root, error); !above.empty(); above = above.parent_path()) {
-    if (is_render_folder(above)) return inside_render(above);
-    if (above == above.root_path()) break;
-  }
-  fs::path directory = root;
-  for (const fs::path& part : relative) {
-    if (directory != root && is_render_folder(directory)) return inside_render(directory);
-    directory /= part;
-    const fs::file_status status = fs::symlink_status(directory, error);
-    if (!fs::exists(status)) return {};
-    if (fs::is_symlink(status)) return directory.string() + " is a symbolic link" + advice;
-    if (!fs::is_directory(status)) return directory.string() + " exists and is not a folder";
-  }
-  if (!is_render_folder(directory) && !fs::is_empty(directory, error)) {
-    return "output folder " + directory.string() + " exists and is not a tumble render (it has " +
-           "no report.json of tumble's)" + advice + ", or remove it";
-  }
-  if (const std::string foreign = foreign_entry(directory); !foreign.empty()) {
-    return "output folder " + directory.string() + " holds " + foreign +
-           ", which a render does not write" + advice + ", or move it";
-  }
-  return {};
 }
 
 }  // namespace
@@ -261,13 +193,11 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   }
   const std::string shader_directory = find_shader_directory();
   if (shader_directory.empty()) {
-    const char* asked = std::getenv("TUMBLE_SHADER_DIR");
-    std::fprintf(err, "tumble: %s%s\n",
-                 asked ? "no shaders (body.vert) in TUMBLE_SHADER_DIR="
-                       : "cannot find the shaders/ "
-                         "folder (set "
-                         "TUMBLE_SHADER_DIR)",
-                 asked ? asked : "");
+    if (const char* asked = std::getenv("TUMBLE_SHADER_DIR")) {
+      std::fprintf(err, "tumble: no shaders (body.vert) in TUMBLE_SHADER_DIR=%s\n", asked);
+    } else {
+      std::fprintf(err, "tumble: cannot find the shaders/ folder (set TUMBLE_SHADER_DIR)\n");
+    }
     return kExitBadInput;
   }
 
