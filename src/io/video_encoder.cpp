@@ -109,8 +109,8 @@ std::string VideoEncoder::State::set_up_codec() {
   // "file:" first: FFmpeg reads a path with a colon ("renders:day2/x.mp4", "pipe:1") as a
   // protocol name, which a file name must never become. The muxer reopens this URL to move the
   // index to the front, so it is spelt the same way here and in avio_open.
-  int code = avformat_alloc_output_context2(&format, nullptr, "mp4",
-                                            ("file:" + temporary_path).c_str());
+  int code =
+      avformat_alloc_output_context2(&format, nullptr, "mp4", ("file:" + temporary_path).c_str());
   if (code < 0) return fail("avformat_alloc_output_context2", code);
   // No wall-clock creation time and no library version tag in the file: same frames, same bytes.
   format->flags |= AVFMT_FLAG_BITEXACT;

@@ -55,8 +55,8 @@ TEST(KeyDepth, QuotesBeforeAMultiLineStringsCloseDoNotHideTheNextKey) {
   for (const std::string& first_line :
        {std::string("x = { s = '''a'''', t = '''b''' }\n"),
         std::string("x = ['''a''''', '''b''']\n"),
-        std::string("x = \"\"\"a\"\"\"\"\nx = \"\"\"b\"\"\"\n"),
-        std::string("x = \"\"\"\"\"\"\n"), std::string("x = ''''''\n")}) {
+        std::string("x = \"\"\"a\"\"\"\"\nx = \"\"\"b\"\"\"\n"), std::string("x = \"\"\"\"\"\"\n"),
+        std::string("x = ''''''\n")}) {
     const auto found = find_overlong_dotted_key(cat(first_line, deep));
     ASSERT_TRUE(found) << first_line;
     EXPECT_EQ(found->column, 2) << first_line;
