@@ -197,9 +197,13 @@ int main(int argc, char** argv) {
   try {
     const int code = run_parsed();
     // What a command printed must have reached standard output (`tumble check s.toml >
-    // /dev/full` must not succeed). A command that failed has said why already.
-    if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && code == kExitOk) {
-      std::fprintf(stderr, "tumble: error writing to standard output: %s\n", std::strerror(errno));
+    // /dev/full` must not succeed, nor `diff` report a mismatch nobody saw). A command that
+    // failed otherwise has said why already.
+    const bool flushed = std::fflush(stdout) == 0;
+    const int reason = errno;
+    if ((!flushed || std::ferror(stdout)) && (code == kExitOk || code == kExitMismatch)) {
+      std::fprintf(stderr, "tumble: error writing to standard output%s%s\n", flushed ? "" : ": ",
+                   flushed ? "" : std::strerror(reason));
       return kExitBadInput;
     }
     return code;

@@ -51,8 +51,11 @@ std::string replace_problem(const fs::path& root, const fs::path& relative) {
            advice;
   };
   std::error_code error;
-  // The output root and every folder above it, then each folder down to the scene's.
-  for (fs::path above = fs::absolute(root, error); !above.empty(); above = above.parent_path()) {
+  // The output root and every folder above it, where they really are (a link named by -o may
+  // lead into a render's folder), then each folder down to the scene's.
+  fs::path real_root = fs::weakly_canonical(root, error);
+  if (error) real_root = fs::absolute(root, error);
+  for (fs::path above = real_root; !above.empty(); above = above.parent_path()) {
     if (is_render_folder(above)) return inside_render(above);
     if (above == above.root_path()) break;
   }

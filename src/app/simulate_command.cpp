@@ -1,5 +1,7 @@
 #include "app/simulate_command.hpp"
 
+#include <stdio_ext.h>
+
 #include <cerrno>
 #include <cstring>
 #include <memory>
@@ -58,6 +60,9 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
     std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", signal_name(signal),
                  time, scene.duration,
                  file ? (options.out + " was not written").c_str() : "output incomplete");
+    // Rows still buffered for standard output are dropped: flushing them at exit could block
+    // on the very pipe the signal cut short.
+    if (!file) __fpurge(stdout);
     return kExitInterrupted + signal;
   };
   std::FILE* out = stdout;
@@ -84,16 +89,20 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
     }
     if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
   }
-  // A write blocked on a full pipe and cut short by the signal fails with EINTR: a stop too.
-  if (const int signal = interrupt_signal(); signal && !ok) return stopped(signal);
+  // A write blocked on a full pipe and cut short by the signal fails with EINTR: a stop too,
+  // before a flush could block on that pipe again.
+  if (const int signal = interrupt_signal()) return stopped(signal);
+  // commit() also says why an earlier write failed; a failed file is never put in place.
+  ok = (file ? file->commit() : std::fflush(out) == 0) && ok;
+  if (ok) return kExitOk;
+  const int reason = errno;
+  if (const int signal = interrupt_signal()) return stopped(signal);  // during that last flush
   if (file) {
-    ok = file->commit() && ok;
-    if (!ok) std::fprintf(err, "tumble: %s\n", file->error().c_str());
-  } else if (std::fflush(out) != 0 || !ok) {
-    std::fprintf(err, "tumble: error writing to standard output: %s\n", std::strerror(errno));
-    ok = false;
+    std::fprintf(err, "tumble: %s\n", file->error().c_str());
+  } else {
+    std::fprintf(err, "tumble: error writing to standard output: %s\n", std::strerror(reason));
   }
-  return ok ? kExitOk : kExitBadInput;
+  return kExitBadInput;
 }
 
 }  // namespace tumble::app

@@ -1,9 +1,11 @@
 #include "io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <stdio_ext.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -42,7 +44,8 @@ int descriptor_named(const std::string& path) {
 }
 
 Target target_of(const std::string& path) {
-  if (const int stream = descriptor_named(path); stream >= 0 && ::fcntl(stream, F_GETFD) != -1) {
+  const std::string normal = fs::path(path).lexically_normal().string();  // "/dev//fd/3" too
+  if (const int stream = descriptor_named(normal); stream >= 0 && ::fcntl(stream, F_GETFD) != -1) {
     return {path, stream, true};
   }
   struct stat followed;
@@ -69,7 +72,8 @@ Target target_of(const std::string& path) {
     if (error) break;
     resolved = link.is_absolute() ? link : resolved.parent_path() / link;
   }
-  target.loop = hops == 40;  // 40: the kernel's own limit on a chain of links
+  // 40: the kernel's own limit on a chain of links; a chain of exactly 40 ends in a file.
+  target.loop = hops == 40 && fs::is_symlink(fs::symlink_status(resolved, error));
   target.path = resolved.string();
   if (::stat(target.path.c_str(), &followed) == 0) target.mode = followed.st_mode & 07777;
   return target;
@@ -93,10 +97,23 @@ AtomicFile::AtomicFile(std::string path, Durability durability)
     file_ = std::fopen(path_.c_str(), "wb");
     if (!file_) fail("cannot create");
   } else {
-    temporary_path_ = target_path_ + ".tmp-" + std::to_string(::getpid());
-    file_ = std::fopen(temporary_path_.c_str(), "wb");
+    // A new name, never an existing file or link (O_EXCL, O_NOFOLLOW): a link planted at a
+    // predictable name would otherwise be written through, to anywhere.
+    static std::atomic<unsigned> next{0};
+    std::string candidate;
+    for (int attempt = 0; attempt < 100 && !file_; ++attempt) {
+      candidate = target_path_ + ".tmp-" + std::to_string(::getpid()) + "-" +
+                  std::to_string(next.fetch_add(1));
+      const int descriptor =
+          ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+      if (descriptor < 0 && errno == EEXIST) continue;
+      if (descriptor >= 0) file_ = ::fdopen(descriptor, "wb");
+      if (descriptor >= 0 && !file_) ::close(descriptor);
+      break;
+    }
+    if (file_) temporary_path_ = candidate;  // only ever ours to remove
     if (!file_ && target.mode >= 0) {
-      fail("cannot create the temporary file " + temporary_path_ + " to replace it");
+      fail("cannot create the temporary file " + candidate + " to replace it");
     } else if (!file_) {
       fail("cannot create");
     } else if (target.mode >= 0) {
@@ -106,6 +123,9 @@ AtomicFile::AtomicFile(std::string path, Durability durability)
 }
 
 AtomicFile::~AtomicFile() {
+  // Not committed: what is still buffered is dropped, not written, so that closing a FIFO or
+  // pipe nobody reads cannot block.
+  if (file_ && !committed_) __fpurge(file_);
   if (file_) std::fclose(file_);
   if (!committed_ && !temporary_path_.empty()) std::remove(temporary_path_.c_str());
 }

@@ -18,7 +18,7 @@ class AtomicFile {
   // than writing the PNG.
   enum class Durability { synced, unsynced };
 
-  // Opens "<path>.tmp-<pid>" for writing (or the target itself, see above). Check ok() /
+  // Opens "<path>.tmp-<pid>-<n>" for writing (or the target itself, see above). Check ok() /
   // error() before use.
   explicit AtomicFile(std::string path, Durability durability = Durability::synced);
   ~AtomicFile();  // removes the temporary file unless commit() succeeded

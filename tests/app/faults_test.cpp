@@ -1,8 +1,10 @@
 // Faults a user or a machine can cause, through the real executable: interruption, an unwritable
 // output folder, a full disk, a body that blows up, limits, and the exit code of every command.
 // Whatever happens, no output may be left looking complete and no earlier output half replaced.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -114,6 +116,23 @@ TEST_F(Faults, ARepeatedSignalStillStopsCleanly) {
   EXPECT_EQ(run.exit_code, 143) << run.err;
   EXPECT_NE(run.err.find("tumble: stopped by SIGTERM after "), std::string::npos) << run.err;
   EXPECT_EQ(files_below(dir_ / "out"), 0) << "an interrupted render left files";
+}
+
+// A write blocked on a FIFO nobody reads fails with EINTR when the signal comes: a stop (130),
+// not a write failure (2).
+TEST_F(Faults, SigintStopsASimulationBlockedOnAFullPipe) {
+  const std::string fifo = path("fifo");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const pid_t simulate =
+      start("simulate " + write("short.toml", spin_scene(20.0)).string() + " --out " + fifo);
+  const int reader = ::open(fifo.c_str(), O_RDONLY);  // opened, never read: the pipe fills
+  ASSERT_GE(reader, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(::kill(simulate, SIGINT), 0);
+  const Outcome run = wait(simulate);
+  ::close(reader);
+  EXPECT_EQ(run.exit_code, 130) << run.err;
+  EXPECT_NE(run.err.find("tumble: stopped by SIGINT"), std::string::npos) << run.err;
 }
 
 TEST_F(Faults, SigintStopsASimulationWithoutWritingItsFile) {
@@ -265,8 +284,9 @@ TEST_F(Faults, ARenderNeverReplacesOrEntersAnotherRendersFiles) {
   EXPECT_EQ(inner.exit_code, 2) << inner.err;
   EXPECT_NE(inner.err.find(path("out/a") + " is a render's folder"), std::string::npos)
       << inner.err;
-  // Nor with -o pointing into it, at any depth.
-  for (const std::string& root : {path("out/a"), path("out/a/frames")}) {
+  // Nor with -o pointing into it, at any depth, or through a link that leads there.
+  fs::create_directory_symlink(dir_ / "out/a/frames", dir_ / "link");
+  for (const std::string& root : {path("out/a"), path("out/a/frames"), path("link")}) {
     const Outcome below = tumble("render " + scene_in("outer", "a") + " -o " + root);
     EXPECT_EQ(below.exit_code, 2) << below.err;
     EXPECT_NE(below.err.find(path("out/a") + " is a render's folder"), std::string::npos)

@@ -127,6 +127,37 @@ TEST_F(AtomicFileTest, ALoopOfLinksIsAnError) {
   EXPECT_EQ(entries(), 2);
 }
 
+// Exactly 40 links (the kernel's limit) still lead to a file; a loop never does.
+TEST_F(AtomicFileTest, AChainOfFortyLinksIsFollowed) {
+  std::string previous = "real.csv";
+  for (int i = 0; i < 40; ++i) {
+    const std::string name = "link" + std::to_string(i);
+    fs::create_symlink(previous, root_ / name);
+    previous = name;
+  }
+  AtomicFile file((root_ / previous).string());
+  ASSERT_TRUE(write(file, "new")) << file.error();
+  EXPECT_EQ(get(root_ / "real.csv"), "new");
+}
+
+// The temporary file is always a new one: a link planted at a name it might take (someone else's
+// folder, a predictable process id) is never written through.
+TEST_F(AtomicFileTest, ALinkPlantedAtATemporaryNameIsNotFollowed) {
+  std::ofstream(root_ / "victim.txt") << "precious";
+  const std::string stem = (root_ / "out.csv").string() + ".tmp-" + std::to_string(::getpid());
+  fs::create_symlink(root_ / "victim.txt", stem);
+  for (int n = 0; n < 1000; ++n)
+    fs::create_symlink(root_ / "victim.txt", stem + "-" + std::to_string(n));
+  {
+    AtomicFile file((root_ / "out.csv").string());
+    if (file.ok()) {
+      std::fputs("rows", file.stream());
+      file.commit();
+    }
+  }
+  EXPECT_EQ(get(root_ / "victim.txt"), "precious");
+}
+
 // A replaced file keeps its permission bits: a private file must not become world-readable.
 TEST_F(AtomicFileTest, AReplacedFileKeepsItsPermissions) {
   std::ofstream(root_ / "private.csv") << "old";
