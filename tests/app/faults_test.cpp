@@ -125,7 +125,8 @@ TEST_F(Faults, SigintStopsASimulationBlockedOnAFullPipe) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const pid_t simulate =
       start("simulate " + write("short.toml", spin_scene(20.0)).string() + " --out " + fifo);
-  const int reader = ::open(fifo.c_str(), O_RDONLY);  // opened, never read: the pipe fills
+  // Opened (without waiting for the writer), never read: the pipe fills.
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
   ASSERT_GE(reader, 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   ASSERT_EQ(::kill(simulate, SIGINT), 0);
