@@ -24,7 +24,6 @@ class StagedDirectory {
   bool ok() const { return error_.empty(); }
   const std::string& error() const { return error_; }
   const std::string& path() const { return temporary_path_; }  // write here
-  const std::string& final_path() const { return final_path_; }
 
   // Puts the folder in place, replacing what was there. Returns false (see error()) on failure,
   // in which case the final path is as it was.
