@@ -1,5 +1,7 @@
 #include "bench/reference_solver.hpp"
 
+#include "physics/contact.hpp"
+
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
@@ -69,6 +71,28 @@ struct RealLawEvaluator {
     const Real magnitude = Real(law.stiffness) * (length - Real(law.rest_length)) +
                            Real(law.damping) * attachment_velocity.dot(direction);
     add_at_point(-magnitude * direction, arm);
+  }
+  void operator()(const physics::PenaltyContact& law) const {
+    for (const physics::Plane& plane : law.planes) {
+      const RealVec3 normal = real(plane.normal);
+      const Real friction = Real(physics::combine(law.material, plane.material).friction);
+      const Real slip_speed = Real(law.slip_speed);
+      for (int feature = 0; feature < 8; ++feature) {
+        const RealVec3 arm = body.rotation * real(physics::corner(law.half_size, feature));
+        const Real depth = Real(plane.offset) - normal.dot(body.position + arm);
+        if (depth <= 0) continue;
+        const RealVec3 velocity = body.velocity + body.angular_velocity.cross(arm);
+        const Real normal_speed = normal.dot(velocity);
+        const Real normal_force =
+            std::max(Real(0), Real(law.stiffness) * depth - Real(law.damping) * normal_speed);
+        const RealVec3 slip = velocity - normal_speed * normal;
+        add_at_point(
+            normal_force * normal - (friction * normal_force /
+                                     std::sqrt(slip.squaredNorm() + slip_speed * slip_speed)) *
+                                        slip,
+            arm);
+      }
+    }
   }
 };
 

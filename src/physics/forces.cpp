@@ -40,6 +40,7 @@ struct LawEvaluator {
         law.stiffness * (length - law.rest_length) + law.damping * stretch_speed;
     return force_at_world_point(state, -magnitude * direction, attachment);
   }
+  Wrench operator()(const PenaltyContact& law) const { return penalty_contact_wrench(law, state); }
 };
 
 }  // namespace

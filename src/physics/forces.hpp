@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "physics/rigid_body.hpp"
+#include "physics/shapes.hpp"
 
 namespace tumble::physics {
 
@@ -53,8 +54,22 @@ struct Spring {
   double rest_length = 0.0;        // l0 (m)
 };
 
+// Penalty contact with static planes, after Fiedler's "Spring Physics": at each corner of the box
+// inside a plane by d, a normal force F_n = max(0, k d − c v_n) (a damped spring that only
+// pushes) and a friction force −μ F_n v_t / sqrt(|v_t|² + v_s²), Coulomb's law regularised below
+// the slip speed v_s so that the force is smooth for the integrator. Added to every body by the
+// scene builder when [physics] contact = "penalty"; never listed in a scene.
+struct PenaltyContact {
+  std::vector<Plane> planes;
+  Vec3 half_size = Vec3::Constant(0.5);  // of the box, body frame (m)
+  Material material = {};                // the body's own; combined with each plane's
+  double stiffness = 0.0;                // k per corner (N/m)
+  double damping = 0.0;                  // c per corner (N s/m)
+  double slip_speed = 0.05;              // v_s (m/s)
+};
+
 using ForceLaw = std::variant<Gravity, ConstantForce, ConstantTorque, LinearDamping, AngularDamping,
-                              ForceAtPoint, Spring>;
+                              ForceAtPoint, Spring, PenaltyContact>;
 
 // Net force and torque on a body.
 struct Wrench {
@@ -65,6 +80,9 @@ struct Wrench {
 // A force F at world point p adds F and the torque (p - x) × F.
 Wrench force_at_world_point(const BodyState& state, const Vec3& force /* N, world */,
                             const Vec3& world_point /* m */);
+
+// The penalty contact forces on the box in this state (physics/penalty_contact.cpp).
+Wrench penalty_contact_wrench(const PenaltyContact& law, const BodyState& state);
 
 // One law's contribution at time t (s) in the given state.
 Wrench evaluate(const ForceLaw& law, const BodyConstants& constants, const BodyState& state,

@@ -7,6 +7,7 @@
 
 #include "physics/forces.hpp"
 #include "physics/rigid_body.hpp"
+#include "physics/shapes.hpp"
 
 namespace tumble::physics {
 
@@ -14,6 +15,9 @@ namespace tumble::physics {
 struct BodyModel {
   BodyConstants constants;
   std::vector<ForceLaw> forces;
+  // The box the body is, for contact: half its edge lengths along the body axes (m).
+  Vec3 half_size = Vec3::Constant(0.5);
+  Material material = {};
 };
 
 enum class Integrator {

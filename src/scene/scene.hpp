@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "physics/contact.hpp"
 #include "physics/forces.hpp"
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
+#include "physics/shapes.hpp"
 #include "render/frame.hpp"  // plain data only: colours, light, ground, image settings
 
 namespace tumble::scene {
@@ -25,12 +27,25 @@ struct BodySpec {
   physics::Quat orientation = physics::Quat::Identity();   // body-to-world, unit
   physics::Vec3 angular_velocity = physics::Vec3::Zero();  // world frame (rad/s)
   std::vector<physics::ForceLaw> forces;                   // only what the scene lists
+  physics::Material material = {};                         // restitution 0, friction 0.5
   render::Color color = render::Color(0.85, 0.35, 0.2);    // sRGB
+};
+
+// A static plane, as written: `point` and the unit `normal` place it; `size` is only how much of
+// it is drawn around `point`, since the contact plane is infinite.
+struct PlaneSpec {
+  std::string name;
+  physics::Vec3 point = physics::Vec3::Zero();    // world frame (m)
+  physics::Vec3 normal = physics::Vec3::UnitY();  // unit (normalised by the loader), world frame
+  physics::Material material = {};                // restitution 0, friction 0.5
+  bool visible = true;
+  double size[2] = {20.0, 20.0};  // drawn extent along the plane's two in-plane axes (m)
 };
 
 struct PhysicsSettings {
   double dt = 0.01;  // fixed step (s)
   physics::Integrator integrator = physics::Integrator::rk4;
+  physics::ContactSettings contact;  // used only when the scene has planes
 };
 
 // The camera as written; what is left out is chosen to frame the whole motion.
@@ -56,6 +71,7 @@ struct Scene {
   double duration = 0.0;    // simulated time (s)
   PhysicsSettings physics;
   std::vector<BodySpec> bodies;
+  std::vector<PlaneSpec> planes;  // in the order written; none means no contact code runs
   // Rendering. The ground's height, when not written, is chosen below the whole motion.
   render::RenderSettings render;
   std::optional<double> ground_height;  // m

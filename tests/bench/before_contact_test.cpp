@@ -1,7 +1,7 @@
 // The world step with no planes must run exactly the code that ran before contact existed: every
 // hard case, with every integrator, through sim::Simulation, gives the bytes recorded then
-// (tests/data/before_contact/hard_cases.csv, written by this test with TUMBLE_WRITE_BEFORE_CONTACT=1
-// on the last commit before contact).
+// (tests/data/before_contact/hard_cases.csv, written by this test with
+// TUMBLE_WRITE_BEFORE_CONTACT=1 on the last commit before contact).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,8 +17,8 @@
 namespace tumble::bench {
 namespace {
 
-constexpr double kStep = 1.0 / 60.0;    // s
-constexpr double kLongest = 20.0;       // s of each case (the long ones are cut short)
+constexpr double kStep = 1.0 / 60.0;  // s
+constexpr double kLongest = 20.0;     // s of each case (the long ones are cut short)
 constexpr int kStepsPerRow = 60;
 
 std::string run_every_case() {
@@ -39,8 +39,7 @@ std::string run_every_case() {
                       simulation.time(), s.position().x(), s.position().y(), s.position().z(),
                       s.orientation().w(), s.orientation().x(), s.orientation().y(),
                       s.orientation().z(), s.momentum().x(), s.momentum().y(), s.momentum().z(),
-                      s.angular_momentum().x(), s.angular_momentum().y(),
-                      s.angular_momentum().z());
+                      s.angular_momentum().x(), s.angular_momentum().y(), s.angular_momentum().z());
         out += row;
       }
     }
@@ -49,7 +48,8 @@ std::string run_every_case() {
 }
 
 TEST(BeforeContact, HardCasesThroughTheWorldStepGiveTheRecordedBytes) {
-  const std::string path = std::string(TUMBLE_SOURCE_DIR) + "/tests/data/before_contact/hard_cases.csv";
+  const std::string path =
+      std::string(TUMBLE_SOURCE_DIR) + "/tests/data/before_contact/hard_cases.csv";
   const std::string now = run_every_case();
   if (std::getenv("TUMBLE_WRITE_BEFORE_CONTACT")) {
     std::ofstream(path, std::ios::binary) << now;

@@ -1,0 +1,77 @@
+// Contact between bodies (boxes) and static planes: the settings a scene chooses, the contact
+// points of a box against a plane, and the manifold that carries them from step to step.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "physics/rigid_body.hpp"
+#include "physics/shapes.hpp"
+
+namespace tumble::physics {
+
+enum class ContactMethod {
+  // Velocity-level impulses (sequential impulses with accumulated clamping, Catto 2005), impacts
+  // at their time of impact, and a position projection that moves no momentum (physics/world.hpp).
+  impulse,
+  // Fiedler's "Spring Physics": a damped spring at each penetrating corner and a regularised
+  // Coulomb friction, evaluated as a force inside the integrator (physics/penalty_contact.hpp).
+  penalty,
+};
+
+struct ContactSettings {
+  ContactMethod method = ContactMethod::impulse;
+  // Penalty only. A 1 kg unit cube resting on four corners sinks m g / (4 k) = 0.025 mm at the
+  // default stiffness, and its bounce is near critically damped (ζ = c / (2 sqrt(k m)) per point ≈
+  // 0.8).
+  double stiffness = 1.0e5;  // k per penetrating corner (N/m)
+  double damping = 500.0;    // c per penetrating corner (N s/m)
+  // Impulse only. Impacts slower than this along the normal do not bounce: a resting contact
+  // must not chatter. 0.5 m/s lets a bounce test keep bounces at 1.1 m/s (Box2D's 1 m/s would
+  // not), and stays above the 0.16 m/s that gravity adds in one 1/60 s step, which PhysX names as
+  // the floor for it.
+  double restitution_threshold = 0.5;  // m/s
+};
+
+// The name of a method in scene files ("impulse", "penalty").
+const char* contact_method_name(ContactMethod method);
+
+// A corner of a box touching (or about to touch) a plane.
+struct ContactPoint {
+  int feature = 0;                 // the corner: bit i set means +half_size on body axis i
+  Vec3 body_point = Vec3::Zero();  // the corner relative to the centre, body frame (m)
+  double separation = 0.0;         // along the plane normal; negative when inside (m)
+  // Accumulated impulses of the last solve, kept for warm starting the next step.
+  double normal_impulse = 0.0;          // N s
+  Vec3 tangent_impulse = Vec3::Zero();  // N s, world frame, in the plane
+};
+
+// At most four points: the four lowest corners are enough to hold a box still on a face.
+inline constexpr int kMaxManifoldPoints = 4;
+
+// The contact between one body and one plane.
+struct Manifold {
+  int count = 0;
+  std::array<ContactPoint, kMaxManifoldPoints> points;
+};
+
+// The box's corners whose separation from the plane is below `margin` (m), the deepest first,
+// at most four. `half_size` is half the edge lengths along the body axes (m).
+Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const Plane& plane,
+                            double margin);
+
+// The lowest separation of any corner of the box from the plane (m), and which corner.
+struct Closest {
+  double separation = 0.0;  // m
+  int feature = 0;
+};
+Closest closest_corner(const BodyState& state, const Vec3& half_size, const Plane& plane);
+
+// The body-frame offset of corner `feature` (bit i: sign along body axis i).
+inline Vec3 corner(const Vec3& half_size, int feature) {
+  return Vec3((feature & 1) ? half_size.x() : -half_size.x(),
+              (feature & 2) ? half_size.y() : -half_size.y(),
+              (feature & 4) ? half_size.z() : -half_size.z());
+}
+
+}  // namespace tumble::physics
