@@ -5,17 +5,22 @@
 #include <utility>
 
 #include "physics/interpolation.hpp"
+#include "physics/plane_contact_step.hpp"
 
 namespace tumble::sim {
 
 Simulation::Simulation(std::vector<physics::BodyModel> models,
                        std::vector<physics::BodyState> initial, physics::Integrator integrator,
-                       double dt)
+                       double dt, std::vector<physics::Plane> planes,
+                       physics::ContactSettings contact)
     : models_(std::move(models)),
       previous_(initial),
       current_(std::move(initial)),
       integrator_(integrator),
-      dt_(dt) {
+      dt_(dt),
+      planes_(std::move(planes)),
+      contact_(contact),
+      contact_memory_(planes_.empty() ? 0 : models_.size()) {
   assert(models_.size() == current_.size());
   assert(dt_ > 0.0);
 }
@@ -58,8 +63,15 @@ void Simulation::step() {
   if (blow_up_) return;
   const double t = time();
   previous_.swap(current_);
-  for (std::size_t i = 0; i < models_.size(); ++i) {
-    current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
+  if (planes_.empty()) {
+    for (std::size_t i = 0; i < models_.size(); ++i) {
+      current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
+    }
+  } else {
+    for (std::size_t i = 0; i < models_.size(); ++i) {
+      current_[i] = physics::step_with_planes(integrator_, models_[i], previous_[i], t, dt_,
+                                              planes_, contact_, contact_memory_[i]);
+    }
   }
   ++step_count_;
   for (std::size_t i = 0; i < models_.size(); ++i) {

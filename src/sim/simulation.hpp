@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/contact.hpp"
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
 
@@ -32,9 +33,13 @@ std::string blow_up_problem(const physics::BodyState& state);
 
 class Simulation {
  public:
-  // One model and one initial state per body; bodies do not interact.
+  // One model and one initial state per body. Bodies do not touch each other; they touch the
+  // planes through impulse contact (physics/plane_contact_step.hpp). With no planes each body
+  // runs its integrator alone, the code that ran before contact existed. Penalty contact is a
+  // force law of each body (physics::PenaltyContact) and needs no planes here.
   Simulation(std::vector<physics::BodyModel> models, std::vector<physics::BodyState> initial,
-             physics::Integrator integrator, double dt /* s */);
+             physics::Integrator integrator, double dt /* s */,
+             std::vector<physics::Plane> planes = {}, physics::ContactSettings contact = {});
 
   // Advances every body by one step of dt. Once a body has blown up, nothing moves any more.
   void step();
@@ -56,6 +61,7 @@ class Simulation {
   const std::vector<physics::BodyModel>& models() const { return models_; }
   const std::vector<physics::BodyState>& current() const { return current_; }
   const std::vector<physics::BodyState>& previous() const { return previous_; }
+  const std::vector<physics::Plane>& planes() const { return planes_; }
 
  private:
   std::vector<physics::BodyModel> models_;
@@ -63,6 +69,10 @@ class Simulation {
   std::vector<physics::BodyState> current_;   // at time_of_step(step_count_)
   physics::Integrator integrator_;
   double dt_;
+  std::vector<physics::Plane> planes_;
+  physics::ContactSettings contact_;
+  // Per body, its last manifold with each plane (warm starting the contact solve).
+  std::vector<std::vector<physics::Manifold>> contact_memory_;
   std::int64_t step_count_ = 0;
   std::optional<BlowUp> blow_up_;
 };

@@ -1,0 +1,72 @@
+// The velocity solver over all contact points of a step: sequential impulses with accumulated
+// clamping (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005), a circular friction
+// cone per point, a restitution pass after the inelastic solve, and a guard that a bounce never
+// leaves more kinetic energy than the impact found. Bodies are plain velocity records; a point
+// ties one body to a static shape (a plane), and the next step of this design adds a second body.
+#pragma once
+
+#include <vector>
+
+#include "physics/contact.hpp"
+#include "physics/rigid_body.hpp"
+
+namespace tumble::physics {
+
+// One body's velocities while contacts are solved, and what the solve needs of its mass.
+struct SolverBody {
+  Vec3 velocity = Vec3::Zero();          // world frame (m/s)
+  Vec3 angular_velocity = Vec3::Zero();  // world frame (rad/s)
+  double inverse_mass = 0.0;             // 1/kg
+  Mat3 inverse_inertia =
+      Mat3::Zero();             // I_world⁻¹ at the pose the points were found at (1/(kg m²))
+  Mat3 inertia = Mat3::Zero();  // I_world there (kg m²), for the kinetic energy
+  Vec3 linear_impulse = Vec3::Zero();   // Σ of the impulses applied by the solve (N s)
+  Vec3 angular_impulse = Vec3::Zero();  // Σ of their moments about the centre (N m s)
+
+  // The body as the state has it: velocities and mass at that pose.
+  static SolverBody from(const BodyState& state, const BodyConstants& constants);
+  void apply(const Vec3& impulse /* N s, world */, const Vec3& arm /* m, world, from centre */);
+  double kinetic_energy() const;  // of the velocities, with the inertia above (J)
+};
+
+// One contact point between body `body` and a static plane.
+struct ContactConstraint {
+  std::size_t body = 0;         // index into the SolverBody list
+  Vec3 arm = Vec3::Zero();      // contact point - centre of mass, world frame (m)
+  Vec3 normal = Vec3::UnitY();  // unit, world, pointing from the plane to the body
+  Vec3 tangent[2];              // unit, world, spanning the plane
+  double normal_mass = 0.0;     // 1 / (m⁻¹ + n·(I⁻¹(r×n) × r)) (kg)
+  double tangent_mass[2] = {0.0, 0.0};
+  double friction = 0.0;        // μ of the pair
+  double restitution = 0.0;     // e of the pair
+  double approach_speed = 0.0;  // normal velocity before the solve (m/s; negative approaching)
+  double normal_impulse = 0.0;  // accumulated (N s, >= 0)
+  double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ normal (N s)
+  // Where the result goes back to for warm starting: a point of one manifold.
+  ContactPoint* source = nullptr;
+};
+
+// A point whose arm and normal are given, with its effective masses computed from the body.
+ContactConstraint make_constraint(std::size_t body_index, const SolverBody& body, const Vec3& arm,
+                                  const Vec3& normal, const Material& material);
+
+// What a solve is asked for.
+struct SolveSettings {
+  int iterations = 10;  // the most passes over all points
+  // A pass that changes no accumulated impulse by more than this fraction of the largest one
+  // ends the solve early: impacts converge in a few passes, resting stacks use all of them.
+  double tolerance = 1e-12;
+  double restitution_threshold = 0.5;  // m/s: slower approaches do not bounce
+  bool warm_start = false;             // apply the points' impulses first (from `source`)
+};
+
+// Solves the points against the bodies' velocities in place: first the inelastic solve (normal
+// speeds >= 0, friction within the cone), then the bounce (normal speed >= -e × approach speed for
+// points that approached faster than the threshold and pushed), then, per body, a bounce that
+// would raise the kinetic energy above its value before the solve is scaled back until it does
+// not (sequential bounces at several points can otherwise create energy: Box3D issue 83).
+// Accumulated impulses are written back to each point's `source`.
+void solve_contacts(std::vector<SolverBody>& bodies, std::vector<ContactConstraint>& points,
+                    const SolveSettings& settings);
+
+}  // namespace tumble::physics

@@ -1,0 +1,47 @@
+// One step of one body among static planes, with impulse contact: how the integrators compose
+// with contact. Bodies touch only planes here, so each body steps on its own; contact between
+// bodies will make this a step of the whole world.
+#pragma once
+
+#include <vector>
+
+#include "physics/contact.hpp"
+#include "physics/integrators.hpp"
+
+namespace tumble::physics {
+
+// Corners this close to a plane (m) count as touching it: they take part in the solve of an
+// impact or of a resting contact, and an impact is only looked for where a corner was further.
+inline constexpr double kTouchingDistance = 1e-6;
+// Impacts resolved at their own time within one step; past this the rest of the step treats
+// every contact as resting (a box chattering on a corner cannot stall the step).
+inline constexpr int kMaxImpactsPerStep = 8;
+// Passes of the velocity solver over the points of one body.
+inline constexpr int kContactIterations = 40;
+
+// How far an impulse applied over a step of h moves the body in that step, as a multiple of the
+// velocity change it causes: the position weight each integrator gives a force held constant over
+// the step. euler 0 (its positions use the velocities from the start), symplectic_euler h (the
+// new velocity carries the whole step), rk4 and the splitting methods h/2 (exact for a constant
+// force: x = x₀ + v₀ h + ½ a h²). So a resting body's contact impulse, which balances the
+// step's gravity, also undoes the sinking the step's gravity caused.
+double impulse_position_weight(Integrator integrator, double h /* s */);
+
+// Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
+// 1. the free step; if no corner ends inside a plane, that is the step (a body that touches
+//    nothing runs the integrator alone);
+// 2. a corner that was apart from a plane at the start and ends inside it is an impact: the step
+//    goes to its time of impact (regula falsi on the corner's separation along the integrator's
+//    own motion), resolves it as an instant impulse with restitution and friction, and goes on
+//    with the rest of the step, for up to kMaxImpactsPerStep impacts;
+// 3. corners that touched at the start and end inside are resting or sliding contact: the solve
+//    corrects the free step's end velocities (normal speed >= 0, Coulomb friction), the impulse
+//    moves the pose by impulse_position_weight × its velocity change, and a non-linear
+//    Gauss-Seidel projection of the pose (Catto, Box2D 2.4 "solve position constraints") pushes
+//    what is still inside out to the surface, moving no momentum, so it adds no kinetic energy.
+// `memory` holds the body's last manifold per plane (warm starting); it is resized to the planes.
+BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
+                           double t /* s */, double dt /* s */, const std::vector<Plane>& planes,
+                           const ContactSettings& settings, std::vector<Manifold>& memory);
+
+}  // namespace tumble::physics
