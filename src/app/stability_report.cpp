@@ -8,9 +8,8 @@ namespace {
 
 std::vector<sim::StepWarning> body_warnings(const scene::Scene& scene,
                                             const scene::BodySpec& body) {
-  const physics::BodyModel model{.constants = scene::body_constants(body), .forces = body.forces};
-  return sim::check_step(model, scene::initial_state(body), scene.physics.integrator,
-                         scene.physics.dt, scene.duration);
+  return sim::check_step(scene::body_model(scene, body), scene::initial_state(body),
+                         scene.physics.integrator, scene.physics.dt, scene.duration);
 }
 
 }  // namespace

@@ -23,15 +23,42 @@ std::int64_t step_count(const Scene& scene) {
   return std::llround(scene.duration / scene.physics.dt);
 }
 
+physics::Plane plane(const PlaneSpec& spec) {
+  return {.normal = spec.normal, .offset = spec.normal.dot(spec.point), .material = spec.material};
+}
+
+physics::BodyModel body_model(const Scene& scene, const BodySpec& body) {
+  physics::BodyModel model{.constants = body_constants(body),
+                           .forces = body.forces,
+                           .half_size = 0.5 * body.size,
+                           .material = body.material};
+  const physics::ContactSettings& contact = scene.physics.contact;
+  if (!scene.planes.empty() && contact.method == physics::ContactMethod::penalty) {
+    physics::PenaltyContact law{.planes = {},
+                                .half_size = model.half_size,
+                                .material = body.material,
+                                .stiffness = contact.stiffness,
+                                .damping = contact.damping};
+    for (const PlaneSpec& spec : scene.planes) law.planes.push_back(plane(spec));
+    model.forces.push_back(std::move(law));
+  }
+  return model;
+}
+
 sim::Simulation build_simulation(const Scene& scene) {
   std::vector<physics::BodyModel> models;
   std::vector<physics::BodyState> initial;
   for (const BodySpec& body : scene.bodies) {
-    models.push_back({.constants = body_constants(body), .forces = body.forces});
+    models.push_back(body_model(scene, body));
     initial.push_back(initial_state(body));
   }
+  // Impulse contact is the world step's; penalty contact is each body's force law (above).
+  std::vector<physics::Plane> planes;
+  if (scene.physics.contact.method == physics::ContactMethod::impulse) {
+    for (const PlaneSpec& spec : scene.planes) planes.push_back(plane(spec));
+  }
   return sim::Simulation(std::move(models), std::move(initial), scene.physics.integrator,
-                         scene.physics.dt);
+                         scene.physics.dt, std::move(planes), scene.physics.contact);
 }
 
 }  // namespace tumble::scene

@@ -10,6 +10,10 @@ physics::BodyConstants body_constants(const BodySpec& body);
 physics::BodyState initial_state(const BodySpec& body);
 // Number of fixed steps that cover the scene: round(duration / dt).
 std::int64_t step_count(const Scene& scene);
+// The contact plane of a plane as written: n·x = n·point.
+physics::Plane plane(const PlaneSpec& spec);
+// A body's model: mass, laws, box and material; with penalty contact, its PenaltyContact law.
+physics::BodyModel body_model(const Scene& scene, const BodySpec& body);
 sim::Simulation build_simulation(const Scene& scene);
 
 }  // namespace tumble::scene

@@ -115,4 +115,24 @@ TEST_F(SimulateCommand, BadUsageExitsWithTwo) {
   EXPECT_EQ(tumble("frobnicate").exit_code, 2);
 }
 
+// Scenes without planes run the code they ran before contact existed: their CSVs are the bytes
+// recorded then (tests/data/before_contact/, written by the last release without contact).
+class ShippedSceneWithoutPlanes : public CommandTest,
+                                  public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(ShippedSceneWithoutPlanes, GivesTheCsvRecordedBeforeContact) {
+  const std::string source = TUMBLE_SOURCE_DIR;
+  const Outcome run =
+      tumble("simulate " + source + "/scenes/" + GetParam() + ".toml --out " + path("now.csv"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string recorded =
+      read_file(source + "/tests/data/before_contact/" + GetParam() + ".csv");
+  ASSERT_FALSE(recorded.empty());
+  EXPECT_TRUE(read_file(path("now.csv")) == recorded) << "the CSV of " << GetParam() << " changed";
+}
+
+INSTANTIATE_TEST_SUITE_P(Every, ShippedSceneWithoutPlanes,
+                         ::testing::Values("spinning_cube", "thrown_cube", "pushed_cube",
+                                           "intermediate_axis", "cube_on_spring"));
+
 }  // namespace
