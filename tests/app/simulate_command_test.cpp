@@ -117,7 +117,7 @@ TEST_F(SimulateCommand, BadUsageExitsWithTwo) {
 
 // Scenes without planes run the code they ran before contact existed: their CSVs are the bytes
 // recorded then (tests/data/before_contact/, written by the last release without contact).
-class ShippedSceneWithoutPlanes : public CommandTest,
+class ShippedSceneWithoutPlanes : public tumble::testing::CommandTest,
                                   public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(ShippedSceneWithoutPlanes, GivesTheCsvRecordedBeforeContact) {
