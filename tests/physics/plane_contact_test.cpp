@@ -291,5 +291,38 @@ TEST_P(Tunnelling, CubeAt100MetresPerSecondBouncesOffAWall) {
 
 INSTANTIATE_TEST_SUITE_P(AtCoarseSteps, Tunnelling, ::testing::Values(1.0 / 60.0, 1.0 / 30.0));
 
+// Every integrator composes with impulse contact: the tumbling drop comes to rest on a face, just
+// touching the floor, and stays there.
+class EveryIntegrator : public ::testing::TestWithParam<Integrator> {};
+
+TEST_P(EveryIntegrator, TumblingDropComesToRestTouchingTheFloor) {
+  DropSetup s;
+  s.integrator = GetParam();
+  s.position = Vec3(0.0, 2.0, 0.0);
+  s.orientation = Quat(Eigen::AngleAxisd(0.7, Vec3(1.0, 0.3, 0.2).normalized()));
+  s.angular_velocity = Vec3(2.0, 1.0, -3.0);
+  s.body = {.restitution = 0.3, .friction = 0.5};
+  s.planes = {Plane{.material = {.restitution = 0.3, .friction = 0.5}}};
+  sim::Simulation world = simulation(s);
+  double deepest = 0.0;
+  while (world.time() < 10.0 - 1e-12) {
+    world.step();
+    deepest = std::max(
+        deepest, -closest_corner(world.current().front(), Vec3::Constant(0.5), s.planes[0]).separation);
+  }
+  const BodyState& rest = world.current().front();
+  std::printf("[ measured ] %s: deepest %.3g m, at 10 s |v| %.3g m/s, |w| %.3g rad/s\n",
+              std::string(integrator_name(GetParam())).c_str(), deepest, rest.velocity().norm(),
+              rest.angular_velocity().norm());
+  EXPECT_FALSE(world.blow_up());
+  EXPECT_LT(deepest, 1e-3);
+  EXPECT_LT(rest.velocity().norm(), 1e-3);
+  EXPECT_LT(rest.angular_velocity().norm(), 1e-3);
+  EXPECT_NEAR(rest.position().y(), 0.5, 1e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Contact, EveryIntegrator, ::testing::ValuesIn(kAllIntegrators),
+                         [](const auto& info) { return std::string(integrator_name(info.param)); });
+
 }  // namespace
 }  // namespace tumble::physics
