@@ -170,7 +170,7 @@ INSTANTIATE_TEST_SUITE_P(FlatAndOnAnEdge, ElasticDrop, ::testing::Values(0.0, 30
 // cube's bottom face on it.
 DropSetup on_slope(double degrees, double friction) {
   const double theta = degrees * std::numbers::pi / 180.0;
-  const Vec3 normal(-std::sin(theta), std::cos(theta), 0.0);  // downhill is +x
+  const Vec3 normal(-std::sin(theta), std::cos(theta), 0.0);  // rises along +x: downhill is -x
   DropSetup s;
   s.position = 0.5 * normal;
   s.orientation = Quat(Eigen::AngleAxisd(theta, Vec3::UnitZ()));
