@@ -22,6 +22,8 @@ inline constexpr std::int64_t kMaxBodies = 1000;
 // five minutes of RK4 on boxes here (285 ns a step, physics_bench).
 inline constexpr std::int64_t kMaxBodySteps = 1'000'000'000;
 inline constexpr std::int64_t kMaxForcesPerBody = 100;
+// Every body is tested against every plane at each step: a room and a few ramps need a dozen.
+inline constexpr std::int64_t kMaxPlanes = 64;
 // Scene files are read whole.
 inline constexpr std::int64_t kMaxSceneFileBytes = 16 * 1024 * 1024;
 

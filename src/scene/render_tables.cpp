@@ -68,6 +68,15 @@ void read_light(TableReader& in, Scene& scene) {
 
 void read_ground(TableReader& in, Scene& scene) {
   render::Ground& g = scene.render.ground;
+  // With planes the drawn floor is a plane (app/plane_view.hpp): one home for where it is and
+  // whether it shows, so [ground] keeps only its look.
+  for (const char* key : {"enabled", "height"}) {
+    if (!scene.planes.empty() && in.has(key)) {
+      in.fail(key,
+              "not used in a scene with [[planes]]: the floor drawn is the lowest level plane, "
+              "placed by its point and shown or hidden by its visible");
+    }
+  }
   g.enabled = in.optional_bool("enabled", g.enabled);
   if (in.has("height")) scene.ground_height = in.required_number("height");
   g.color = in.optional_color("color", g.color);

@@ -6,8 +6,9 @@
 
 namespace tumble::scene::detail {
 
-// Reads whichever of the tables are present in `root` into `scene`; needs scene.bodies and
-// scene.name already read (for `follow` and the default output directory).
+// Reads whichever of the tables are present in `root` into `scene`; needs scene.bodies,
+// scene.planes and scene.name already read (for `follow`, [ground] and the default output
+// directory).
 void read_render_tables(TableReader& root, Scene& scene);
 
 }  // namespace tumble::scene::detail

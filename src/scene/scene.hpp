@@ -72,7 +72,8 @@ struct Scene {
   PhysicsSettings physics;
   std::vector<BodySpec> bodies;
   std::vector<PlaneSpec> planes;  // in the order written; none means no contact code runs
-  // Rendering. The ground's height, when not written, is chosen below the whole motion.
+  // Rendering. The ground's height, when not written, is chosen below the whole motion; a scene
+  // with planes has no ground_height (its floor is a plane, app/plane_view.hpp).
   render::RenderSettings render;
   std::optional<double> ground_height;  // m
   int fps = 60;                         // video frames per simulated second

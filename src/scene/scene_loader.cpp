@@ -1,6 +1,7 @@
 #include "scene/scene_loader.hpp"
 
 #include "scene/key_depth.hpp"
+#include "scene/plane_tables.hpp"
 #include "scene/render_tables.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/table_reader.hpp"
@@ -30,19 +31,6 @@ using namespace detail;
 const std::array<Vec3, 5> kPalette = {Vec3(0.89, 0.40, 0.18), Vec3(0.20, 0.51, 0.78),
                                       Vec3(0.35, 0.67, 0.33), Vec3(0.85, 0.70, 0.20),
                                       Vec3(0.60, 0.40, 0.70)};
-
-// The vector at `key` no longer than `bound`: for places and motions the bounds past which a run
-// counts as blown up (sim/simulation.hpp), since a start beyond them would stop at step 1; for
-// forces and torques the largest double, since their length is used in the physics.
-Vec3 vector_within(TableReader& in, std::string_view key, const Vec3& value, double bound,
-                   const char* unit) {
-  const double length = value.stableNorm();  // norm() squares: 1e200 would read as infinite
-  if (!(length <= bound)) {
-    in.fail(key, "its length " + format_number(length) + " " + unit + " is past the " +
-                     format_number(bound) + " " + unit + " tumble can simulate");
-  }
-  return value;
-}
 
 constexpr double kLargest = std::numeric_limits<double>::max();
 
@@ -104,9 +92,7 @@ physics::ForceLaw read_force(TableReader& in) {
 BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) {
   BodySpec body;
   body.name = in.optional_string("name", "body" + std::to_string(index));
-  if (!is_safe_name(body.name)) {
-    in.fail("name", "must be 1-100 letters, digits, '_', '-' or '.', not starting with '.'");
-  }
+  if (!is_safe_name(body.name)) in.fail("name", kSafeNameRule);
   const std::string shape = in.required_string("shape");
   const toml::node& size = in.required("size");
   if (shape == "cube") {
@@ -146,6 +132,7 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   if (!std::isfinite(physics::kinetic_energy(start))) {
     in.fail("mass", "with this mass and motion the kinetic energy is beyond double precision");
   }
+  body.material = read_material(in, body.material);
   body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
   if (in.has("forces")) {
     const toml::array* forces = in.table().get("forces")->as_array();
@@ -199,6 +186,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
                    "unknown integrator " + in_quotes(name) + " (expected " + known + ")");
     }
     scene.physics.integrator = *integrator;
+    scene.physics.contact = read_contact_settings(physics);
     physics.reject_unknown_keys();
   }
   // Checked whether dt was written or defaulted; blamed on dt if written, else on duration.
@@ -245,6 +233,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
                   scene.bodies.size(), body_steps, static_cast<double>(kMaxBodySteps));
     fail_on_dt(what);
   }
+  read_planes(in, scene);
   read_render_tables(in, scene);
   in.reject_unknown_keys();
   return scene;

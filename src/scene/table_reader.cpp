@@ -88,6 +88,16 @@ bool is_safe_name(const std::string& name) {
   return true;
 }
 
+Vec3 vector_within(TableReader& in, std::string_view key, const Vec3& value, double bound,
+                   const char* unit) {
+  const double length = value.stableNorm();  // norm() squares: 1e200 would read as infinite
+  if (!(length <= bound)) {
+    in.fail(key, "its length " + format_number(length) + " " + unit + " is past the " +
+                     format_number(bound) + " " + unit + " tumble can simulate");
+  }
+  return value;
+}
+
 Vec3 TableReader::optional_color(std::string_view key, const Vec3& fallback) {
   if (!has(key)) return fallback;
   const toml::node& node = *table_.get(key);

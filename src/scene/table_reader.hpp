@@ -208,4 +208,15 @@ void require_non_negative(TableReader& reader, std::string_view key, double valu
 // Names become folder and file names: keep them to a safe alphabet.
 bool is_safe_name(const std::string& name);
 
+// What is_safe_name allows, as a clause for messages.
+inline constexpr std::string_view kSafeNameRule =
+    "must be 1-100 letters, digits, '_', '-' or '.', not starting with '.'";
+
+// `value` (read from `key`) when its length is at most `bound` (in `unit`), else an error at the
+// key: for places and motions the bounds past which a run counts as blown up
+// (sim/simulation.hpp), since a start beyond them would stop at step 1; for forces and torques
+// the largest double, since their length is used in the physics.
+Vec3 vector_within(TableReader& in, std::string_view key, const Vec3& value, double bound,
+                   const char* unit);
+
 }  // namespace tumble::scene::detail

@@ -426,6 +426,146 @@ mass = 1.0
   EXPECT_EQ(std::get<Scene>(result).source_path, "some/folder/falling_lid.toml");
 }
 
+// Every key of [[planes]], the body materials and the penalty settings, as written.
+TEST(SceneLoader, PlanesMaterialsAndContactSettingsAreReadAsWritten) {
+  const Scene scene = parse_valid(R"(duration = 1.0
+[physics]
+contact = "penalty"
+contact_stiffness = 2e4
+contact_damping = 0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+restitution = 1
+friction = 0
+[[planes]]
+name = "floor"
+point = [1, 0, -2]
+normal = [0, 2, 0]
+restitution = 0.25
+friction = 1.5
+visible = false
+size = [4, 6.5]
+)");
+  EXPECT_EQ(scene.physics.contact.method, physics::ContactMethod::penalty);
+  EXPECT_EQ(scene.physics.contact.stiffness, 2e4);
+  EXPECT_EQ(scene.physics.contact.damping, 0.0);
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_EQ(scene.bodies[0].material.restitution, 1.0);
+  EXPECT_EQ(scene.bodies[0].material.friction, 0.0);
+  ASSERT_EQ(scene.planes.size(), 1u);
+  const PlaneSpec& floor = scene.planes[0];
+  EXPECT_EQ(floor.name, "floor");
+  EXPECT_EQ(floor.point, Vec3(1.0, 0.0, -2.0));
+  EXPECT_EQ(floor.normal, Vec3::UnitY());  // [0, 2, 0] made unit
+  EXPECT_EQ(floor.material.restitution, 0.25);
+  EXPECT_EQ(floor.material.friction, 1.5);
+  EXPECT_FALSE(floor.visible);
+  EXPECT_EQ(floor.size[0], 4.0);
+  EXPECT_EQ(floor.size[1], 6.5);
+}
+
+TEST(SceneLoader, PlanesMaterialsAndContactTakeTheirDefaults) {
+  const Scene scene = parse_valid(R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.0, 3.0, 0.0]
+[[planes]]
+point = [0, 0, 0]
+normal = [0, 1, 0]
+[[planes]]
+point = [-5, 0, 0]
+normal = [1, 0, 0]
+)");
+  const physics::ContactSettings defaults;
+  EXPECT_EQ(scene.physics.contact.method, physics::ContactMethod::impulse);
+  EXPECT_EQ(scene.physics.contact.restitution_threshold, defaults.restitution_threshold);
+  EXPECT_EQ(scene.physics.contact.stiffness, defaults.stiffness);
+  EXPECT_EQ(scene.physics.contact.damping, defaults.damping);
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_EQ(scene.bodies[0].material.restitution, 0.0);
+  EXPECT_EQ(scene.bodies[0].material.friction, 0.5);
+  ASSERT_EQ(scene.planes.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const PlaneSpec& plane = scene.planes[i];
+    EXPECT_EQ(plane.name, "plane" + std::to_string(i));  // named by index, like bodies
+    EXPECT_EQ(plane.material.restitution, 0.0);
+    EXPECT_EQ(plane.material.friction, 0.5);
+    EXPECT_TRUE(plane.visible);
+    EXPECT_EQ(plane.size[0], 20.0);
+    EXPECT_EQ(plane.size[1], 20.0);
+  }
+  EXPECT_EQ(scene.planes[1].normal, Vec3::UnitX());
+}
+
+TEST(SceneLoader, ImpulseContactReadsItsRestitutionThreshold) {
+  const Scene scene = parse_valid(R"(duration = 1.0
+[physics]
+contact = "impulse"
+restitution_threshold = 0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)");
+  EXPECT_EQ(scene.physics.contact.method, physics::ContactMethod::impulse);
+  EXPECT_EQ(scene.physics.contact.restitution_threshold, 0.0);
+  EXPECT_TRUE(scene.planes.empty());
+}
+
+// Unit length whatever the written length, from denormal to near the largest double.
+TEST(SceneLoader, PlaneNormalIsStoredAsUnit) {
+  const auto normal_of = [](const std::string& written) {
+    const Scene scene = parse_valid(
+        "duration = 1.0\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\nposition = [9, "
+        "9, 9]\n[[planes]]\npoint = [0, 0, 0]\nnormal = " +
+        written + "\n");
+    return scene.planes.empty() ? Vec3(Vec3::Zero()) : scene.planes[0].normal;
+  };
+  const Vec3 slope = normal_of("[0, 3, 4]");
+  EXPECT_NEAR(slope.x(), 0.0, 1e-16);
+  EXPECT_NEAR(slope.y(), 0.6, 1e-15);
+  EXPECT_NEAR(slope.z(), 0.8, 1e-15);
+  EXPECT_EQ(normal_of("[1e-310, 0, 0]"), Vec3::UnitX());
+  const Vec3 huge = normal_of("[1.7e308, 1.7e308, 0]");
+  EXPECT_NEAR(huge.x(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(huge.y(), std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(huge.norm(), 1.0, 1e-15);
+}
+
+// Resting on a plane is the usual start: a face on the floor, an edge on a slope within the
+// 1e-9 m written decimals can miss by, and a corner just touching a wall all load.
+TEST(SceneLoader, ABodyMayStartTouchingAPlane) {
+  const Scene scene = parse_valid(R"(duration = 1.0
+[[bodies]]
+name = "resting"
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+[[bodies]]
+name = "on_edge"
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [3.0, 0.7071067811, 0.0]
+orientation = [0.9238795325112867, 0.0, 0.0, 0.3826834323650898]
+[[planes]]
+name = "floor"
+point = [0, 0, 0]
+normal = [0, 1, 0]
+[[planes]]
+name = "wall"
+point = [-0.5, 0, 0]
+normal = [1, 0, 0]
+)");
+  EXPECT_EQ(scene.planes.size(), 2u);
+}
+
 // The error message for `text`, or a test failure if it loads.
 std::string message_of(const std::string& text, const std::string& path = "test.toml") {
   SceneOrError result = parse_scene(text, path);
@@ -1364,6 +1504,103 @@ mass = 1.0
 color = [0.5, 0.5]
 )",
      "test.toml:6:9", "bodies[0].color", "colour \"#rrggbb\" or [r, g, b], found an array of 2"},
+    {"BodyInsideAPlaneIsBlamedOnItsPosition", R"(duration = 1.0
+[[bodies]]
+name = "cube"
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.0, 0.38, 0.0]
+[[planes]]
+name = "floor"
+point = [0, 0, 0]
+normal = [0, 1, 0]
+)",
+     "test.toml:7:12", "bodies[0].position", "body \"cube\" starts 0.12 m inside plane \"floor\""},
+    {"BodyAtTheDefaultPositionInsideAPlaneIsBlamedOnThePlanesPoint", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[planes]]
+point = [0, 0, 0]
+normal = [0, 1, 0]
+[[planes]]
+name = "wall"
+point = [0, 0, 0.25]
+normal = [0, 0, -1]
+)",
+     "test.toml:7:9", "planes[0].point", "body \"body0\" starts 0.5 m inside plane \"plane0\""},
+    {"ContactStiffnessWithTheDefaultImpulseContact", R"(duration = 1.0
+[physics]
+contact_stiffness = 1e5
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:3:21", "physics.contact_stiffness",
+     "is for contact = \"penalty\" only, and this scene's contact is \"impulse\" (the default)"},
+    {"ContactStiffnessZero", R"(duration = 1.0
+[physics]
+contact = "penalty"
+contact_stiffness = 0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:4:21", "physics.contact_stiffness", "must be greater than 0 (got 0)"},
+    {"PlanesNotTables", R"(duration = 1.0
+planes = 3
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)",
+     "test.toml:2:10", "planes", "expected [[planes]] tables"},
+    {"PlaneNormalOfTwoNumbers", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[planes]]
+point = [0, -1, 0]
+normal = [0, 1]
+)",
+     "test.toml:8:10", "planes[0].normal", "expected an array of 3 numbers [x, y, z]"},
+    {"PlaneWithoutPoint", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[planes]]
+normal = [0, 1, 0]
+)",
+     "test.toml:6:1", "planes[0].point", "missing required key in planes[0]"},
+    {"PlaneSizeOfOneNumber", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[planes]]
+point = [0, -1, 0]
+normal = [0, 1, 0]
+size = 10
+)",
+     "test.toml:9:8", "planes[0].size", "expected an array of 2 numbers [across, up the slope]"},
+    {"GroundEnabledWithPlanes", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[planes]]
+point = [0, -1, 0]
+normal = [0, 1, 0]
+[ground]
+enabled = false
+)",
+     "test.toml:10:11", "ground.enabled", "not used in a scene with [[planes]]"},
 };
 
 INSTANTIATE_TEST_SUITE_P(BadScenes, SceneLoaderRejects, ::testing::ValuesIn(kBadScenes),

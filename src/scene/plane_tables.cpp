@@ -1,0 +1,155 @@
+#include "scene/plane_tables.hpp"
+
+#include <array>
+#include <set>
+
+#include "scene/limits.hpp"
+#include "scene/scene_builder.hpp"
+#include "sim/simulation.hpp"
+
+namespace tumble::scene::detail {
+namespace {
+
+constexpr std::array<physics::ContactMethod, 2> kContactMethods = {physics::ContactMethod::impulse,
+                                                                   physics::ContactMethod::penalty};
+
+// A body may start touching a plane; this much overlap is the round-off of writing a resting
+// body's position in decimal (m).
+constexpr double kStartOverlapAllowed = 1e-9;
+
+// `size` of a plane: [across, up the slope], each in (0, kMaxPosition] m.
+void read_drawn_size(TableReader& in, PlaneSpec& plane) {
+  if (!in.has("size")) return;
+  const toml::node& node = *in.table().get("size");
+  const toml::array* array = node.as_array();
+  if (!array || array->size() != 2) {
+    in.fail("size", "expected an array of 2 numbers [across, up the slope] (m), found " +
+                        (array ? "an array of " + std::to_string(array->size())
+                               : std::string(type_name(node))));
+  }
+  for (std::size_t i = 0; i < 2; ++i) plane.size[i] = in.number("size", (*array)[i]);
+  // Appended, not "[" + ...: GCC 12 warns falsely (-Wrestrict) on a literal plus a temporary.
+  std::string written = "[";
+  written += format_number(plane.size[0]) + ", " + format_number(plane.size[1]) + "]";
+  if (!(plane.size[0] > 0.0 && plane.size[1] > 0.0)) {
+    in.fail("size", "both extents must be greater than 0 (got " + written + ")");
+  }
+  if (plane.size[0] > sim::kMaxPosition || plane.size[1] > sim::kMaxPosition) {
+    in.fail("size", "an extent is past the " + format_number(sim::kMaxPosition) +
+                        " m tumble can draw (got " + written + ")");
+  }
+}
+
+PlaneSpec read_plane(TableReader& in, std::size_t index) {
+  PlaneSpec plane;
+  plane.name = in.optional_string("name", "plane" + std::to_string(index));
+  if (!is_safe_name(plane.name)) in.fail("name", kSafeNameRule);
+  plane.point = vector_within(in, "point", in.required_vector("point"), sim::kMaxPosition, "m");
+  const Vec3 normal = in.required_vector("normal");
+  // Divided by its largest component first, so that neither 1e-300 nor 1e300 under- or
+  // overflows on the way to unit length.
+  const double largest = normal.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) in.fail("normal", "must not be the zero vector");
+  plane.normal = (normal / largest).normalized();
+  plane.material = read_material(in, plane.material);
+  plane.visible = in.optional_bool("visible", plane.visible);
+  read_drawn_size(in, plane);
+  in.reject_unknown_keys();
+  return plane;
+}
+
+// A body's initial box must be outside every plane: the contact would otherwise start by
+// throwing it out. Blamed on the body's position if written, else on the plane's point.
+void refuse_bodies_inside(const TableReader& root, const Scene& scene) {
+  const toml::array& bodies = *root.table().get("bodies")->as_array();
+  const toml::array& planes = *root.table().get("planes")->as_array();
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const BodySpec& body = scene.bodies[i];
+    const physics::BodyState start = initial_state(body);
+    for (std::size_t j = 0; j < scene.planes.size(); ++j) {
+      const PlaneSpec& spec = scene.planes[j];
+      const physics::Plane plane{.normal = spec.normal, .offset = spec.normal.dot(spec.point)};
+      const double depth = -physics::closest_corner(start, 0.5 * body.size, plane).separation;
+      if (!(depth > kStartOverlapAllowed)) continue;
+      const std::string what = "body " + in_quotes(body.name) + " starts " + format_number(depth) +
+                               " m inside plane " + in_quotes(spec.name);
+      const toml::table& body_table = *bodies[i].as_table();
+      if (body_table.contains("position")) {
+        TableReader(body_table, "bodies[" + std::to_string(i) + "]", root.file())
+            .fail("position", what);
+      }
+      TableReader(*planes[j].as_table(), "planes[" + std::to_string(j) + "]", root.file())
+          .fail("point", what);
+    }
+  }
+}
+
+}  // namespace
+
+physics::Material read_material(TableReader& in, const physics::Material& fallback) {
+  physics::Material out;
+  out.restitution = in.optional_number("restitution", fallback.restitution);
+  if (!(out.restitution >= 0.0 && out.restitution <= 1.0)) {
+    in.fail("restitution", "must be from 0 to 1 (got " + format_number(out.restitution) + ")");
+  }
+  out.friction = in.optional_number("friction", fallback.friction);
+  require_non_negative(in, "friction", out.friction);
+  return out;
+}
+
+physics::ContactSettings read_contact_settings(TableReader& in) {
+  physics::ContactSettings out;
+  const bool written = in.has("contact");
+  const std::string name = in.optional_string("contact", physics::contact_method_name(out.method));
+  std::string known;
+  for (const physics::ContactMethod method : kContactMethods) {
+    if (name == physics::contact_method_name(method)) out.method = method;
+    known += (known.empty() ? "" : " or ") + std::string(physics::contact_method_name(method));
+  }
+  if (name != physics::contact_method_name(out.method)) {
+    in.fail("contact", "unknown contact method " + in_quotes(name) + " (expected " + known + ")");
+  }
+  // A setting of the other method would be silently unused: refused instead.
+  const auto only_with = [&](const char* key, physics::ContactMethod method) {
+    if (!in.has(key) || out.method == method) return;
+    in.fail(key, std::string("is for contact = \"") + physics::contact_method_name(method) +
+                     "\" only, and this scene's contact is \"" + name + "\"" +
+                     (written ? "" : " (the default)"));
+  };
+  only_with("contact_stiffness", physics::ContactMethod::penalty);
+  only_with("contact_damping", physics::ContactMethod::penalty);
+  only_with("restitution_threshold", physics::ContactMethod::impulse);
+  out.stiffness = in.optional_number("contact_stiffness", out.stiffness);
+  require_positive(in, "contact_stiffness", out.stiffness);
+  out.damping = in.optional_number("contact_damping", out.damping);
+  require_non_negative(in, "contact_damping", out.damping);
+  out.restitution_threshold =
+      in.optional_number("restitution_threshold", out.restitution_threshold);
+  require_non_negative(in, "restitution_threshold", out.restitution_threshold);
+  return out;
+}
+
+void read_planes(TableReader& root, Scene& scene) {
+  if (!root.has("planes")) return;
+  const toml::array* planes = root.table().get("planes")->as_array();
+  if (!planes) root.fail("planes", "expected [[planes]] tables");
+  if (planes->size() > static_cast<std::size_t>(kMaxPlanes)) {
+    root.fail_at((*planes)[static_cast<std::size_t>(kMaxPlanes)].source(), "planes",
+                 std::to_string(planes->size()) + " planes, more than the limit of " +
+                     std::to_string(kMaxPlanes));
+  }
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < planes->size(); ++i) {
+    const std::string path = "planes[" + std::to_string(i) + "]";
+    const toml::table* table = (*planes)[i].as_table();
+    if (!table) root.fail_at((*planes)[i].source(), path, "expected a [[planes]] table");
+    TableReader in(*table, path, root.file());
+    scene.planes.push_back(read_plane(in, i));
+    if (!names.insert(scene.planes.back().name).second) {
+      in.fail("name", "duplicate plane name " + in_quotes(scene.planes.back().name));
+    }
+  }
+  refuse_bodies_inside(root, scene);
+}
+
+}  // namespace tumble::scene::detail

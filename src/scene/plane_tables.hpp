@@ -1,0 +1,22 @@
+// The contact parts of a scene file: [[planes]], the surface material of bodies and planes, and
+// the contact settings in [physics]. Internal to src/scene/.
+#pragma once
+
+#include "scene/scene.hpp"
+#include "scene/table_reader.hpp"
+
+namespace tumble::scene::detail {
+
+// `restitution` (0 to 1) and `friction` (>= 0) of a [[bodies]] or [[planes]] table; what is
+// left out keeps its value in `fallback`.
+physics::Material read_material(TableReader& in, const physics::Material& fallback);
+
+// contact, contact_stiffness, contact_damping and restitution_threshold of [physics]: each
+// setting only with the method that uses it.
+physics::ContactSettings read_contact_settings(TableReader& physics);
+
+// The [[planes]] tables of `root` into scene.planes, then refuses a body that starts inside a
+// plane. Needs scene.bodies read.
+void read_planes(TableReader& root, Scene& scene);
+
+}  // namespace tumble::scene::detail
