@@ -30,9 +30,12 @@ Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const
                             double margin) {
   std::array<ContactPoint, 8> candidates;
   int count = 0;
+  // n·(x + R c) - offset = n·x - offset + (Rᵀ n)·c: one rotation for all eight corners.
+  const Vec3 body_normal = state.orientation().conjugate() * plane.normal;
+  const double centre = separation(plane, state.position());
   for (int feature = 0; feature < 8; ++feature) {
     const Vec3 body_point = corner(half_size, feature);
-    const double s = separation(plane, body_point_to_world(state, body_point));
+    const double s = centre + body_normal.dot(body_point);
     if (s < margin)
       candidates[count++] = {.feature = feature, .body_point = body_point, .separation = s};
   }

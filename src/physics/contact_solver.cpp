@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace tumble::physics {
 namespace {
@@ -30,7 +31,7 @@ Vec3 point_velocity(const SolverBody& body, const Vec3& arm) {
 
 // One pass of friction then normal impulses over every point (normal last: it matters most).
 // Returns the largest change of an accumulated impulse (N s).
-double inelastic_pass(std::vector<SolverBody>& bodies, std::vector<ContactConstraint>& points) {
+double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points) {
   double largest_change = 0.0;
   for (ContactConstraint& c : points) {
     SolverBody& body = bodies[c.body];
@@ -64,7 +65,7 @@ double inelastic_pass(std::vector<SolverBody>& bodies, std::vector<ContactConstr
 
 // One pass driving each bouncing point's normal speed up to -e × its approach speed, adding to
 // (never taking from below zero) the impulse it already has.
-double bounce_pass(std::vector<SolverBody>& bodies, std::vector<ContactConstraint>& points,
+double bounce_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                    const std::vector<double>& bounce_impulse, std::vector<double>& accumulated) {
   double largest_change = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -82,7 +83,7 @@ double bounce_pass(std::vector<SolverBody>& bodies, std::vector<ContactConstrain
   return largest_change;
 }
 
-double largest_normal_impulse(const std::vector<ContactConstraint>& points) {
+double largest_normal_impulse(std::span<const ContactConstraint> points) {
   double largest = 0.0;
   for (const ContactConstraint& c : points) largest = std::max(largest, c.normal_impulse);
   return largest;
@@ -146,7 +147,7 @@ ContactConstraint make_constraint(std::size_t body_index, const SolverBody& body
   return c;
 }
 
-void solve_contacts(std::vector<SolverBody>& bodies, std::vector<ContactConstraint>& points,
+void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                     const SolveSettings& settings) {
   // Which points may bounce is known before the solve; the energy guard needs the energies then.
   const auto may_bounce = [&](const ContactConstraint& c) {
@@ -191,7 +192,7 @@ void solve_contacts(std::vector<SolverBody>& bodies, std::vector<ContactConstrai
     }
   }
   if (!any) return;
-  const std::vector<SolverBody> inelastic = bodies;
+  const std::vector<SolverBody> inelastic(bodies.begin(), bodies.end());
   std::vector<double> accumulated(points.size(), 0.0);
   for (int pass = 0; pass < settings.iterations; ++pass) {
     const double change = bounce_pass(bodies, points, bouncing, accumulated);

@@ -5,7 +5,7 @@
 // ties one body to a static shape (a plane), and the next step of this design adds a second body.
 #pragma once
 
-#include <vector>
+#include <span>
 
 #include "physics/contact.hpp"
 #include "physics/rigid_body.hpp"
@@ -66,7 +66,7 @@ struct SolveSettings {
 // would raise the kinetic energy above its value before the solve is scaled back until it does
 // not (sequential bounces at several points can otherwise create energy: Box3D issue 83).
 // Accumulated impulses are written back to each point's `source`.
-void solve_contacts(std::vector<SolverBody>& bodies, std::vector<ContactConstraint>& points,
+void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                     const SolveSettings& settings);
 
 }  // namespace tumble::physics

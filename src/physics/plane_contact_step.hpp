@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "physics/contact.hpp"
+#include "physics/contact_solver.hpp"
 #include "physics/integrators.hpp"
 
 namespace tumble::physics {
@@ -18,6 +19,21 @@ inline constexpr double kTouchingDistance = 1e-6;
 inline constexpr int kMaxImpactsPerStep = 8;
 // Passes of the velocity solver over the points of one body.
 inline constexpr int kContactIterations = 40;
+
+// A corner of the box that may hit a plane within a step.
+struct ImpactCorner {
+  std::size_t plane = 0;
+  Vec3 body_point = Vec3::Zero();  // body frame (m)
+};
+
+// One body's contact between steps: its last manifold with each plane (warm starting), and
+// scratch space kept from step to step so that a step of a touching body allocates nothing.
+struct PlaneContacts {
+  std::vector<Manifold> manifolds;           // one per plane, in the planes' order
+  std::vector<Manifold> found;               // scratch
+  std::vector<ContactConstraint> points;     // scratch
+  std::vector<ImpactCorner> impact_corners;  // scratch
+};
 
 // How far an impulse applied over a step of h moves the body in that step, as a multiple of the
 // velocity change it causes: the position weight each integrator gives a force held constant over
@@ -39,9 +55,9 @@ double impulse_position_weight(Integrator integrator, double h /* s */);
 //    moves the pose by impulse_position_weight × its velocity change, and a non-linear
 //    Gauss-Seidel projection of the pose (Catto, Box2D 2.4 "solve position constraints") pushes
 //    what is still inside out to the surface, moving no momentum, so it adds no kinetic energy.
-// `memory` holds the body's last manifold per plane (warm starting); it is resized to the planes.
+// `contacts` carries the body's manifolds from step to step (sized to the planes on first use).
 BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
                            double t /* s */, double dt /* s */, const std::vector<Plane>& planes,
-                           const ContactSettings& settings, std::vector<Manifold>& memory);
+                           const ContactSettings& settings, PlaneContacts& contacts);
 
 }  // namespace tumble::physics

@@ -20,7 +20,7 @@ Simulation::Simulation(std::vector<physics::BodyModel> models,
       dt_(dt),
       planes_(std::move(planes)),
       contact_(contact),
-      contact_memory_(planes_.empty() ? 0 : models_.size()) {
+      contacts_(planes_.empty() ? 0 : models_.size()) {
   assert(models_.size() == current_.size());
   assert(dt_ > 0.0);
 }
@@ -70,7 +70,7 @@ void Simulation::step() {
   } else {
     for (std::size_t i = 0; i < models_.size(); ++i) {
       current_[i] = physics::step_with_planes(integrator_, models_[i], previous_[i], t, dt_,
-                                              planes_, contact_, contact_memory_[i]);
+                                              planes_, contact_, contacts_[i]);
     }
   }
   ++step_count_;

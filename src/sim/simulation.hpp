@@ -9,6 +9,7 @@
 
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
+#include "physics/plane_contact_step.hpp"
 #include "physics/rigid_body.hpp"
 
 namespace tumble::sim {
@@ -71,8 +72,8 @@ class Simulation {
   double dt_;
   std::vector<physics::Plane> planes_;
   physics::ContactSettings contact_;
-  // Per body, its last manifold with each plane (warm starting the contact solve).
-  std::vector<std::vector<physics::Manifold>> contact_memory_;
+  // Per body, its manifolds with the planes from step to step (warm starting the contact solve).
+  std::vector<physics::PlaneContacts> contacts_;
   std::int64_t step_count_ = 0;
   std::optional<BlowUp> blow_up_;
 };
