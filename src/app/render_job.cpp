@@ -60,7 +60,7 @@ RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
     return result;
   }
   render::RenderSettings settings = scene.render;
-  settings.ground.height = framing.ground_height;
+  settings.ground = framing.ground;
 
   const std::unique_ptr<render::Renderer> renderer =
       render::Renderer::create(settings, plan.shader_directory, result.error);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "app/plane_view.hpp"
 #include "app/stability_report.hpp"
 #include "scene/scene_builder.hpp"
 
@@ -49,6 +50,17 @@ Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
   }
 
   Framing out;
+  if (scene.planes.empty()) {
+    out.ground = scene.render.ground;
+    out.ground.height = scene.ground_height.value_or(lowest_point - 0.25 * largest_radius);
+  } else {
+    DrawnPlanes planes = drawn_planes(scene);
+    out.ground = planes.ground;
+    out.quads = std::move(planes.quads);
+    // Walls as far as two motion radii from it: a room around a small motion shows, a default
+    // 20 m wall does not take over the picture.
+    frame_walls(out.quads, 2.0 * (0.5 * (high - low).norm() + largest_radius), low, high);
+  }
   const physics::Vec3 center = 0.5 * (low + high);
   const double radius = 0.5 * (high - low).norm() + largest_radius;
   out.camera.look_at = scene.camera.look_at.value_or(center);
@@ -70,7 +82,6 @@ Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
     out.camera.position =
         out.camera.look_at + distance * physics::Vec3(0.55, 0.42, 0.72).normalized();
   }
-  out.ground_height = scene.ground_height.value_or(lowest_point - 0.25 * largest_radius);
   out.follow_offset = out.camera.position - out.camera.look_at;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     if (scene.bodies[i].name == scene.camera.follow) out.follow_index = static_cast<int>(i);
@@ -125,6 +136,7 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
     view.camera.look_at = states[static_cast<std::size_t>(framing.follow_index)].position();
     view.camera.position = view.camera.look_at + framing.follow_offset;
   }
+  view.quads = framing.quads;
   view.boxes.reserve(states.size());
   for (std::size_t i = 0; i < states.size(); ++i) {
     view.boxes.push_back(render::Box{.position = states[i].position(),

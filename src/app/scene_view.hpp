@@ -17,9 +17,12 @@ namespace tumble::app {
 // Where the camera and ground go when the scene leaves them out: chosen from the whole motion.
 struct Framing {
   render::Camera camera;  // position and look_at as written, or framing every body at all times
-  double ground_height;   // as written, or just below the lowest point any body reaches (m)
-  render::Vec3 follow_offset;  // camera position - look_at, kept when following a body
-  int follow_index = -1;       // the followed body, or -1
+  // [ground] as written. Without planes its height is as written, or just below the lowest point
+  // any body reaches; with planes it is the floor plane (app/plane_view.hpp).
+  render::Ground ground;
+  std::vector<render::Quad> quads;  // the planes other than the floor, the same every frame
+  render::Vec3 follow_offset;       // camera position - look_at, kept when following a body
+  int follow_index = -1;            // the followed body, or -1
 };
 
 // Thrown when a render must stop before its last frame; what() says why.
@@ -41,7 +44,8 @@ std::vector<physics::BodyState> checked_states_at(sim::Simulation& simulation,
 Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
                     const StopRequested& stop_requested);
 
-// The frame for the body states at time t (s): the bodies, plus springs and active pushes.
+// The frame for the body states at time t (s): the bodies, plus springs and active pushes, and
+// the planes' quads.
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                              const std::vector<physics::BodyState>& states, double t);
 

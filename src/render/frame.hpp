@@ -1,5 +1,5 @@
-// What the renderer draws, as plain data: a camera, lights, and boxes with poses. It knows
-// nothing of bodies, forces or time.
+// What the renderer draws, as plain data: a camera, lights, boxes with poses and quads. It knows
+// nothing of bodies, planes, forces or time.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -42,6 +42,19 @@ struct Box {
   Color color = Color(0.85, 0.35, 0.2);  // sRGB
 };
 
+// A finite piece of a plane (a wall, a slope, a raised floor): matte, gridded, framed by a dark
+// border, lit, casting and receiving shadows. Seen from its back it is a pane of glass instead:
+// drawn translucent after the boxes and casting no shadow, so that a wall between the camera and
+// the boxes never hides or darkens them.
+struct Quad {
+  Vec3 center = Vec3::Zero();             // world frame (m)
+  Quat orientation = Quat::Identity();    // quad to world: edges along local x and z, front along y
+  double width = 1.0;                     // edge along local x (m)
+  double depth = 1.0;                     // edge along local z (m)
+  Color color = Color(0.62, 0.64, 0.66);  // sRGB
+  double grid_spacing = 1.0;              // m between grid lines, from the centre; 0 = no grid
+};
+
 // Fixed for a whole render.
 struct RenderSettings {
   int width = 1280;
@@ -57,6 +70,7 @@ struct RenderSettings {
 struct FrameView {
   Camera camera;
   std::vector<Box> boxes;
+  std::vector<Quad> quads;
 };
 
 }  // namespace tumble::render

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "render/geometry.hpp"
 #include "render/gl.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/shader_program.hpp"
@@ -12,66 +13,17 @@
 namespace tumble::render {
 namespace {
 
-using Mat4 = Eigen::Matrix4d;
 using Mat4f = Eigen::Matrix4f;
 using Mat3f = Eigen::Matrix3f;
 using Mat3 = Eigen::Matrix3d;
 
 constexpr int kShadowMapSize = 1024;  // texels per side
-
-// The sRGB decoding function (IEC 61966-2-1): written colours to linear light.
-Eigen::Vector3f linear_from_srgb(const Color& srgb) {
-  Eigen::Vector3f out;
-  for (int i = 0; i < 3; ++i) {
-    const double c = std::clamp(srgb[i], 0.0, 1.0);
-    out[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
-  }
-  return out;
-}
-
-Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up) {
-  const Vec3 forward = (target - eye).normalized();
-  Vec3 side = forward.cross(up);
-  // Looking along `up`: any perpendicular will do.
-  if (side.squaredNorm() < 1e-12) side = forward.cross(forward.unitOrthogonal());
-  side.normalize();
-  const Vec3 true_up = side.cross(forward);
-  Mat4 view = Mat4::Identity();
-  view.row(0).head<3>() = side;
-  view.row(1).head<3>() = true_up;
-  view.row(2).head<3>() = -forward;
-  view(0, 3) = -side.dot(eye);
-  view(1, 3) = -true_up.dot(eye);
-  view(2, 3) = forward.dot(eye);
-  return view;
-}
-
-Mat4 perspective(double fov_y_radians, double aspect, double near, double far) {
-  const double f = 1.0 / std::tan(fov_y_radians / 2.0);
-  Mat4 m = Mat4::Zero();
-  m(0, 0) = f / aspect;
-  m(1, 1) = f;
-  m(2, 2) = (far + near) / (near - far);
-  m(2, 3) = 2.0 * far * near / (near - far);
-  m(3, 2) = -1.0;
-  return m;
-}
-
-Mat4 orthographic(double half_width, double near, double far) {
-  Mat4 m = Mat4::Identity();
-  m(0, 0) = 1.0 / half_width;
-  m(1, 1) = 1.0 / half_width;
-  m(2, 2) = -2.0 / (far - near);
-  m(2, 3) = -(far + near) / (far - near);
-  return m;
-}
-
-Mat4 model_matrix(const Box& box) {
-  Mat4 m = Mat4::Identity();
-  m.topLeftCorner<3, 3>() = box.orientation.normalized().toRotationMatrix() * box.size.asDiagonal();
-  m.topRightCorner<3, 1>() = box.position;
-  return m;
-}
+// A quad seen from its back (from inside the solid, between the camera and the boxes): enough
+// to show where the wall is, little enough to show the boxes behind it clearly.
+constexpr float kBackSideOpacity = 0.3f;
+// How far beyond the boxes' sphere (a multiple of its radius) the shadow map may grow to hold
+// the quads' shadows: each doubling halves the sharpness of the boxes' shadows.
+constexpr double kQuadShadowReach = 16.0;
 
 void set_matrix(GLint location, const Mat4& m) {
   const Mat4f f = m.cast<float>();
@@ -83,8 +35,8 @@ void set_vector(GLint location, const Eigen::Vector3f& v) {
 }
 
 // The screen rectangle (x, y, width, height in pixels, GL's bottom-up rows) that holds the
-// shadows of all boxes on the ground: each corner projected along the light onto the ground plane,
-// then onto the screen. Nothing when no shadow can fall on the ground in view.
+// shadows of all boxes and quads on the ground: each corner projected along the light onto the
+// ground plane, then onto the screen. Nothing when no shadow can fall on the ground in view.
 std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
                                                 const RenderSettings& settings,
                                                 const Mat4& view_projection,
@@ -106,6 +58,19 @@ std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
       high_y = std::max(high_y, clip.y() / clip.w());
     }
   }
+  // Quads cast shadows too (a ramp shades the floor beneath it, and the boxes' shadows there).
+  for (const Quad& quad : view.quads) {
+    if (seen_from_back(quad, view.camera.position)) continue;
+    for (Vec3 point : corners(quad)) {
+      point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
+      const Eigen::Vector4d clip = view_projection * point.homogeneous();
+      if (clip.w() <= 1e-9) return std::array<int, 4>{0, 0, settings.width, settings.height};
+      low_x = std::min(low_x, clip.x() / clip.w());
+      high_x = std::max(high_x, clip.x() / clip.w());
+      low_y = std::min(low_y, clip.y() / clip.w());
+      high_y = std::max(high_y, clip.y() / clip.w());
+    }
+  }
   // To pixels, widened by two for the filter's reach, clamped to the image.
   const auto pixel = [](double ndc, int size) { return 0.5 * (ndc + 1.0) * size; };
   const int x0 = std::max(0, static_cast<int>(std::floor(pixel(low_x, settings.width))) - 2);
@@ -118,36 +83,17 @@ std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
   return std::array<int, 4>{x0, y0, x1 - x0, y1 - y0};
 }
 
-// The unit cube, four vertices per face so that each face has its own normal.
-struct CubeVertex {
-  float position[3];
-  float normal[3];
-};
-
-std::vector<CubeVertex> cube_vertices() {
-  std::vector<CubeVertex> out;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const float sign : {1.0f, -1.0f}) {
-      const int u = (axis + 1) % 3;
-      const int v = (axis + 2) % 3;
-      // Corners counter-clockwise seen from outside: (u, v) = (-,-), (+,-), (+,+), (-,+),
-      // mirrored on the negative face to keep the winding.
-      const float us[4] = {-0.5f, 0.5f, 0.5f, -0.5f};
-      const float vs[4] = {-0.5f, -0.5f, 0.5f, 0.5f};
-      for (int corner = 0; corner < 4; ++corner) {
-        CubeVertex vertex{};
-        vertex.position[axis] = 0.5f * sign;
-        vertex.position[u] = us[corner] * sign;
-        vertex.position[v] = vs[corner];
-        vertex.normal[axis] = sign;
-        out.push_back(vertex);
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace
+
+// What the passes of one frame share.
+struct FrameSetup {
+  Mat4 view_projection;
+  Mat4 light_view_projection;
+  Vec3 light_direction;    // the way the key light travels, world frame, unit
+  double camera_distance;  // from the camera to the point it looks at (m)
+  double radius;           // of the sphere around the look-at point that holds every box (m)
+  double shadow_radius;    // of the sphere the shadow map covers: radius, or more for quads (m)
+};
 
 struct Renderer::Resources {
   RenderSettings settings;
@@ -156,8 +102,10 @@ struct Renderer::Resources {
   ShaderProgram ground_program;
   ShaderProgram shadowed_ground_program;  // the same, receiving shadows
   ShaderProgram shadow_program;
+  ShaderProgram plane_program;  // quads
   GLuint cube_vao = 0, cube_vbo = 0, cube_ebo = 0;
   GLuint ground_vao = 0, ground_vbo = 0;
+  GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
   GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
 
@@ -165,8 +113,9 @@ struct Renderer::Resources {
     if (!context) return;
     glDeleteVertexArrays(1, &cube_vao);
     glDeleteVertexArrays(1, &ground_vao);
-    const GLuint buffers[] = {cube_vbo, cube_ebo, ground_vbo};
-    glDeleteBuffers(3, buffers);
+    glDeleteVertexArrays(1, &quad_vao);
+    const GLuint buffers[] = {cube_vbo, cube_ebo, ground_vbo, quad_vbo};
+    glDeleteBuffers(4, buffers);
     glDeleteFramebuffers(1, &shadow_fbo);
     glDeleteFramebuffers(1, &msaa_fbo);
     glDeleteTextures(1, &shadow_texture);
@@ -175,7 +124,14 @@ struct Renderer::Resources {
   }
 
   std::string create(const std::string& shader_directory);
+  FrameSetup setup(const FrameView& view) const;
+  void draw_shadow_map(const FrameView& view, const FrameSetup& frame);
+  // Binds `program` with the uniforms every lit shader shares.
+  void use(const ShaderProgram& program, const FrameSetup& frame, const Camera& camera);
+  void draw_ground(const FrameView& view, const FrameSetup& frame);
   void draw_boxes(const std::vector<Box>& boxes, const ShaderProgram& program, bool lit);
+  void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
+  void read_pixels(io::Image& out) const;
 };
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
@@ -195,6 +151,9 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
   if (!shadowed_ground_program.valid()) return error;
   shadow_program = ShaderProgram::build(shader_directory, {"shadow.vert"}, {"shadow.frag"}, error);
   if (!shadow_program.valid()) return error;
+  plane_program = ShaderProgram::build(shader_directory, {"plane.vert"},
+                                       {"lighting.glsl", "plane.frag"}, error);
+  if (!plane_program.valid()) return error;
 
   // Cube: positions and normals interleaved, two triangles per face.
   const std::vector<CubeVertex> vertices = cube_vertices();
@@ -227,6 +186,14 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
   glBindBuffer(GL_ARRAY_BUFFER, ground_vbo);
   glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners, GL_STATIC_DRAW);
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(0);
+  // Quads: the same square in the x-z plane, in three dimensions for the shadow shader.
+  glGenVertexArrays(1, &quad_vao);
+  glBindVertexArray(quad_vao);
+  glGenBuffers(1, &quad_vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, quad_vbo);
+  glBufferData(GL_ARRAY_BUFFER, sizeof(kUnitSquare), kUnitSquare, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
   glEnableVertexAttribArray(0);
   glBindVertexArray(0);
 
@@ -317,45 +284,183 @@ std::string Renderer::description() const {
   return resources_->context->description();
 }
 
+FrameSetup Renderer::Resources::setup(const FrameView& view) const {
+  const Camera& camera = view.camera;
+  FrameSetup frame;
+  // The part of the world worth lighting and showing: a sphere around the look-at point that
+  // holds every box.
+  frame.radius = 1.0;
+  for (const Box& box : view.boxes) {
+    frame.radius =
+        std::max(frame.radius, (box.position - camera.look_at).norm() + 0.5 * box.size.norm());
+  }
+  // Quads reach further (a wall behind the boxes): the far plane keeps them, and the shadow
+  // map grows to hold those that cast shadows, up to kQuadShadowReach times the boxes' sphere.
+  double quad_reach = 0.0;
+  double caster_reach = 0.0;
+  for (const Quad& quad : view.quads) {
+    const bool casts = !seen_from_back(quad, camera.position);
+    for (const Vec3& corner : corners(quad)) {
+      const double reach = (corner - camera.look_at).norm();
+      quad_reach = std::max(quad_reach, reach);
+      if (casts) caster_reach = std::max(caster_reach, reach);
+    }
+  }
+  frame.shadow_radius =
+      std::max(frame.radius, std::min(caster_reach, kQuadShadowReach * frame.radius));
+  frame.camera_distance = (camera.position - camera.look_at).norm();
+  const double near = std::max(0.01, 0.05 * std::max(frame.camera_distance - frame.radius, 0.1));
+  const double far = std::max(frame.camera_distance + 4.0 * frame.radius + 100.0,
+                              frame.camera_distance + 1.01 * quad_reach);
+  frame.view_projection =
+      perspective(camera.fov_degrees * M_PI / 180.0,
+                  static_cast<double>(settings.width) / static_cast<double>(settings.height), near,
+                  far) *
+      look_at(camera.position, camera.look_at, camera.up);
+
+  frame.light_direction = settings.light.direction.normalized();
+  const Vec3& light = frame.light_direction;
+  const double r = frame.shadow_radius;
+  frame.light_view_projection = orthographic(r, 0.1, 4.0 * r + 0.1) *
+                                look_at(camera.look_at - 2.0 * r * light, camera.look_at,
+                                        std::abs(light.y()) > 0.99 ? Vec3::UnitZ() : Vec3::UnitY());
+  return frame;
+}
+
+void Renderer::Resources::draw_shadow_map(const FrameView& view, const FrameSetup& frame) {
+  glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
+  glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glUseProgram(shadow_program.id());
+  set_matrix(shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.5f, 2.0f);
+  draw_boxes(view.boxes, shadow_program, false);
+  if (!view.quads.empty()) {
+    glDisable(GL_CULL_FACE);  // a quad casts whichever side the light falls on
+    glBindVertexArray(quad_vao);
+    for (const Quad& quad : view.quads) {
+      if (seen_from_back(quad, view.camera.position)) continue;
+      set_matrix(shadow_program.uniform("u_model"), model_matrix(quad));
+      glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    }
+    glEnable(GL_CULL_FACE);
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void Renderer::Resources::use(const ShaderProgram& program, const FrameSetup& frame,
+                              const Camera& camera) {
+  glUseProgram(program.id());
+  set_matrix(program.uniform("u_view_projection"), frame.view_projection);
+  set_matrix(program.uniform("u_light_view_projection"), frame.light_view_projection);
+  set_vector(program.uniform("u_light_direction"), frame.light_direction.cast<float>());
+  set_vector(program.uniform("u_light_color"), linear_from_srgb(settings.light.color));
+  glUniform1f(program.uniform("u_ambient"), static_cast<float>(settings.light.ambient));
+  set_vector(program.uniform("u_camera_position"), camera.position.cast<float>());
+  glUniform1i(program.uniform("u_shadows"), settings.shadows ? 1 : 0);
+  glUniform1i(program.uniform("u_shadow_map"), 0);
+}
+
+void Renderer::Resources::draw_ground(const FrameView& view, const FrameSetup& frame) {
+  const RenderSettings& s = settings;
+  const auto draw_with = [&](const ShaderProgram& program) {
+    use(program, frame, view.camera);
+    const Vec3 center(view.camera.look_at.x(), s.ground.height, view.camera.look_at.z());
+    const double half_extent = std::max(30.0, 8.0 * (frame.camera_distance + frame.radius));
+    set_vector(program.uniform("u_center"), center.cast<float>());
+    glUniform1f(program.uniform("u_half_extent"), static_cast<float>(half_extent));
+    // lighting.glsl's shade() for the normal (0, 1, 0) without specular (the hemisphere
+    // term is 1 there).
+    const Eigen::Vector3f albedo = linear_from_srgb(s.ground.color);
+    const Eigen::Vector3f key = linear_from_srgb(s.light.color);
+    const float ambient = static_cast<float>(s.light.ambient);
+    const float diffuse = static_cast<float>(std::max(-frame.light_direction.y(), 0.0));
+    set_vector(program.uniform("u_lit_color"), albedo.cwiseProduct(key) * (ambient + diffuse));
+    set_vector(program.uniform("u_shadow_color"), albedo.cwiseProduct(key) * ambient);
+    set_vector(program.uniform("u_background"), linear_from_srgb(s.background));
+    glUniform1f(program.uniform("u_grid_spacing"), static_cast<float>(s.ground.grid_spacing));
+    glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
+    glBindVertexArray(ground_vao);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glEnable(GL_CULL_FACE);
+  };
+  draw_with(ground_program);
+  // Again, with shadows, inside the screen rectangle that holds every box's shadow on the
+  // ground: the same triangles give the same depths, so GL_LEQUAL lets the second pass replace
+  // the first pixel for pixel.
+  const auto region = shadow_region(view, s, frame.view_projection, frame.light_direction);
+  if (s.shadows && region) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
+    glDepthFunc(GL_LEQUAL);
+    draw_with(shadowed_ground_program);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_SCISSOR_TEST);
+  }
+}
+
+void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& frame,
+                                     bool back_sides) {
+  const Vec3& eye = view.camera.position;
+  std::vector<const Quad*> quads;
+  for (const Quad& quad : view.quads) {
+    if (seen_from_back(quad, eye) == back_sides) quads.push_back(&quad);
+  }
+  if (quads.empty()) return;
+  if (back_sides) {
+    // Blended back to front (by centre: exact for quads that do not cross); a stable sort keeps
+    // the given order for equal distances.
+    std::stable_sort(quads.begin(), quads.end(), [&](const Quad* a, const Quad* b) {
+      return (a->center - eye).squaredNorm() > (b->center - eye).squaredNorm();
+    });
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);  // what is behind a translucent quad stays drawable
+  }
+  use(plane_program, frame, view.camera);
+  glDisable(GL_CULL_FACE);
+  glBindVertexArray(quad_vao);
+  for (const Quad* quad : quads) {
+    const Vec3 normal = back_sides ? Vec3(-front_normal(*quad)) : front_normal(*quad);
+    set_matrix(plane_program.uniform("u_model"), model_matrix(*quad));
+    glUniform2f(plane_program.uniform("u_half_size"), static_cast<float>(0.5 * quad->width),
+                static_cast<float>(0.5 * quad->depth));
+    set_vector(plane_program.uniform("u_normal"), normal.cast<float>());
+    set_vector(plane_program.uniform("u_albedo"), linear_from_srgb(quad->color));
+    glUniform1f(plane_program.uniform("u_grid_spacing"), static_cast<float>(quad->grid_spacing));
+    glUniform1f(plane_program.uniform("u_opacity"), back_sides ? kBackSideOpacity : 1.0f);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  }
+  glEnable(GL_CULL_FACE);
+  if (back_sides) {
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
+}
+
+void Renderer::Resources::read_pixels(io::Image& out) const {
+  // RGBA, top row first (the context stores it so) to RGB.
+  if (out.width != settings.width || out.height != settings.height) {
+    out = io::Image(settings.width, settings.height);
+  }
+  const std::uint8_t* rgba = context->pixels();
+  const std::size_t pixel_count = static_cast<std::size_t>(settings.width) * settings.height;
+  for (std::size_t i = 0; i < pixel_count; ++i) {
+    out.rgb[3 * i + 0] = rgba[4 * i + 0];
+    out.rgb[3 * i + 1] = rgba[4 * i + 1];
+    out.rgb[3 * i + 2] = rgba[4 * i + 2];
+  }
+}
+
 void Renderer::draw(const FrameView& view, io::Image& out) {
   Resources& r = *resources_;
   const RenderSettings& s = r.settings;
-  const Camera& camera = view.camera;
-
-  // The part of the world worth lighting and showing: a sphere around the look-at point that
-  // holds every box.
-  double radius = 1.0;
-  for (const Box& box : view.boxes) {
-    radius = std::max(radius, (box.position - camera.look_at).norm() + 0.5 * box.size.norm());
-  }
-  const double camera_distance = (camera.position - camera.look_at).norm();
-  const double near = std::max(0.01, 0.05 * std::max(camera_distance - radius, 0.1));
-  const double far = camera_distance + 4.0 * radius + 100.0;
-  const Mat4 view_projection =
-      perspective(camera.fov_degrees * M_PI / 180.0,
-                  static_cast<double>(s.width) / static_cast<double>(s.height), near, far) *
-      look_at(camera.position, camera.look_at, camera.up);
-
-  const Vec3 light_direction = s.light.direction.normalized();
-  const Mat4 light_view_projection =
-      orthographic(radius, 0.1, 4.0 * radius + 0.1) *
-      look_at(camera.look_at - 2.0 * radius * light_direction, camera.look_at,
-              std::abs(light_direction.y()) > 0.99 ? Vec3::UnitZ() : Vec3::UnitY());
+  const FrameSetup frame = r.setup(view);
 
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
-
-  if (s.shadows) {
-    glBindFramebuffer(GL_FRAMEBUFFER, r.shadow_fbo);
-    glViewport(0, 0, kShadowMapSize, kShadowMapSize);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glUseProgram(r.shadow_program.id());
-    set_matrix(r.shadow_program.uniform("u_light_view_projection"), light_view_projection);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.5f, 2.0f);
-    r.draw_boxes(view.boxes, r.shadow_program, false);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-  }
+  if (s.shadows) r.draw_shadow_map(view, frame);
 
   glBindFramebuffer(GL_FRAMEBUFFER, s.msaa > 1 ? r.msaa_fbo : 0);
   glViewport(0, 0, s.width, s.height);
@@ -366,57 +471,13 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
 
-  const auto set_common = [&](const ShaderProgram& program) {
-    glUseProgram(program.id());
-    set_matrix(program.uniform("u_view_projection"), view_projection);
-    set_matrix(program.uniform("u_light_view_projection"), light_view_projection);
-    set_vector(program.uniform("u_light_direction"), light_direction.cast<float>());
-    set_vector(program.uniform("u_light_color"), linear_from_srgb(s.light.color));
-    glUniform1f(program.uniform("u_ambient"), static_cast<float>(s.light.ambient));
-    set_vector(program.uniform("u_camera_position"), camera.position.cast<float>());
-    glUniform1i(program.uniform("u_shadows"), s.shadows ? 1 : 0);
-    glUniform1i(program.uniform("u_shadow_map"), 0);
-  };
-
-  if (s.ground.enabled) {
-    const auto draw_ground = [&](const ShaderProgram& program) {
-      set_common(program);
-      const Vec3 center(camera.look_at.x(), s.ground.height, camera.look_at.z());
-      const double half_extent = std::max(30.0, 8.0 * (camera_distance + radius));
-      set_vector(program.uniform("u_center"), center.cast<float>());
-      glUniform1f(program.uniform("u_half_extent"), static_cast<float>(half_extent));
-      // lighting.glsl's shade() for the normal (0, 1, 0) without specular (the hemisphere
-      // term is 1 there).
-      const Eigen::Vector3f albedo = linear_from_srgb(s.ground.color);
-      const Eigen::Vector3f key = linear_from_srgb(s.light.color);
-      const float ambient = static_cast<float>(s.light.ambient);
-      const float diffuse = static_cast<float>(std::max(-light_direction.y(), 0.0));
-      set_vector(program.uniform("u_lit_color"), albedo.cwiseProduct(key) * (ambient + diffuse));
-      set_vector(program.uniform("u_shadow_color"), albedo.cwiseProduct(key) * ambient);
-      set_vector(program.uniform("u_background"), linear_from_srgb(s.background));
-      glUniform1f(program.uniform("u_grid_spacing"), static_cast<float>(s.ground.grid_spacing));
-      glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
-      glBindVertexArray(r.ground_vao);
-      glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-      glEnable(GL_CULL_FACE);
-    };
-    draw_ground(r.ground_program);
-    // Again, with shadows, inside the screen rectangle that holds every box's shadow on the
-    // ground: the same triangles give the same depths, so GL_LEQUAL lets the second pass replace
-    // the first pixel for pixel.
-    const auto region = shadow_region(view, s, view_projection, light_direction);
-    if (s.shadows && region) {
-      glEnable(GL_SCISSOR_TEST);
-      glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
-      glDepthFunc(GL_LEQUAL);
-      draw_ground(r.shadowed_ground_program);
-      glDepthFunc(GL_LESS);
-      glDisable(GL_SCISSOR_TEST);
-    }
-  }
-
-  set_common(r.body_program);
+  if (s.ground.enabled) r.draw_ground(view, frame);
+  // A quad seen from its front has the camera on the same side as every box (boxes stay
+  // outside planes), so it can hide none of them: opaque, before the boxes.
+  r.draw_quads(view, frame, false);
+  r.use(r.body_program, frame, view.camera);
   r.draw_boxes(view.boxes, r.body_program, true);
+  r.draw_quads(view, frame, true);
 
   if (s.msaa > 1) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, r.msaa_fbo);
@@ -425,16 +486,7 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
                       GL_NEAREST);
   }
   glFinish();
-
-  // RGBA, top row first (the context stores it so) to RGB.
-  if (out.width != s.width || out.height != s.height) out = io::Image(s.width, s.height);
-  const std::uint8_t* rgba = r.context->pixels();
-  const std::size_t pixel_count = static_cast<std::size_t>(s.width) * s.height;
-  for (std::size_t i = 0; i < pixel_count; ++i) {
-    out.rgb[3 * i + 0] = rgba[4 * i + 0];
-    out.rgb[3 * i + 1] = rgba[4 * i + 1];
-    out.rgb[3 * i + 2] = rgba[4 * i + 2];
-  }
+  r.read_pixels(out);
 }
 
 }  // namespace tumble::render

@@ -149,6 +149,24 @@ TEST_F(RenderCommand, AFrameRangeGivesTheSamePixelsAsTheWholeRender) {
   EXPECT_FALSE(fs::exists(dir_ / "part/spin/spin.mp4"));
 }
 
+// A level floor plane is drawn as the ground [ground] height places: the same bytes. A wall
+// beside the cube then changes the picture.
+TEST_F(RenderCommand, AFloorPlaneDrawsTheGroundAtItsHeight) {
+  const std::string cube = std::string(kScene) + "[output]\nvideo = false\n";
+  const std::string grounded = cube + "[ground]\nheight = -2.0\n";
+  const std::string floored = cube + "[[planes]]\npoint = [0, -2, 0]\nnormal = [0, 1, 0]\n";
+  const std::string walled = floored + "[[planes]]\npoint = [-2, 0, 0]\nnormal = [1, 0, 0]\n";
+  for (const auto& [name, text] : {std::pair{"grounded", grounded}, std::pair{"floored", floored},
+                                   std::pair{"walled", walled}}) {
+    const Outcome run =
+        tumble("render -q --frames 0:1 " + write(std::string(name) + ".toml", text).string() +
+               " -o " + path(name));
+    ASSERT_EQ(run.exit_code, 0) << name << ": " << run.err;
+  }
+  EXPECT_EQ(read_file(frame("floored", 0)), read_file(frame("grounded", 0)));
+  EXPECT_NE(read_file(frame("walled", 0)), read_file(frame("floored", 0)));
+}
+
 TEST_F(RenderCommand, CommandLineSizeAndRateOverrideTheScene) {
   const Outcome run = tumble("render -q --no-frames --width 96 --height 64 --fps 10 " + scene() +
                              " -o " + path("o"));

@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "io/image_diff.hpp"
 #include "io/png_io.hpp"
@@ -80,6 +81,71 @@ TEST(Renderer, TwoBoxesWithoutGroundOrShadowsOrMsaaMatchGolden) {
   FrameView view = cube_view(Quat(Eigen::AngleAxisd(0.4, Vec3::UnitY())));
   view.boxes.push_back(Box{.position = Vec3(-1.2, 0.3, -0.5), .color = Color(0.3, 0.7, 0.3)});
   expect_matches_golden(draw(settings, view), "two_boxes_plain");
+}
+
+// The cube on a floor just under it, with a 4 m × 3 m wall.
+FrameView wall_view(const Vec3& wall_center, const Vec3& wall_front, const Color& color) {
+  FrameView view = cube_view(Quat(Eigen::AngleAxisd(0.4, Vec3::UnitY())));
+  view.quads.push_back(Quad{.center = wall_center,
+                            .orientation = Quat::FromTwoVectors(Vec3::UnitY(), wall_front),
+                            .width = 4.0,
+                            .depth = 3.0,
+                            .color = color,
+                            .grid_spacing = 0.5});
+  return view;
+}
+
+RenderSettings floor_settings() {
+  RenderSettings settings = small_settings();
+  settings.ground.height = -0.5;  // the cube rests on it
+  return settings;
+}
+
+// Behind the cube, its front towards the camera (so opaque), in blue to tell it from the ground.
+const Vec3 kWallBehind(0.0, 0.5, -1.5);
+const Color kBlue(0.3, 0.5, 0.9);
+
+TEST(Renderer, WallBehindTheCubeMatchesGolden) {
+  expect_matches_golden(draw(floor_settings(), wall_view(kWallBehind, Vec3::UnitZ(), kBlue)),
+                        "wall_behind_cube");
+}
+
+// Where the wall stands, the picture shows it (blue, lit) instead of the far ground; the cube in
+// front of it is untouched, and so is the floor nearer the camera.
+TEST(Renderer, WallBehindTheCubeIsDrawnAndHidesNothingInFrontOfIt) {
+  FrameView without = wall_view(kWallBehind, Vec3::UnitZ(), kBlue);
+  without.quads.clear();
+  const io::Image bare = draw(floor_settings(), without);
+  const io::Image walled = draw(floor_settings(), wall_view(kWallBehind, Vec3::UnitZ(), kBlue));
+  ASSERT_EQ(walled.width, 160);
+  const std::uint8_t* wall = walled.row(22) + 3 * 100;  // above the cube
+  const std::uint8_t* far_ground = bare.row(22) + 3 * 100;
+  EXPECT_GT(wall[2], wall[0] + 40) << "blue wall expected";
+  EXPECT_LT(far_ground[2], far_ground[0] + 20) << "grey ground expected without the wall";
+  const int middle = 3 * (60 * 160 + 80);  // the cube's front
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(walled.rgb[middle + c], bare.rgb[middle + c]);
+  const int near_floor = 3 * (115 * 160 + 80);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(walled.rgb[near_floor + c], bare.rgb[near_floor + c]);
+}
+
+// A grey wall between the camera and the cube, seen from its back: translucent, so the cube still
+// shows through it, tinted but orange.
+TEST(Renderer, WallSeenFromItsBackLeavesTheCubeVisible) {
+  const FrameView in_front =
+      wall_view(Vec3(0.0, 0.5, 1.5), Vec3(0.0, 0.0, -1.0), Color(0.75, 0.76, 0.78));
+  expect_matches_golden(draw(floor_settings(), in_front), "wall_in_front_of_cube");
+  FrameView without = in_front;
+  without.quads.clear();
+  const io::Image bare = draw(floor_settings(), without);
+  const io::Image walled = draw(floor_settings(), in_front);
+  ASSERT_EQ(walled.width, 160);
+  const int middle = 3 * (60 * 160 + 80);
+  const std::uint8_t* cube = &walled.rgb[middle];
+  EXPECT_NE(std::vector<std::uint8_t>(cube, cube + 3),
+            std::vector<std::uint8_t>(&bare.rgb[middle], &bare.rgb[middle] + 3))
+      << "the wall is drawn over the cube";
+  EXPECT_GT(cube[0], cube[2] + 60) << "the cube still reads orange through the wall";
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(cube[c], bare.rgb[middle + c], 80);
 }
 
 TEST(Renderer, DrawingTwiceIsByteIdentical) {

@@ -1,0 +1,54 @@
+// The maths of drawing, free of GL: colours to linear light, camera matrices, the unit cube's
+// vertices and the model matrices of boxes and quads. Internal to src/render/.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "render/frame.hpp"
+
+namespace tumble::render {
+
+using Mat4 = Eigen::Matrix4d;
+
+// The sRGB decoding function (IEC 61966-2-1): written colours to linear light.
+Eigen::Vector3f linear_from_srgb(const Color& srgb);
+
+// World to camera (looking down -z), as gluLookAt; any `up` not along the view will do.
+Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up);
+
+// Camera to clip space, as gluPerspective; `near` and `far` are distances (m).
+Mat4 perspective(double fov_y_radians, double aspect, double near, double far);
+
+// Camera to clip space for the key light: a square of 2 × half_width (m), near to far (m).
+Mat4 orthographic(double half_width, double near, double far);
+
+// The unit cube [-0.5, 0.5]^3 to the box in the world.
+Mat4 model_matrix(const Box& box);
+
+// The square [-1, 1]^2 of the x-z plane to the quad in the world.
+Mat4 model_matrix(const Quad& quad);
+
+// The unit normal of the quad's front (its local +y), world frame.
+Vec3 front_normal(const Quad& quad);
+
+// Whether a camera at `eye` (world frame, m) sees the quad's back: then the quad is drawn
+// translucent and casts no shadow, like a pane of glass.
+bool seen_from_back(const Quad& quad, const Vec3& eye);
+
+// The quad's corners, world frame (m), in triangle-strip order.
+std::array<Vec3, 4> corners(const Quad& quad);
+
+// The square [-1, 1]^2 of the x-z plane as (x, 0, z), in triangle-strip order: the quads' mesh.
+inline constexpr float kUnitSquare[4][3] = {{-1, 0, -1}, {1, 0, -1}, {-1, 0, 1}, {1, 0, 1}};
+
+// The unit cube, four vertices per face so that each face has its own normal.
+struct CubeVertex {
+  float position[3];
+  float normal[3];
+};
+
+std::vector<CubeVertex> cube_vertices();
+
+}  // namespace tumble::render
