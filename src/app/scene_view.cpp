@@ -28,23 +28,21 @@ Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
   double lowest_point = std::numeric_limits<double>::infinity();
   sim::Simulation simulation = scene::build_simulation(scene);
   for (std::int64_t k = 0; k < std::max<std::int64_t>(frame_count, 1); ++k) {
-    const auto states =
-        checked_states_at(simulation, scene, static_cast<double>(k) / scene.fps, stop_requested);
+    const double t = static_cast<double>(k) / scene.fps;  // s
+    const auto states = checked_states_at(simulation, scene, t, stop_requested);
     for (std::size_t i = 0; i < states.size(); ++i) {
       const double radius = 0.5 * scene.bodies[i].size.norm();
       low = low.cwiseMin(states[i].position());
       high = high.cwiseMax(states[i].position());
       largest_radius = std::max(largest_radius, radius);
       lowest_point = std::min(lowest_point, states[i].position().y() - radius);
-    }
-  }
-
-  // Spring anchors are drawn too: keep them in the picture.
-  for (const scene::BodySpec& body : scene.bodies) {
-    for (const physics::ForceLaw& law : body.forces) {
-      if (const auto* spring = std::get_if<physics::Spring>(&law)) {
-        low = low.cwiseMin(spring->anchor);
-        high = high.cwiseMax(spring->anchor);
+      // Spring anchors are drawn too, where they are while they act: keep them in the picture.
+      for (const physics::ForceLaw& law : scene.bodies[i].forces) {
+        const auto* spring = std::get_if<physics::Spring>(&law);
+        if (!spring || !physics::acts_at(*spring, t)) continue;
+        const physics::Vec3 anchor = physics::anchor_motion(*spring, t).position;
+        low = low.cwiseMin(anchor);
+        high = high.cwiseMax(anchor);
       }
     }
   }
@@ -104,21 +102,24 @@ render::Box rod(const physics::Vec3& from, const physics::Vec3& to, double thick
                      .color = color};
 }
 
-// Springs (a rod and an anchor block) and active pushes (a rod ending at the pushed point), so
-// that what moves a body can be seen. Sizes scale with the body.
+// Springs (a rod and an anchor block, where the anchor is at t) and pushes (a rod ending at the
+// pushed point), each while it acts, so that what moves a body can be seen. Sizes scale with the
+// body.
 void add_force_visuals(const scene::BodySpec& body, const physics::BodyState& state, double t,
                        std::vector<render::Box>& out) {
   const double scale = body.size.maxCoeff();
   for (const physics::ForceLaw& law : body.forces) {
     if (const auto* spring = std::get_if<physics::Spring>(&law)) {
+      if (!physics::acts_at(*spring, t)) continue;
+      const physics::Vec3 anchor = physics::anchor_motion(*spring, t).position;
       const physics::Vec3 end = physics::body_point_to_world(state, spring->attachment);
-      out.push_back(rod(spring->anchor, end, 0.04 * scale, kSpringColor));
-      out.push_back(render::Box{.position = spring->anchor,
+      out.push_back(rod(anchor, end, 0.04 * scale, kSpringColor));
+      out.push_back(render::Box{.position = anchor,
                                 .size = physics::Vec3::Constant(0.15 * scale),
                                 .color = kSpringColor});
     } else if (const auto* push = std::get_if<physics::ForceAtPoint>(&law)) {
       const double magnitude = push->force.norm();
-      if (t < push->start || t >= push->end || magnitude == 0.0) continue;
+      if (!physics::acts_at(*push, t) || magnitude == 0.0) continue;
       const physics::Vec3 point = physics::body_point_to_world(state, push->point);
       const double length = std::clamp(0.4 * magnitude, 0.4, 1.5) * scale;
       out.push_back(rod(point - length * push->force / magnitude, point, 0.05 * scale, kPushColor));

@@ -44,7 +44,7 @@ std::vector<physics::BodyState> checked_states_at(sim::Simulation& simulation,
 Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
                     const StopRequested& stop_requested);
 
-// The frame for the body states at time t (s): the bodies, plus springs and active pushes, and
+// The frame for the body states at time t (s): the bodies, the springs and pushes acting, and
 // the planes' quads.
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                              const std::vector<physics::BodyState>& states, double t);

@@ -37,11 +37,37 @@ struct RealWrench {
   RealVec3 torque = RealVec3::Zero();  // N m about the centre, world
 };
 
-// The force laws of physics/forces.hpp, evaluated again in long double.
+struct RealAnchorMotion {
+  RealVec3 position;  // m, world
+  RealVec3 velocity;  // m/s, world
+};
+
+// physics::anchor_motion again in long double, whose range holds any span between two keys. The
+// segment is the one `piece` lies in, and its straight line is followed to t, so that a piece
+// that ends on a key sees the segment before the key up to its end.
+RealAnchorMotion anchor_motion(const physics::Spring& law, Real t, Real piece) {
+  const std::vector<physics::AnchorKey>& keys = law.anchor_keys;
+  if (keys.empty()) return {real(law.anchor), RealVec3::Zero()};
+  if (piece < Real(keys.front().time)) return {real(keys.front().anchor), RealVec3::Zero()};
+  if (piece >= Real(keys.back().time)) return {real(keys.back().anchor), RealVec3::Zero()};
+  const auto next = std::upper_bound(
+      keys.begin(), keys.end(), piece,
+      [](Real time, const physics::AnchorKey& key) { return time < Real(key.time); });
+  const physics::AnchorKey& from = *(next - 1);
+  const physics::AnchorKey& to = *next;
+  const Real span = Real(to.time) - Real(from.time);
+  const RealVec3 change = real(to.anchor) - real(from.anchor);
+  return {real(from.anchor) + ((t - Real(from.time)) / span) * change, change / span};
+}
+
+// The force laws of physics/forces.hpp, evaluated again in long double. What switches at a time
+// (a law's start and end, the segment of a moving anchor) is decided at `piece`, a time strictly
+// inside the piece of the run being integrated, so that each piece is one smooth ODE.
 struct RealLawEvaluator {
   Real mass;
   const Kinematics& body;
   Real t;
+  Real piece;
   RealWrench& out;
 
   void add_at_point(const RealVec3& force, const RealVec3& arm /* world, from the centre */) const {
@@ -58,18 +84,22 @@ struct RealLawEvaluator {
     out.torque -= Real(law.coefficient) * body.angular_velocity;
   }
   void operator()(const physics::ForceAtPoint& law) const {
-    if (t < Real(law.start) || t >= Real(law.end)) return;
+    if (piece < Real(law.start) || piece >= Real(law.end)) return;
     add_at_point(real(law.force), body.rotation * real(law.point));
   }
   void operator()(const physics::Spring& law) const {
+    if (piece < Real(law.start) || piece >= Real(law.end)) return;
+    const RealAnchorMotion anchor = anchor_motion(law, t, piece);
     const RealVec3 arm = body.rotation * real(law.attachment);
-    const RealVec3 offset = body.position + arm - real(law.anchor);
+    const RealVec3 offset = body.position + arm - anchor.position;
     const Real length = offset.norm();
     if (length == 0) return;
     const RealVec3 direction = offset / length;
-    const RealVec3 attachment_velocity = body.velocity + body.angular_velocity.cross(arm);
+    // The attachment's velocity relative to the anchor, as in physics/forces.hpp.
+    const RealVec3 relative_velocity =
+        body.velocity + body.angular_velocity.cross(arm) - anchor.velocity;
     const Real magnitude = Real(law.stiffness) * (length - Real(law.rest_length)) +
-                           Real(law.damping) * attachment_velocity.dot(direction);
+                           Real(law.damping) * relative_velocity.dot(direction);
     add_at_point(-magnitude * direction, arm);
   }
   void operator()(const physics::PenaltyContact& law) const {
@@ -98,6 +128,7 @@ struct RealLawEvaluator {
 
 struct RigidBodyOde {
   const physics::BodyModel& model;
+  Real piece;  // s, strictly inside the piece being integrated
 
   Kinematics kinematics(const OdeState& y) const {
     const RealQuat unit = RealQuat(y[6], y[7], y[8], y[9]).normalized();
@@ -115,7 +146,7 @@ struct RigidBodyOde {
   void operator()(const OdeState& y, OdeState& rate, Real t) const {
     const Kinematics body = kinematics(y);
     RealWrench wrench;
-    const RealLawEvaluator evaluator{Real(model.constants.mass), body, t, wrench};
+    const RealLawEvaluator evaluator{Real(model.constants.mass), body, t, piece, wrench};
     for (const physics::ForceLaw& law : model.forces) std::visit(evaluator, law);
     // dq/dt = ½ (0, ω) q: tangent to the unit sphere, so |q| is a constant of this ODE.
     const RealQuat q(y[6], y[7], y[8], y[9]);
@@ -127,6 +158,29 @@ struct RigidBodyOde {
             wrench.torque.z()};
   }
 };
+
+// The times in (0, duration) at which a law switches on or off or a moving anchor turns: the
+// ODE is smooth between them, and an adaptive step across one would trust an error estimate
+// that the jump makes meaningless (RKF 7(8)'s can miss it entirely). 0 and duration included.
+std::vector<Real> piece_ends(const physics::BodyModel& model, Real duration) {
+  std::vector<Real> ends = {0, duration};
+  const auto add = [&](double time) {
+    if (Real(time) > 0 && Real(time) < duration) ends.push_back(Real(time));
+  };
+  for (const physics::ForceLaw& law : model.forces) {
+    if (const auto* push = std::get_if<physics::ForceAtPoint>(&law)) {
+      add(push->start);
+      add(push->end);
+    } else if (const auto* spring = std::get_if<physics::Spring>(&law)) {
+      add(spring->start);
+      add(spring->end);
+      for (const physics::AnchorKey& key : spring->anchor_keys) add(key.time);
+    }
+  }
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  return ends;
+}
 
 double relative(double difference, double scale) {
   return scale > 0.0 ? difference / scale : 0.0;
@@ -155,14 +209,17 @@ FinalState solve_reference(const physics::BodyModel& model, const physics::BodyS
                 start.orientation.w(),     start.orientation.x(),      start.orientation.y(),
                 start.orientation.z(),     start.angular_momentum.x(), start.angular_momentum.y(),
                 start.angular_momentum.z()};
-  const RigidBodyOde ode{model};
-  const Real first_step = std::min<Real>(duration, 1e-4L);
-  odeint::integrate_adaptive(
-      odeint::make_controlled(Real(tolerance), Real(tolerance),
-                              odeint::runge_kutta_fehlberg78<OdeState, Real>()),
-      ode, y, Real(0), Real(duration), first_step);
+  const std::vector<Real> ends = piece_ends(model, Real(duration));
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+    const RigidBodyOde ode{model, (ends[i] + ends[i + 1]) / 2};
+    const Real first_step = std::min<Real>(ends[i + 1] - ends[i], 1e-4L);
+    odeint::integrate_adaptive(
+        odeint::make_controlled(Real(tolerance), Real(tolerance),
+                                odeint::runge_kutta_fehlberg78<OdeState, Real>()),
+        ode, y, ends[i], ends[i + 1], first_step);
+  }
 
-  const Kinematics end = ode.kinematics(y);
+  const Kinematics end = RigidBodyOde{model, Real(duration)}.kinematics(y);
   const RealVec3 momentum(y[3], y[4], y[5]);
   const RealVec3 angular_momentum(y[10], y[11], y[12]);
   const Real energy = (momentum.dot(end.velocity) + angular_momentum.dot(end.angular_velocity)) / 2;

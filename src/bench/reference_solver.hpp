@@ -25,7 +25,8 @@ FinalState final_state_of(const physics::BodyState& state);
 // Integrates dx/dt = p/m, dp/dt = F, dq/dt = ½ (0, ω) q, dL/dt = τ with ω = R I⁻¹ Rᵀ L from
 // `initial` over `duration` (s). q is normalised only where R and ω are evaluated, so this is the
 // exact ODE, not a projected one. `tolerance` is both the absolute and the relative error
-// allowed per step for every component.
+// allowed per step for every component. The run is integrated in pieces between the times where
+// a law starts or ends or a moving anchor turns, each piece a smooth ODE.
 FinalState solve_reference(const physics::BodyModel& model, const physics::BodyState& initial,
                            double duration /* s */, double tolerance);
 

@@ -44,15 +44,49 @@ struct ForceAtPoint {
   double end = std::numeric_limits<double>::infinity();     // s
 };
 
-// A damped spring from a fixed world anchor to a point fixed in the body. With d = P - anchor,
-// l = |d|, u = d / l and v_P the velocity of P, the force on P is -(k (l - l0) + c v_P·u) u.
-struct Spring {
-  Vec3 anchor = Vec3::Zero();      // world frame (m)
-  Vec3 attachment = Vec3::Zero();  // body frame, relative to the centre of mass (m)
-  double stiffness = 0.0;          // k (N/m)
-  double damping = 0.0;            // c (N s/m)
-  double rest_length = 0.0;        // l0 (m)
+// Where a moving spring anchor is at one time.
+struct AnchorKey {
+  double time = 0.0;           // s
+  Vec3 anchor = Vec3::Zero();  // world frame (m)
 };
+
+// A damped spring from a world anchor to a point fixed in the body, acting while
+// start <= t < end. With d = P - anchor, l = |d|, u = d / l, v_P the velocity of P and v_a the
+// anchor's, the force on P is -(k (l - l0) + c (v_P - v_a)·u) u. The anchor is fixed, or moves
+// linearly between keys (a scripted mouse drag, Fiedler's "Spring Physics"). The damper acts on
+// the velocity relative to the anchor, as a dashpot between two moving ends does: a body dragged
+// at constant speed then trails the anchor by nothing, where Fiedler's v_P·u (his anchor never
+// moves) would hold it back by a steady c v_a / k, like air drag. For a fixed anchor the two agree.
+struct Spring {
+  Vec3 anchor = Vec3::Zero();               // world frame (m); used when anchor_keys is empty
+  std::vector<AnchorKey> anchor_keys = {};  // times strictly increasing; empty: fixed anchor
+  Vec3 attachment = Vec3::Zero();           // body frame, relative to the centre of mass (m)
+  double stiffness = 0.0;                   // k (N/m)
+  double damping = 0.0;                     // c (N s/m)
+  double rest_length = 0.0;                 // l0 (m)
+  double start = -std::numeric_limits<double>::infinity();  // s
+  double end = std::numeric_limits<double>::infinity();     // s
+};
+
+// A spring's anchor at one instant.
+struct AnchorMotion {
+  Vec3 position = Vec3::Zero();  // world frame (m)
+  Vec3 velocity = Vec3::Zero();  // world frame (m/s)
+};
+
+// The anchor at time t (s): the fixed anchor at rest; else the first key's anchor at rest before
+// its time, the last key's at rest from its time on, and in between the straight line between
+// the two keys around t at that segment's velocity (at a key's own time, the segment after it,
+// as a law's start <= t < end).
+AnchorMotion anchor_motion(const Spring& spring, double t);
+
+// Whether a timed law acts at time t (s): start <= t < end.
+inline bool acts_at(const ForceAtPoint& law, double t) {
+  return law.start <= t && t < law.end;
+}
+inline bool acts_at(const Spring& law, double t) {
+  return law.start <= t && t < law.end;
+}
 
 // Penalty contact with static planes, after Fiedler's "Spring Physics": at each corner of the box
 // inside a plane by d, a normal force F_n = max(0, k d − c v_n) (a damped spring that only

@@ -121,7 +121,8 @@ Vector6 phi1_times(const Matrix6& z, const Vector6& w) {
 }
 
 // A damped spring's force follows the attachment point's velocity v + ω × r, which couples the
-// two momenta; the exact flow of dy/dt = W(y), y = (p, L), W affine with pose and time frozen, is
+// two momenta; a moving anchor's velocity, frozen with the time, only offsets it. The exact flow
+// of dy/dt = W(y), y = (p, L), W affine with pose and time frozen, is
 // y(h) = y₀ + ∫₀ʰ e^{J s} ds W(y₀) = y₀ + φ₁(J h) W(y₀) h. J is read off the laws themselves by
 // six probes: their differences are exact for an affine W.
 PrimaryState coupled_kick(const BodyModel& model, const BodyState& in, double t, double h) {
@@ -157,7 +158,9 @@ PrimaryState coupled_kick(const BodyModel& model, const BodyState& in, double t,
 // constant wrench; linear damping −(c/m) p decays p exponentially; angular damping −c I_world⁻¹ L
 // is diagonal in the body frame (I_world is frozen with q), so each body component of L decays at
 // its own rate c/I_i. Both are exact for any h, hence stable however stiff. Only a damped spring
-// couples p and L, and takes the φ₁ series above.
+// couples p and L, and takes the φ₁ series above, while it acts. Time is frozen too: a moving
+// anchor and a law's start and end are read at the kick's time, which the drifts advance (time
+// as one more coordinate of the drift), so a spring whose anchor moves needs nothing more here.
 PrimaryState kick(const BodyModel& model, const BodyState& in, double t, double h) {
   const BodyConstants& constants = model.constants;
   Wrench fixed;                  // the laws that ignore the momenta (N, N m)
@@ -168,7 +171,8 @@ PrimaryState kick(const BodyModel& model, const BodyState& in, double t, double 
       linear_damping += damping->coefficient;
     } else if (const auto* damping = std::get_if<AngularDamping>(&law)) {
       angular_damping += damping->coefficient;
-    } else if (const auto* spring = std::get_if<Spring>(&law); spring && spring->damping != 0.0) {
+    } else if (const auto* spring = std::get_if<Spring>(&law);
+               spring && spring->damping != 0.0 && acts_at(*spring, t)) {
       return coupled_kick(model, in, t, h);
     } else {
       const Wrench w = evaluate(law, constants, in, t);

@@ -34,6 +34,85 @@ const std::array<Vec3, 5> kPalette = {Vec3(0.89, 0.40, 0.18), Vec3(0.20, 0.51, 0
 
 constexpr double kLargest = std::numeric_limits<double>::max();
 
+// `start` and `end` (s) of a law that acts while start <= t < end, into `start` and `end`.
+void read_acting_time(TableReader& in, double& start, double& end) {
+  start = in.optional_number("start", start);
+  end = in.optional_number("end", end);
+  if (start > end) {
+    in.fail("start",
+            "start (" + format_number(start) + ") is after end (" + format_number(end) + ")");
+  }
+}
+
+// anchor_keys = [{ time = t, anchor = [x, y, z] }, ...]: at least one key, times strictly
+// increasing, each anchor and each segment's speed within what a body may have.
+std::vector<physics::AnchorKey> read_anchor_keys(TableReader& in) {
+  const toml::array* array = in.table().get("anchor_keys")->as_array();
+  const char* form = "[{ time = t, anchor = [x, y, z] }, ...]";
+  if (!array) in.fail("anchor_keys", std::string("expected an array of keys ") + form);
+  if (array->empty()) in.fail("anchor_keys", std::string("expected at least one key ") + form);
+  std::vector<physics::AnchorKey> keys;
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const std::string path = in.qualified("anchor_keys") + "[" + std::to_string(i) + "]";
+    const toml::table* table = (*array)[i].as_table();
+    if (!table)
+      in.fail_at((*array)[i].source(), path, "expected a key { time = t, anchor = [x, y, z] }");
+    TableReader key(*table, path, in.file());
+    const double time = key.required_number("time");
+    const Vec3 anchor =
+        vector_within(key, "anchor", key.required_vector("anchor"), sim::kMaxPosition, "m");
+    key.reject_unknown_keys();
+    if (!keys.empty()) {
+      const physics::AnchorKey& previous = keys.back();
+      if (!(time > previous.time)) {
+        key.fail("time", "must be after the previous key's time " + format_number(previous.time) +
+                             " s (got " + format_number(time) + " s)");
+      }
+      // The anchor's velocity enters the damper: a large move in next to no time would kick the
+      // body past anything a run survives.
+      const double speed = (anchor - previous.anchor).stableNorm() / (time - previous.time);
+      if (!(speed <= sim::kMaxSpeed)) {
+        key.fail("anchor", "it moves at " + format_number(speed) +
+                               " m/s from the previous key, past the " +
+                               format_number(sim::kMaxSpeed) + " m/s tumble can simulate");
+      }
+    }
+    keys.push_back({.time = time, .anchor = anchor});
+  }
+  return keys;
+}
+
+// A spring takes either a fixed `anchor` or moving `anchor_keys`; read last, so that a misspelt
+// one is reported as the unknown key it is.
+physics::Spring read_spring(TableReader& in) {
+  physics::Spring spring{
+      .attachment = vector_within(in, "attachment", in.optional_vector("attachment", Vec3::Zero()),
+                                  sim::kMaxPosition, "m"),
+      .stiffness = in.required_number("stiffness")};
+  spring.damping = in.optional_number("damping", 0.0);
+  spring.rest_length = in.optional_number("rest_length", 0.0);
+  require_non_negative(in, "stiffness", spring.stiffness);
+  require_non_negative(in, "damping", spring.damping);
+  require_non_negative(in, "rest_length", spring.rest_length);
+  read_acting_time(in, spring.start, spring.end);
+  const bool fixed = in.has("anchor");
+  const bool moving = in.has("anchor_keys");
+  if (fixed && moving) {
+    in.fail("anchor_keys", "give either anchor (fixed) or anchor_keys (moving), not both");
+  } else if (fixed) {
+    spring.anchor =
+        vector_within(in, "anchor", in.required_vector("anchor"), sim::kMaxPosition, "m");
+  } else if (moving) {
+    spring.anchor_keys = read_anchor_keys(in);
+  } else {
+    in.reject_unknown_keys();
+    in.fail(
+        "anchor",
+        "missing required key: a spring needs anchor = [x, y, z] (fixed) or anchor_keys (moving)");
+  }
+  return spring;
+}
+
 physics::ForceLaw read_force(TableReader& in) {
   const std::string kind = in.required_string("kind");
   physics::ForceLaw law;
@@ -60,26 +139,10 @@ physics::ForceLaw read_force(TableReader& in) {
     physics::ForceAtPoint push{
         .force = vector_within(in, "force", in.required_vector("force"), kLargest, "N"),
         .point = vector_within(in, "point", in.required_vector("point"), sim::kMaxPosition, "m")};
-    push.start = in.optional_number("start", push.start);
-    push.end = in.optional_number("end", push.end);
-    if (push.start > push.end) {
-      in.fail("start", "start (" + format_number(push.start) + ") is after end (" +
-                           format_number(push.end) + ")");
-    }
+    read_acting_time(in, push.start, push.end);
     law = push;
   } else if (kind == "spring") {
-    physics::Spring spring{
-        .anchor = vector_within(in, "anchor", in.required_vector("anchor"), sim::kMaxPosition, "m"),
-        .attachment =
-            vector_within(in, "attachment", in.optional_vector("attachment", Vec3::Zero()),
-                          sim::kMaxPosition, "m"),
-        .stiffness = in.required_number("stiffness")};
-    spring.damping = in.optional_number("damping", 0.0);
-    spring.rest_length = in.optional_number("rest_length", 0.0);
-    require_non_negative(in, "stiffness", spring.stiffness);
-    require_non_negative(in, "damping", spring.damping);
-    require_non_negative(in, "rest_length", spring.rest_length);
-    law = spring;
+    law = read_spring(in);
   } else {
     in.fail("kind", "unknown force kind " + in_quotes(kind) +
                         " (expected gravity, force, torque, linear_damping, angular_damping, "

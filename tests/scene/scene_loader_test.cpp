@@ -192,6 +192,10 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenValues) {
   EXPECT_EQ(spring.damping, 1.5);
   EXPECT_EQ(spring.rest_length, 2.0);
 
+  EXPECT_TRUE(spring.anchor_keys.empty());
+  EXPECT_EQ(spring.start, -kInfinity);
+  EXPECT_EQ(spring.end, kInfinity);
+
   const auto bare_spring = force_as<physics::Spring>(lid, 9);
   EXPECT_EQ(bare_spring.anchor, Vec3(1.0, 1.0, 1.0));
   EXPECT_EQ(bare_spring.attachment, Vec3::Zero());
@@ -209,6 +213,50 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenValues) {
   EXPECT_EQ(second.orientation.coeffs(), physics::Quat::Identity().coeffs());
   EXPECT_EQ(second.angular_velocity, Vec3::Zero());
   EXPECT_TRUE(second.forces.empty());
+}
+
+// Anchor keys as an inline array and as [[bodies.forces.anchor_keys]] tables, and a spring's
+// start and end.
+TEST(SceneLoader, SpringReadsAnchorKeysStartAndEnd) {
+  const Scene scene = parse_valid(R"(duration = 2.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+anchor_keys = [{ time = 0.0, anchor = [0, 1, 0] }, { time = 1.5, anchor = [3, 2, 0] }]
+stiffness = 400
+damping = 40
+start = 0.25
+end = 1.75
+[[bodies.forces]]
+kind = "spring"
+stiffness = 1
+end = 1
+[[bodies.forces.anchor_keys]]
+time = -1
+anchor = [1, 2, 3]
+)");
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  const auto dragged = force_as<physics::Spring>(scene.bodies[0], 0);
+  ASSERT_EQ(dragged.anchor_keys.size(), 2u);
+  EXPECT_EQ(dragged.anchor_keys[0].time, 0.0);
+  EXPECT_EQ(dragged.anchor_keys[0].anchor, Vec3(0.0, 1.0, 0.0));
+  EXPECT_EQ(dragged.anchor_keys[1].time, 1.5);
+  EXPECT_EQ(dragged.anchor_keys[1].anchor, Vec3(3.0, 2.0, 0.0));
+  EXPECT_EQ(dragged.anchor, Vec3::Zero());  // unused with keys
+  EXPECT_EQ(dragged.stiffness, 400.0);
+  EXPECT_EQ(dragged.damping, 40.0);
+  EXPECT_EQ(dragged.start, 0.25);
+  EXPECT_EQ(dragged.end, 1.75);
+
+  const auto held = force_as<physics::Spring>(scene.bodies[0], 1);
+  ASSERT_EQ(held.anchor_keys.size(), 1u);
+  EXPECT_EQ(held.anchor_keys[0].time, -1.0);
+  EXPECT_EQ(held.anchor_keys[0].anchor, Vec3(1.0, 2.0, 3.0));
+  EXPECT_EQ(held.start, -kInfinity);
+  EXPECT_EQ(held.end, 1.0);
 }
 
 TEST(SceneLoader, NearlyUnitOrientationIsNormalised) {
@@ -1059,6 +1107,150 @@ stiffness = 5.0
 rest_length = -0.5
 )",
      "test.toml:10:15", "bodies[0].forces[0].rest_length", "must not be negative"},
+    {"SpringAnchorKeysEmpty", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = []
+)",
+     "test.toml:9:15", "bodies[0].forces[0].anchor_keys",
+     "expected at least one key [{ time = t, anchor = [x, y, z] }, ...]"},
+    {"SpringAnchorKeysNotAnArray", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = 3
+)",
+     "test.toml:9:15", "bodies[0].forces[0].anchor_keys", "expected an array of keys"},
+    {"SpringAnchorKeyNotATable", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = [{ time = 0, anchor = [0, 0, 0] }, 1.0]
+)",
+     "test.toml:9:50", "bodies[0].forces[0].anchor_keys[1]",
+     "expected a key { time = t, anchor = [x, y, z] }"},
+    {"SpringAnchorKeyTimesNotIncreasing", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = [{ time = 1, anchor = [0, 0, 0] }, { time = 0.5, anchor = [1, 0, 0] }]
+)",
+     "test.toml:9:59", "bodies[0].forces[0].anchor_keys[1].time",
+     "must be after the previous key's time 1 s (got 0.5 s)"},
+    {"SpringBothAnchorAndAnchorKeys", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor = [0, 1, 0]
+anchor_keys = [{ time = 0, anchor = [0, 0, 0] }]
+)",
+     "test.toml:10:15", "bodies[0].forces[0].anchor_keys", "not both"},
+    {"SpringWithoutAnchor", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+damping = 1.0
+)",
+     "test.toml:6:1", "bodies[0].forces[0].anchor",
+     "missing required key: a spring needs anchor = [x, y, z] (fixed) or anchor_keys (moving)"},
+    {"SpringMisspeltAnchorIsAnUnknownKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchr = [0, 1, 0]
+)",
+     "test.toml:9:1", "bodies[0].forces[0].anchr",
+     "unknown key (allowed here: anchor, anchor_keys, attachment, damping, end, kind, rest_length, "
+     "start, stiffness)"},
+    {"SpringAnchorKeyWithoutAnchor", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = [{ time = 0 }]
+)",
+     "test.toml:9:16", "bodies[0].forces[0].anchor_keys[0].anchor", "missing required key"},
+    {"SpringAnchorKeyWithUnknownKey", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = [{ time = 0, anchor = [0, 0, 0], at = 1 }]
+)",
+     "test.toml:9:48", "bodies[0].forces[0].anchor_keys[0].at",
+     "unknown key (allowed here: anchor, time)"},
+    {"SpringAnchorKeyTooFar", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = [{ time = 0, anchor = [0, 2e9, 0] }]
+)",
+     "test.toml:9:37", "bodies[0].forces[0].anchor_keys[0].anchor",
+     "its length 2e+09 m is past the 1e+09 m tumble can simulate"},
+    {"SpringAnchorKeysMoveTooFast", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor_keys = [{ time = 0, anchor = [0, 0, 0] }, { time = 1e-9, anchor = [1, 0, 0] }]
+)",
+     "test.toml:9:74", "bodies[0].forces[0].anchor_keys[1].anchor",
+     "it moves at 1e+09 m/s from the previous key, past the 1e+08 m/s"},
+    {"SpringStartsAfterItEnds", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies.forces]]
+kind = "spring"
+stiffness = 5.0
+anchor = [0, 1, 0]
+start = 2
+end = 1
+)",
+     "test.toml:10:9", "bodies[0].forces[0].start", "start (2) is after end (1)"},
     {"NegativeAngularDamping", R"(duration = 1.0
 [[bodies]]
 shape = "cube"

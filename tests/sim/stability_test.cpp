@@ -163,6 +163,38 @@ TEST(CheckStep, WarnsExactlyBeyondTheSpringLimit) {
                               std::sqrt(550.0), "ω_n = 23.45 rad/s");
 }
 
+// A drag is a spring like any other to the advisor: its modes come from stiffness, damping and
+// attachment, not from where the anchor is or when it acts.
+TEST(CheckStep, WarnsExactlyBeyondTheLimitOfAMovingTimedSpring) {
+  const physics::BodyConstants cube = physics::cube_constants(2.0, 1.0);
+  const BodyModel model{
+      .constants = cube,
+      .forces = {physics::Spring{.anchor_keys = {{.time = 0.0, .anchor = Vec3(0, 1, 0)},
+                                                 {.time = 1.5, .anchor = Vec3(3, 2, 0)}},
+                                 .stiffness = 200.0,
+                                 .start = 0.5,
+                                 .end = 1.0}}};
+  expect_warns_exactly_beyond(model, at_rest(model), Integrator::symplectic_euler, 2.0, 10.0,
+                              "ω_n = 10 rad/s");
+  expect_warns_exactly_beyond(model, at_rest(model), Integrator::rk4, 2.828, 10.0, "ω_n = 10");
+  // Critically damped (c = 2 sqrt(k m) = 40 N s/m: k = c/m = 20 /s): damped like the fixed one.
+  BodyModel damped = model;
+  std::get<physics::Spring>(damped.forces.front()).damping = 40.0;
+  BodyModel fixed = damped;
+  std::get<physics::Spring>(fixed.forces.front()).anchor_keys = {};
+  for (const Integrator integrator : physics::kAllIntegrators) {
+    for (const double dt : {0.01, 0.1, 0.3}) {
+      const std::vector<StepWarning> moving =
+          check_step(damped, at_rest(damped), integrator, dt, 2.0);
+      const std::vector<StepWarning> still = check_step(fixed, at_rest(fixed), integrator, dt, 2.0);
+      ASSERT_EQ(moving.size(), still.size()) << physics::integrator_name(integrator) << " " << dt;
+      for (std::size_t i = 0; i < moving.size(); ++i)
+        EXPECT_EQ(moving[i].message, still[i].message);
+    }
+  }
+  EXPECT_FALSE(check_step(damped, at_rest(damped), Integrator::rk4, 0.3, 2.0).empty());
+}
+
 TEST(CheckStep, ExplicitEulerOnAnUndampedSpringIsUnstableAtAnyStep) {
   const BodyModel model{.constants = physics::cube_constants(1.0, 1.0),
                         .forces = {physics::Spring{.stiffness = 1.0}}};

@@ -1,6 +1,7 @@
 // Exact solutions that the physics tests compare against.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "physics/integrators.hpp"
@@ -53,6 +54,51 @@ struct SpinningProjectile {
   Quat orientation_at(double t) const {
     return Quat(Eigen::AngleAxisd(angular_velocity.norm() * t, angular_velocity.normalized())) *
            orientation;
+  }
+};
+
+// Fiedler's mouse drag, scripted: a body pulled along x by a zero-length, critically damped
+// spring at its centre (k = m ω², c = 2 m ω), no other force. The anchor rests at the origin
+// until `start`, moves at V until `stop`, and rests there after. The lag y = x − a obeys
+// y'' + 2ω y' + ω² y = −a''(t) = −V δ(t − start) + V δ(t − stop) (the damper acting on the
+// velocity relative to the anchor), so from rest at the anchor y(t) = −V g(t − start) +
+// V g(t − stop) with the impulse response g(τ) = τ e^{−ωτ} for τ >= 0, and 0 before (rates
+// taken from the right at the two kinks, as the anchor's velocity is).
+struct CriticallyDampedDrag {
+  double mass = 1.0;        // kg
+  double frequency = 20.0;  // ω (rad/s)
+  double speed = 0.5;       // V (m/s)
+  double start = 0.25;      // s
+  double stop = 2.25;       // s
+
+  double stiffness() const { return mass * frequency * frequency; }  // N/m
+  double damping() const { return 2.0 * mass * frequency; }          // N s/m
+  double anchor_at(double t) const { return speed * std::clamp(t - start, 0.0, stop - start); }
+  double position_at(double t) const {
+    return anchor_at(t) - speed * response(t - start) + speed * response(t - stop);
+  }
+  double velocity_at(double t) const {
+    const double anchor_velocity = t >= start && t < stop ? speed : 0.0;
+    return anchor_velocity - speed * response_rate(t - start) + speed * response_rate(t - stop);
+  }
+
+  physics::BodyModel model() const {
+    return {.constants = physics::cube_constants(mass, 1.0),
+            .forces = {physics::Spring{
+                .anchor_keys = {{.time = start, .anchor = Vec3::Zero()},
+                                {.time = stop, .anchor = Vec3(anchor_at(stop), 0, 0)}},
+                .stiffness = stiffness(),
+                .damping = damping()}}};
+  }
+  physics::BodyState at_rest() const {
+    return physics::make_state(model().constants, Vec3::Zero(), Vec3::Zero(), Quat::Identity(),
+                               Vec3::Zero());
+  }
+
+ private:
+  double response(double tau) const { return tau > 0.0 ? tau * std::exp(-frequency * tau) : 0.0; }
+  double response_rate(double tau) const {
+    return tau >= 0.0 ? (1.0 - frequency * tau) * std::exp(-frequency * tau) : 0.0;
   }
 };
 
