@@ -33,6 +33,10 @@ struct ContactSettings {
   double restitution_threshold = 0.5;  // m/s
 };
 
+// The methods in the order they are listed to users.
+inline constexpr ContactMethod kAllContactMethods[] = {ContactMethod::impulse,
+                                                       ContactMethod::penalty};
+
 // The name of a method in scene files ("impulse", "penalty").
 const char* contact_method_name(ContactMethod method);
 

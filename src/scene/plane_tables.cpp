@@ -1,6 +1,5 @@
 #include "scene/plane_tables.hpp"
 
-#include <array>
 #include <set>
 
 #include "scene/limits.hpp"
@@ -9,9 +8,6 @@
 
 namespace tumble::scene::detail {
 namespace {
-
-constexpr std::array<physics::ContactMethod, 2> kContactMethods = {physics::ContactMethod::impulse,
-                                                                   physics::ContactMethod::penalty};
 
 // A body may start touching a plane; this much overlap is the round-off of writing a resting
 // body's position in decimal (m).
@@ -68,8 +64,8 @@ void refuse_bodies_inside(const TableReader& root, const Scene& scene) {
     const physics::BodyState start = initial_state(body);
     for (std::size_t j = 0; j < scene.planes.size(); ++j) {
       const PlaneSpec& spec = scene.planes[j];
-      const physics::Plane plane{.normal = spec.normal, .offset = spec.normal.dot(spec.point)};
-      const double depth = -physics::closest_corner(start, 0.5 * body.size, plane).separation;
+      const double depth =
+          -physics::closest_corner(start, 0.5 * body.size, scene::plane(spec)).separation;
       if (!(depth > kStartOverlapAllowed)) continue;
       const std::string what = "body " + in_quotes(body.name) + " starts " + format_number(depth) +
                                " m inside plane " + in_quotes(spec.name);
@@ -102,7 +98,7 @@ physics::ContactSettings read_contact_settings(TableReader& in) {
   const bool written = in.has("contact");
   const std::string name = in.optional_string("contact", physics::contact_method_name(out.method));
   std::string known;
-  for (const physics::ContactMethod method : kContactMethods) {
+  for (const physics::ContactMethod method : physics::kAllContactMethods) {
     if (name == physics::contact_method_name(method)) out.method = method;
     known += (known.empty() ? "" : " or ") + std::string(physics::contact_method_name(method));
   }
