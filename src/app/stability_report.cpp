@@ -1,6 +1,7 @@
 #include "app/stability_report.hpp"
 
 #include "scene/scene_builder.hpp"
+#include "sim/contact_advice.hpp"
 #include "sim/stability.hpp"
 
 namespace tumble::app {
@@ -16,9 +17,15 @@ std::vector<sim::StepWarning> body_warnings(const scene::Scene& scene,
 
 std::vector<std::string> stability_warnings(const scene::Scene& scene) {
   std::vector<std::string> lines;
+  std::vector<physics::Plane> planes;
+  for (const scene::PlaneSpec& spec : scene.planes) planes.push_back(scene::plane(spec));
   for (const scene::BodySpec& body : scene.bodies) {
     for (const sim::StepWarning& warning : body_warnings(scene, body)) {
       lines.push_back("body \"" + body.name + "\": " + warning.message);
+    }
+    for (const std::string& problem : sim::check_contact(scene::body_model(scene, body), planes,
+                                                         scene.physics.contact, scene.physics.dt)) {
+      lines.push_back("body \"" + body.name + "\": " + problem);
     }
   }
   return lines;
