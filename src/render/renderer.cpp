@@ -43,32 +43,31 @@ std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
                                                 const Vec3& light_direction) {
   if (light_direction.y() > -1e-3) return std::nullopt;  // light from below or level: none
   double low_x = 1e30, low_y = 1e30, high_x = -1e30, high_y = -1e30;
+  // Takes in one corner's shadow; false when it falls behind the camera.
+  const auto take_in = [&](Vec3 point) {
+    // Along the light to the ground (a corner below the ground casts nothing above it).
+    point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
+    const Eigen::Vector4d clip = view_projection * point.homogeneous();
+    if (clip.w() <= 1e-9) return false;
+    low_x = std::min(low_x, clip.x() / clip.w());
+    high_x = std::max(high_x, clip.x() / clip.w());
+    low_y = std::min(low_y, clip.y() / clip.w());
+    high_y = std::max(high_y, clip.y() / clip.w());
+    return true;
+  };
+  const std::array<int, 4> whole = {0, 0, settings.width, settings.height};
   for (const Box& box : view.boxes) {
     const Mat3 rotation = box.orientation.normalized().toRotationMatrix();
     for (int corner = 0; corner < 8; ++corner) {
       const Vec3 local(corner & 1 ? 0.5 : -0.5, corner & 2 ? 0.5 : -0.5, corner & 4 ? 0.5 : -0.5);
-      Vec3 point = box.position + rotation * local.cwiseProduct(box.size);
-      // Along the light to the ground (a corner below the ground casts nothing above it).
-      point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
-      const Eigen::Vector4d clip = view_projection * point.homogeneous();
-      if (clip.w() <= 1e-9) return std::array<int, 4>{0, 0, settings.width, settings.height};
-      low_x = std::min(low_x, clip.x() / clip.w());
-      high_x = std::max(high_x, clip.x() / clip.w());
-      low_y = std::min(low_y, clip.y() / clip.w());
-      high_y = std::max(high_y, clip.y() / clip.w());
+      if (!take_in(box.position + rotation * local.cwiseProduct(box.size))) return whole;
     }
   }
   // Quads cast shadows too (a ramp shades the floor beneath it, and the boxes' shadows there).
   for (const Quad& quad : view.quads) {
     if (seen_from_back(quad, view.camera.position)) continue;
-    for (Vec3 point : corners(quad)) {
-      point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
-      const Eigen::Vector4d clip = view_projection * point.homogeneous();
-      if (clip.w() <= 1e-9) return std::array<int, 4>{0, 0, settings.width, settings.height};
-      low_x = std::min(low_x, clip.x() / clip.w());
-      high_x = std::max(high_x, clip.x() / clip.w());
-      low_y = std::min(low_y, clip.y() / clip.w());
-      high_y = std::max(high_y, clip.y() / clip.w());
+    for (const Vec3& point : corners(quad)) {
+      if (!take_in(point)) return whole;
     }
   }
   // To pixels, widened by two for the filter's reach, clamped to the image.
