@@ -226,6 +226,15 @@ std::optional<Integrator> alternative(Integrator current, const auto& ok) {
   return std::nullopt;
 }
 
+// A mode with the words a warning gives it.
+struct NamedMode {
+  LinearMode mode;
+  std::string cause;  // what makes the mode, with its numbers: the warning's first clause
+  std::string outcome = "the motion will blow up";  // what a step beyond the limit does
+  // The mode is penalty contact's: contact = "impulse" has no such limit.
+  bool penalty_contact = false;
+};
+
 std::string advice(const StepWarning& warning) {
   std::string out;
   if (warning.suggested_dt) out += printed("use dt <= %.3g s", *warning.suggested_dt);

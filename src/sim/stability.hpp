@@ -26,15 +26,6 @@ struct LinearMode {
   KickDamping kick_damping = KickDamping::exact;
 };
 
-// A mode with the words a warning gives it.
-struct NamedMode {
-  LinearMode mode;
-  std::string cause;  // what makes the mode, with its numbers: the warning's first clause
-  std::string outcome = "the motion will blow up";  // what a step beyond the limit does
-  // The mode is penalty contact's: contact = "impulse" has no such limit.
-  bool penalty_contact = false;
-};
-
 // The largest dt (s) at which `integrator` keeps the mode from growing: the one-step map of the
 // linear system has spectral radius <= 1 for every step up to it. For a pure decay this is
 // k dt <= 2 for euler and symplectic_euler and k dt <= 2.785 for rk4; for an undamped oscillator
