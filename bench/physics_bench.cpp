@@ -69,9 +69,9 @@ void BlowUpCheck(benchmark::State& state) {
 }
 
 // Contact with a plane (range(0) = integrator), one step from the same state each time: a box
-// resting on a floor under gravity through the world step, against the same box's free step
-// (StepBoxWithGravity); and the box 10 m above the floor, where the world step only finds that
-// nothing touches.
+// resting on a floor under gravity through the world step (impulse contact), or with penalty
+// contact, against the same box's free step (StepBoxWithGravity); and the box 10 m above the
+// floor, where the world step only finds that nothing touches.
 // range(1): 0 for a unit cube, 1 for a 0.3 × 1 × 2 m box on its long face.
 BodyModel box_under_gravity(std::int64_t shape) {
   const Vec3 size = shape == 0 ? Vec3::Ones() : Vec3(0.3, 1.0, 2.0);
@@ -114,6 +114,25 @@ void step_with_floor_repeatedly(benchmark::State& state, double height /* m */) 
 void StepBoxRestingOnPlane(benchmark::State& state) {
   step_with_floor_repeatedly(state, 0.5);
 }
+
+// The same box resting on the floor with penalty contact instead: the PenaltyContact law (the
+// default k = 1e5 N/m, c = 500 N s/m per corner) evaluated at every stage of the integrator, no
+// world step. It starts at rest sunk by m g/(4k), where the forces balance, so one step from there
+// is what a resting step costs at any dt (1/60 s itself is far beyond penalty's stable step).
+void StepBoxRestingOnPenaltyPlane(benchmark::State& state) {
+  BodyModel model = box_under_gravity(state.range(1));
+  const Integrator integrator = integrator_at(state.range(0));
+  const ContactSettings contact{.method = ContactMethod::penalty};
+  model.forces.push_back(PenaltyContact{.planes = {Plane{}},
+                                        .half_size = model.half_size,
+                                        .material = model.material,
+                                        .stiffness = contact.stiffness,
+                                        .damping = contact.damping});
+  const double sink = model.constants.mass * 9.81 / (4.0 * contact.stiffness);  // m
+  const BodyState start = box_at(model, 0.5 - sink);
+  for (auto _ : state) benchmark::DoNotOptimize(step(integrator, model, start, 0.0, kDt));
+  state.SetLabel(std::string(integrator_name(integrator)));
+}
 void StepBoxAbovePlane(benchmark::State& state) {
   step_with_floor_repeatedly(state, 10.0);
 }
@@ -127,6 +146,9 @@ BENCHMARK(StepBoxWithGravity)
     ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
     ->ArgNames({"integrator", "shape"});
 BENCHMARK(StepBoxRestingOnPlane)
+    ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
+    ->ArgNames({"integrator", "shape"});
+BENCHMARK(StepBoxRestingOnPenaltyPlane)
     ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
     ->ArgNames({"integrator", "shape"});
 BENCHMARK(StepBoxAbovePlane)

@@ -56,30 +56,15 @@ bool write_file(const fs::path& path, const std::function<void(std::FILE*)>& wri
   return true;
 }
 
-// The rows of one case, in sweep order.
+// The rows of one case (with one contact method, for a contact case), in sweep order.
 std::vector<const AccuracyRow*> rows_of(const std::vector<AccuracyRow>& rows,
-                                        const std::string& case_name) {
+                                        const std::string& case_name,
+                                        const std::string& contact = "none") {
   std::vector<const AccuracyRow*> out;
   for (const AccuracyRow& row : rows) {
-    if (row.case_name == case_name) out.push_back(&row);
+    if (row.case_name == case_name && row.contact == contact) out.push_back(&row);
   }
   return out;
-}
-
-std::vector<const HardCase*> cases_in(const bench::AccuracySettings& settings) {
-  std::vector<const HardCase*> out;
-  for (const HardCase& c : bench::hard_cases()) {
-    const bool wanted =
-        settings.cases.empty() ||
-        std::find(settings.cases.begin(), settings.cases.end(), c.name) != settings.cases.end();
-    if (wanted) out.push_back(&c);
-  }
-  return out;
-}
-
-double headline_error(const HardCase& c, const AccuracyRow& row) {
-  return c.headline == bench::HeadlineError::orientation ? row.orientation_error
-                                                         : row.position_error;
 }
 
 const char* headline_label(const HardCase& c) {
@@ -87,16 +72,28 @@ const char* headline_label(const HardCase& c) {
                                                          : "position error (m)";
 }
 
+// A number for the CSV, or an empty cell where the row does not measure it.
+std::string csv_number(double value, bool measured) {
+  return measured ? printed("%.9g", value) : "";
+}
+
 void write_csv(std::FILE* out, const std::vector<AccuracyRow>& rows) {
   std::fputs(
-      "case,integrator,dt,steps,blew_up,orientation_error_rad,position_error_m,"
-      "angular_momentum_error,energy_error,ns_per_step,ns_per_simulated_second\n",
+      "case,contact,integrator,dt,steps,blew_up,measure,error,second_measure,second_error,"
+      "orientation_error_rad,position_error_m,angular_momentum_error,energy_error,ns_per_step,"
+      "ns_per_simulated_second\n",
       out);
   for (const AccuracyRow& r : rows) {
-    std::fprintf(out, "%s,%s,%.17g,%lld,%d,%.9g,%.9g,%.9g,%.9g,%.6g,%.6g\n", r.case_name.c_str(),
-                 r.integrator.c_str(), r.dt, static_cast<long long>(r.steps), r.blew_up ? 1 : 0,
-                 r.orientation_error, r.position_error, r.angular_momentum_error, r.energy_error,
-                 r.ns_per_step, r.ns_per_simulated_second);
+    const bool final_state = r.contact == "none";  // hard cases measure the final state
+    std::fprintf(
+        out, "%s,%s,%s,%.17g,%lld,%d,%s,%.9g,%s,%s,%s,%s,%s,%s,%.6g,%.6g\n", r.case_name.c_str(),
+        r.contact.c_str(), r.integrator.c_str(), r.dt, static_cast<long long>(r.steps),
+        r.blew_up ? 1 : 0, r.measure.c_str(), r.error, r.second_measure.c_str(),
+        csv_number(r.second_error, !r.second_measure.empty()).c_str(),
+        csv_number(r.orientation_error, final_state).c_str(),
+        csv_number(r.position_error, final_state).c_str(),
+        csv_number(r.angular_momentum_error, final_state).c_str(),
+        csv_number(r.energy_error, final_state).c_str(), r.ns_per_step, r.ns_per_simulated_second);
   }
 }
 
@@ -117,24 +114,9 @@ std::string error_cell(const AccuracyRow& row, double value) {
   return row.blew_up ? "blew up" : printed("%.2e", value);
 }
 
-void write_markdown(std::FILE* out, const bench::AccuracySettings& settings, bool quick,
-                    const std::vector<AccuracyRow>& rows) {
-  std::fprintf(out,
-               "# Speed against error\n\n"
-               "Every integrator on every hard case (`src/bench/hard_cases.cpp`). Errors are of "
-               "the final state against the case's reference; a run *blew up* when its state "
-               "left a million times the true motion's size. Cost is the median of %d timing%s "
-               "of the whole run, in the same process, on one thread of this machine "
-               "(%u hardware threads)%s. Written by `tumble bench accuracy%s`.\n",
-               settings.timing.samples, settings.timing.samples == 1 ? "" : "s",
-               std::thread::hardware_concurrency(),
-#ifdef NDEBUG
-               "",
-#else
-               ", in a build with assertions (timings are not representative)",
-#endif
-               quick ? " --quick" : "");
-  for (const HardCase* c : cases_in(settings)) {
+void write_hard_case_tables(std::FILE* out, const bench::AccuracySettings& settings,
+                            const std::vector<AccuracyRow>& rows) {
+  for (const HardCase* c : bench::selected_hard_cases(settings)) {
     const bench::Reference& reference = c->reference();
     std::fprintf(out, "\n## %s\n\n%s.\n\nReference: %s.\n\n", c->name.c_str(), c->summary.c_str(),
                  reference_note(reference).c_str());
@@ -156,6 +138,58 @@ void write_markdown(std::FILE* out, const bench::AccuracySettings& settings, boo
   }
 }
 
+void write_contact_case_tables(std::FILE* out, const bench::AccuracySettings& settings,
+                               const std::vector<AccuracyRow>& rows) {
+  for (const bench::ContactCase* c : bench::selected_contact_cases(settings)) {
+    std::fprintf(out,
+                 "\n## %s\n\n%s.\n\nError: %s. Penalty contact: k = %.3g N/m and "
+                 "c = %.4g N s/m per corner, the damping for the case's restitution on a flat "
+                 "landing (`sim/penalty_modes.hpp`).\n\n| contact | integrator | dt (s) |",
+                 c->name.c_str(), c->summary.c_str(), c->measure_note.c_str(), c->penalty.stiffness,
+                 c->penalty.damping);
+    for (const bench::ContactMeasure& measure : c->measures) {
+      std::fprintf(out, " %s |", measure.label.c_str());
+    }
+    std::fputs(" ns/step | ns per simulated s |\n| --- | --- | --- |", out);
+    for (std::size_t i = 0; i < c->measures.size(); ++i) std::fputs(" ---: |", out);
+    std::fputs(" ---: | ---: |\n", out);
+    for (const char* contact : {"impulse", "penalty"}) {
+      for (const AccuracyRow* row : rows_of(rows, c->name, contact)) {
+        std::fprintf(out, "| %s | %s | %s | %s |", contact, row->integrator.c_str(),
+                     step_label(row->dt).c_str(), error_cell(*row, row->error).c_str());
+        if (c->measures.size() > 1) {
+          std::fprintf(out, " %s |", error_cell(*row, row->second_error).c_str());
+        }
+        std::fprintf(out, " %.0f | %.3g |\n", row->ns_per_step, row->ns_per_simulated_second);
+      }
+    }
+  }
+}
+
+void write_markdown(std::FILE* out, const bench::AccuracySettings& settings, bool quick,
+                    const std::vector<AccuracyRow>& rows) {
+  std::fprintf(out,
+               "# Speed against error\n\n"
+               "Every integrator on every hard case (`src/bench/hard_cases.cpp`), where errors are "
+               "of the final state against the case's reference, and with impulse and with "
+               "penalty contact on every contact case (`src/bench/contact_cases.cpp`), where each "
+               "case names its own errors. A hard case's run *blew up* when its state left a "
+               "million times the true motion's size, a contact case's when its energy above "
+               "rest doubled (contact only takes energy away). Cost is the median of %d timing%s "
+               "of the whole run, in the same process, on one thread of this machine "
+               "(%u hardware threads)%s. Written by `tumble bench accuracy%s`.\n",
+               settings.timing.samples, settings.timing.samples == 1 ? "" : "s",
+               std::thread::hardware_concurrency(),
+#ifdef NDEBUG
+               "",
+#else
+               ", in a build with assertions (timings are not representative)",
+#endif
+               quick ? " --quick" : "");
+  write_hard_case_tables(out, settings, rows);
+  write_contact_case_tables(out, settings, rows);
+}
+
 // gnuplot's single-quoted strings double a quote to escape it.
 std::string gnuplot_quoted(const std::string& text) {
   std::string out = "'";
@@ -163,60 +197,88 @@ std::string gnuplot_quoted(const std::string& text) {
   return out + "'";
 }
 
-// The chart's data, one block per (case, integrator) with something to plot, and the script
-// that draws one panel per case. Log axes cannot show a zero error or a blown-up run: those
-// points are left out.
+// One panel of the chart: a case, what its headline error is, and the contact methods it ran
+// with ("none" for a hard case).
+struct Panel {
+  std::string name;
+  std::string error_label;
+  std::vector<std::string> contacts;
+};
+
+std::vector<Panel> panels(const bench::AccuracySettings& settings) {
+  std::vector<Panel> out;
+  for (const HardCase* c : bench::selected_hard_cases(settings)) {
+    out.push_back({c->name, headline_label(*c), {"none"}});
+  }
+  for (const bench::ContactCase* c : bench::selected_contact_cases(settings)) {
+    out.push_back({c->name, c->measures.front().label, {"impulse", "penalty"}});
+  }
+  return out;
+}
+
+// The chart's data, one block per (case, contact, integrator) with something to plot, and the
+// script that draws one panel per case: a colour per integrator, penalty contact dashed. Log axes
+// cannot show a zero error or a blown-up run: those points are left out.
 struct Plot {
   std::string data;
   std::string script;
 };
 
+// The panel's series, each a block added to plot.data from number `block` on.
+std::vector<std::string> panel_series(const Panel& panel, const std::vector<AccuracyRow>& rows,
+                                      Plot& plot, int& block) {
+  std::vector<std::string> series;
+  for (const std::string& contact : panel.contacts) {
+    for (std::size_t i = 0; i < std::size(physics::kAllIntegrators); ++i) {
+      const std::string name(physics::integrator_name(physics::kAllIntegrators[i]));
+      std::string points;
+      for (const AccuracyRow* row : rows_of(rows, panel.name, contact)) {
+        if (row->integrator != name || row->blew_up || !(row->error > 0.0)) continue;
+        points += printed("%.6g %.6g\n", row->ns_per_simulated_second, row->error);
+      }
+      if (points.empty()) continue;
+      const std::string title = contact == "none" ? name : contact + " " + name;
+      plot.data += "# " + panel.name + " " + title + "\n" + points + "\n\n";
+      series.push_back(printed(
+          "'accuracy.dat' index %d using 1:2 with linespoints lc %zu dt %d title %s noenhanced",
+          block++, i + 1, contact == "penalty" ? 2 : 1, gnuplot_quoted(title).c_str()));
+    }
+  }
+  return series;
+}
+
 Plot make_plot(const bench::AccuracySettings& settings, const std::vector<AccuracyRow>& rows,
                const std::string& png_name) {
   Plot plot;
-  const std::vector<const HardCase*> cases = cases_in(settings);
-  const int columns = cases.size() >= 5 ? 3 : 2;
-  const int panel_rows = static_cast<int>((cases.size() + columns - 1) / columns);
+  const std::vector<Panel> all = panels(settings);
+  const int columns = all.size() >= 5 ? 3 : 2;
+  const int panel_rows = static_cast<int>((all.size() + columns - 1) / columns);
   plot.script = printed(
       "# Draws accuracy.png from accuracy.dat: gnuplot accuracy.gp (written by tumble bench "
       "accuracy)\n"
       "set terminal pngcairo size %d,%d font ',10'\n"
       "set output %s\n"
-      "set multiplot layout %d,%d title 'Error against cost: one line per integrator, "
-      "dt = %s ... %s s'\n"
+      "set multiplot layout %d,%d title 'Error against cost: one line per integrator (and "
+      "contact method), dt = %s ... %s s'\n"
       "set format x '10^{%%L}'\nset format y '10^{%%L}'\nset key bottom left\nset grid\n",
       600 * columns, 450 * panel_rows, gnuplot_quoted(png_name).c_str(), panel_rows, columns,
       step_label(settings.steps.front()).c_str(), step_label(settings.steps.back()).c_str());
   int block = 0;
-  for (const HardCase* c : cases) {
-    std::vector<std::string> series;
-    for (const physics::Integrator integrator : physics::kAllIntegrators) {
-      const std::string name(physics::integrator_name(integrator));
-      std::string points;
-      for (const AccuracyRow* row : rows_of(rows, c->name)) {
-        const double error = headline_error(*c, *row);
-        if (row->integrator != name || row->blew_up || !(error > 0.0)) continue;
-        points += printed("%.6g %.6g\n", row->ns_per_simulated_second, error);
-      }
-      if (points.empty()) continue;
-      plot.data += "# " + c->name + " " + name + "\n" + points + "\n\n";
-      series.push_back(
-          printed("'accuracy.dat' index %d using 1:2 with linespoints title %s noenhanced", block++,
-                  gnuplot_quoted(name).c_str()));
-    }
-    plot.script += printed("set title %s noenhanced\n", gnuplot_quoted(c->name).c_str());
+  for (const Panel& panel : all) {
+    const std::vector<std::string> series = panel_series(panel, rows, plot, block);
+    plot.script += printed("set title %s noenhanced\n", gnuplot_quoted(panel.name).c_str());
     if (series.empty()) {
       // A panel with only a note: nothing can be drawn on log axes.
       plot.script +=
           "unset logscale\nunset border\nunset tics\nunset xlabel\nunset ylabel\nunset grid\n"
-          "set label 1 'every run blew up' at graph 0.5, 0.5 center\n"
+          "set label 1 'every run blew up or had no error' at graph 0.5, 0.5 center\n"
           "plot [0:1] [0:1] 2 notitle\nunset label 1\n";
       continue;
     }
     plot.script += printed(
         "set logscale xy\nset border\nset tics\nset grid\nset xlabel 'ns per simulated "
-        "second'\nset ylabel '%s'\nplot ",
-        headline_label(*c));
+        "second'\nset ylabel %s\nplot ",
+        gnuplot_quoted(panel.error_label).c_str());
     for (std::size_t i = 0; i < series.size(); ++i) {
       plot.script += (i == 0 ? "" : ", \\\n     ") + series[i];
     }
@@ -263,7 +325,7 @@ int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std:
                  error_code.message().c_str());
     return kExitBadInput;
   }
-  // The sweep takes about a minute: find an unwritable folder before it, not after.
+  // The sweep takes over a minute: find an unwritable folder before it, not after.
   if (io::AtomicFile probe((directory / ".tumble-write-test").string()); !probe.ok()) {
     std::fprintf(err, "tumble: %s\n", probe.error().c_str());
     return kExitBadInput;
@@ -271,13 +333,15 @@ int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std:
 
   const bench::AccuracySettings settings =
       options.quick ? bench::quick_accuracy_settings() : bench::AccuracySettings{};
-  const std::size_t runs = cases_in(settings).size() * std::size(physics::kAllIntegrators);
+  const std::size_t runs = (bench::selected_hard_cases(settings).size() +
+                            2 * bench::selected_contact_cases(settings).size()) *
+                           std::size(physics::kAllIntegrators);
   std::size_t started = 0;
-  const std::vector<AccuracyRow> rows =
-      bench::measure_accuracy(settings, [&](const HardCase& c, physics::Integrator integrator) {
+  const std::vector<AccuracyRow> rows = bench::measure_accuracy(
+      settings, [&](const std::string& run, physics::Integrator integrator) {
         std::fprintf(
             err, "tumble: bench accuracy: [%zu/%zu] %s with %s at dt = %s ... %s s\n", ++started,
-            runs, c.name.c_str(), std::string(physics::integrator_name(integrator)).c_str(),
+            runs, run.c_str(), std::string(physics::integrator_name(integrator)).c_str(),
             step_label(settings.steps.front()).c_str(), step_label(settings.steps.back()).c_str());
         std::fflush(err);
       });

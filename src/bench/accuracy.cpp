@@ -67,12 +67,58 @@ double median(std::vector<double> values) {
   return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
+// Fills the row's cost: the median over the samples of `timing`, each repeating `run` (which
+// takes `steps` steps and returns a number that depends on them) until min_sample_seconds
+// have passed, guessed from the error run's `error_run_seconds`.
+void time_runs(AccuracyRow& row, const TimingSettings& timing, double error_run_seconds,
+               std::int64_t steps, const std::function<double()>& run) {
+  const std::int64_t repeats = std::max<std::int64_t>(
+      1, std::llround(std::ceil(timing.min_sample_seconds / std::max(error_run_seconds, 1e-9))));
+  std::vector<double> ns_per_step;
+  volatile double sink = 0.0;  // keeps the timed runs from being optimised away
+  for (int sample = 0; sample < std::max(1, timing.samples); ++sample) {
+    const Clock::time_point start = Clock::now();
+    for (std::int64_t r = 0; r < repeats; ++r) sink = sink + run();
+    ns_per_step.push_back(seconds_since(start) * 1e9 /
+                          static_cast<double>(repeats * std::max<std::int64_t>(steps, 1)));
+  }
+  row.ns_per_step = median(ns_per_step);
+  row.ns_per_simulated_second = row.ns_per_step / row.dt;
+}
+
 }  // namespace
 
 AccuracySettings quick_accuracy_settings() {
   return {.cases = {"article_cube", "stiff_linear_damping", "box_on_spring"},
+          .contact_cases = {"bounce", "slide", "rest"},
           .steps = {1.0 / 30, 1.0 / 60},
           .timing = {.samples = 1, .min_sample_seconds = 0.0}};
+}
+
+std::vector<const HardCase*> selected_hard_cases(const AccuracySettings& settings) {
+  std::vector<const HardCase*> out;
+  if (settings.cases.empty()) {
+    for (const HardCase& c : hard_cases()) out.push_back(&c);
+  }
+  for (const std::string& name : settings.cases) {
+    const HardCase* c = find_hard_case(name);
+    if (!c) throw std::invalid_argument("no hard case named " + name);
+    out.push_back(c);
+  }
+  return out;
+}
+
+std::vector<const ContactCase*> selected_contact_cases(const AccuracySettings& settings) {
+  std::vector<const ContactCase*> out;
+  if (settings.contact_cases.empty()) {
+    for (const ContactCase& c : contact_cases()) out.push_back(&c);
+  }
+  for (const std::string& name : settings.contact_cases) {
+    const ContactCase* c = find_contact_case(name);
+    if (!c) throw std::invalid_argument("no contact case named " + name);
+    out.push_back(c);
+  }
+  return out;
 }
 
 AccuracyRow measure_accuracy(const HardCase& c, physics::Integrator integrator, double dt,
@@ -95,6 +141,8 @@ AccuracyRow measure_accuracy(const HardCase& c, physics::Integrator integrator, 
   }
   const double error_run_seconds = seconds_since(error_run_start);
 
+  row.measure =
+      c.headline == HeadlineError::orientation ? "orientation_error_rad" : "position_error_m";
   if (row.blew_up) {
     row.orientation_error = row.position_error = kNaN;
     row.angular_momentum_error = row.energy_error = kNaN;
@@ -116,43 +164,83 @@ AccuracyRow measure_accuracy(const HardCase& c, physics::Integrator integrator, 
                                       std::max(std::abs(exact.energy), std::abs(start.energy)));
   }
 
+  row.error = c.headline == HeadlineError::orientation ? row.orientation_error : row.position_error;
   // The timing samples repeat exactly the steps the error run took (all of them finite: the runs
   // are deterministic), without the per-step check.
-  const std::int64_t repeats = std::max<std::int64_t>(
-      1, std::llround(std::ceil(timing.min_sample_seconds / std::max(error_run_seconds, 1e-9))));
-  std::vector<double> ns_per_step;
-  volatile double sink = 0.0;  // keeps the timed runs from being optimised away
-  for (int sample = 0; sample < std::max(1, timing.samples); ++sample) {
-    const Clock::time_point start = Clock::now();
-    for (std::int64_t r = 0; r < repeats; ++r) {
-      sink = sink + run(c, integrator, dt, taken).position().x();
-    }
-    ns_per_step.push_back(seconds_since(start) * 1e9 / static_cast<double>(repeats * taken));
+  time_runs(row, timing, error_run_seconds, taken,
+            [&] { return run(c, integrator, dt, taken).position().x(); });
+  return row;
+}
+
+AccuracyRow measure_contact_accuracy(const ContactCase& c, physics::ContactMethod method,
+                                     physics::Integrator integrator, double dt,
+                                     const TimingSettings& timing) {
+  AccuracyRow row{.case_name = c.name,
+                  .contact = physics::contact_method_name(method),
+                  .integrator = std::string(physics::integrator_name(integrator)),
+                  .dt = dt,
+                  .steps = std::llround(c.duration / dt),
+                  .measure = c.measures.at(0).name,
+                  .second_measure = c.measures.size() > 1 ? c.measures[1].name : "",
+                  .orientation_error = kNaN,
+                  .position_error = kNaN,
+                  .angular_momentum_error = kNaN,
+                  .energy_error = kNaN};
+
+  const double energy_bound = 2.0 * energy_above_rest(c, c.initial);  // J
+  const Clock::time_point error_run_start = Clock::now();
+  sim::Simulation world = contact_simulation(c, method, integrator, dt);
+  std::vector<physics::BodyState> states = {c.initial};
+  states.reserve(static_cast<std::size_t>(row.steps) + 1);
+  while (world.step_count() < row.steps && !row.blew_up) {
+    world.step();
+    states.push_back(world.current().front());
+    row.blew_up =
+        world.blow_up().has_value() || !(energy_above_rest(c, states.back()) <= energy_bound);
   }
-  row.ns_per_step = median(ns_per_step);
-  row.ns_per_simulated_second = row.ns_per_step / dt;
+  const double error_run_seconds = seconds_since(error_run_start);
+  const std::int64_t taken = world.step_count();
+
+  if (row.blew_up) {
+    row.error = kNaN;
+  } else {
+    const std::vector<double> errors = c.judge(states, dt);
+    row.error = errors.at(0);
+    if (errors.size() > 1) row.second_error = errors[1];
+  }
+  time_runs(row, timing, error_run_seconds, taken, [&] {
+    sim::Simulation timed = contact_simulation(c, method, integrator, dt);
+    while (timed.step_count() < taken) timed.step();
+    return timed.current().front().position().x();
+  });
   return row;
 }
 
 std::vector<AccuracyRow> measure_accuracy(
     const AccuracySettings& settings,
-    const std::function<void(const HardCase&, physics::Integrator)>& on_start) {
-  std::vector<const HardCase*> cases;
-  if (settings.cases.empty()) {
-    for (const HardCase& c : hard_cases()) cases.push_back(&c);
-  } else {
-    for (const std::string& name : settings.cases) {
-      const HardCase* c = find_hard_case(name);
-      if (!c) throw std::invalid_argument("no hard case named " + name);
-      cases.push_back(c);
-    }
-  }
+    const std::function<void(const std::string&, physics::Integrator)>& on_start) {
+  // Both lists first, so that an unknown name fails before anything runs.
+  const std::vector<const HardCase*> hard = selected_hard_cases(settings);
+  const std::vector<const ContactCase*> contact = selected_contact_cases(settings);
   std::vector<AccuracyRow> rows;
-  for (const HardCase* c : cases) {
+  for (const HardCase* c : hard) {
     for (const physics::Integrator integrator : physics::kAllIntegrators) {
-      if (on_start) on_start(*c, integrator);
+      if (on_start) on_start(c->name, integrator);
       for (const double dt : settings.steps) {
         rows.push_back(measure_accuracy(*c, integrator, dt, settings.timing));
+      }
+    }
+  }
+  for (const ContactCase* c : contact) {
+    for (const physics::ContactMethod method :
+         {physics::ContactMethod::impulse, physics::ContactMethod::penalty}) {
+      for (const physics::Integrator integrator : physics::kAllIntegrators) {
+        if (on_start) {
+          on_start(c->name + " (" + physics::contact_method_name(method) + " contact)", integrator);
+        }
+        for (const double dt : settings.steps) {
+          rows.push_back(measure_contact_accuracy(*c, method, integrator, dt, settings.timing));
+        }
       }
     }
   }

@@ -1,13 +1,17 @@
 // Speed against error: every integrator on every hard case at a ladder of steps, with the error
-// of the final state against the case's reference and the cost measured in the same run.
+// of the final state against the case's reference, and on every contact case with both contact
+// methods, with the case's own errors; the cost is measured in the same run.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
+#include "bench/contact_cases.hpp"
 #include "bench/hard_cases.hpp"
+#include "physics/contact.hpp"
 #include "physics/integrators.hpp"
 
 namespace tumble::bench {
@@ -24,24 +28,43 @@ struct TimingSettings {
 };
 
 struct AccuracySettings {
-  std::vector<std::string> cases;  // hard case names; empty means every case
+  std::vector<std::string> cases = {};  // hard case names; empty means every case
+  // Contact case names (bench/contact_cases.hpp), each run with both contact methods; empty
+  // means every case.
+  std::vector<std::string> contact_cases = {};
   std::vector<double> steps = std::vector<double>(std::begin(kAccuracySteps),
                                                   std::end(kAccuracySteps));  // dt (s)
   TimingSettings timing = {};
 };
 
-// A reduced sweep for tests and a quick look: three cases, the two coarsest steps, one sample.
+// A reduced sweep for tests and a quick look: three hard cases and every contact case, the two
+// coarsest steps, one sample.
 AccuracySettings quick_accuracy_settings();
+
+// The cases a sweep runs, in sweep order; throws std::invalid_argument for an unknown name.
+std::vector<const HardCase*> selected_hard_cases(const AccuracySettings& settings);
+std::vector<const ContactCase*> selected_contact_cases(const AccuracySettings& settings);
 
 // One integrator on one case at one step.
 struct AccuracyRow {
   std::string case_name;
+  // "impulse" or "penalty" on a contact case; "none" on a hard case, which touches nothing.
+  std::string contact = "none";
   std::string integrator;
   double dt = 0.0;         // s
   std::int64_t steps = 0;  // round(duration / dt)
   // The state became non-finite or left the case's bounds (see measure_accuracy); the errors
   // are then NaN and the timing covers the steps taken before that.
   bool blew_up = false;
+  // The error a case is judged by, and its name with its unit: a hard case's orientation or
+  // position error ("orientation_error_rad", "position_error_m"), a contact case's own measures
+  // (ContactCase::measures, e.g. "apex_error_m"). A second one where the case has it (the rest
+  // case's corner motion), else "" and NaN.
+  std::string measure = "";
+  double error = 0.0;
+  std::string second_measure = "";
+  double second_error = std::numeric_limits<double>::quiet_NaN();
+  // Of the final state against the reference, on hard cases only (NaN on contact cases):
   double orientation_error = 0.0;  // angle from the reference orientation (rad)
   double position_error = 0.0;     // distance from the reference position (m)
   // Conserved quantities: the relative drift | |L| - |L0| | / |L0| and |E - E0| / E0. Otherwise
@@ -57,10 +80,20 @@ struct AccuracyRow {
 AccuracyRow measure_accuracy(const HardCase& hard_case, physics::Integrator integrator,
                              double dt /* s */, const TimingSettings& timing);
 
-// The whole sweep, case by case, integrator by integrator (in kAllIntegrators order), step by
-// step. `on_start` (optional) is called before each case's integrator, for progress.
+// Runs one contact case with one contact method and one integrator at one step, through
+// sim::Simulation: once, keeping every state for the case's measures and checking each step for
+// a blow-up (the Simulation's, or the energy above rest doubling: energy_above_rest); then the
+// timing samples of the same steps.
+AccuracyRow measure_contact_accuracy(const ContactCase& contact_case, physics::ContactMethod method,
+                                     physics::Integrator integrator, double dt /* s */,
+                                     const TimingSettings& timing);
+
+// The whole sweep: the hard cases, then the contact cases with impulse and then penalty contact,
+// each integrator by integrator (in kAllIntegrators order), step by step. `on_start` (optional)
+// is called before each run of the steps, with its name ("article_cube", "bounce (penalty
+// contact") and integrator, for progress.
 std::vector<AccuracyRow> measure_accuracy(
     const AccuracySettings& settings,
-    const std::function<void(const HardCase&, physics::Integrator)>& on_start = {});
+    const std::function<void(const std::string& run, physics::Integrator)>& on_start = {});
 
 }  // namespace tumble::bench

@@ -1,11 +1,14 @@
 #include "sim/stability.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string_view>
 #include <variant>
+
+#include "sim/penalty_modes.hpp"
 
 namespace tumble::sim {
 namespace {
@@ -34,37 +37,69 @@ bool is_splitting(Method method) {
 // Every one-step map below is written I + N and only N is computed: for a small step the map is
 // close to the identity, and its eigenvalues, 1 + those of N, would lose their digits to the 1.
 
+// N of (I + second)(I + first): first, then second.
+Mat2 then(const Mat2& first, const Mat2& second) {
+  return first + second + second * first;
+}
+
+// N of a kick of τ (s) on (y, y') with y'' = -ω² y - k y': y' moves, y is frozen. The exact flow
+// is y' -> e^{-kτ} y' - φ ω² y with φ = (1 - e^{-kτ})/k; the frozen force held over τ gives
+// y' -> (1 - kτ) y' - τ ω² y.
+Mat2 kick_change(const LinearMode& mode, double tau) {
+  const double k = mode.damping_rate;
+  const double w2 = mode.frequency * mode.frequency;
+  Mat2 change;
+  if (mode.kick_damping == KickDamping::frozen) {
+    change << 0.0, 0.0, -tau * w2, -tau * k;
+  } else {
+    const double impulse_time = k == 0.0 ? tau : -std::expm1(-k * tau) / k;  // φ (s)
+    change << 0.0, 0.0, -impulse_time * w2, std::expm1(-k * tau);
+  }
+  return change;
+}
+
+// N of kick(k₀h) drift(d₀h) kick(k₁h) … drift(d_{n-1}h) kick(k_n h), the splitting methods'
+// composition (physics/integrators.cpp, compose); a drift moves y by τ y'.
+template <std::size_t Drifts>
+Mat2 composition_change(const LinearMode& mode, double h,
+                        const std::array<double, Drifts + 1>& kicks,
+                        const std::array<double, Drifts>& drifts) {
+  Mat2 change = kick_change(mode, kicks[0] * h);
+  for (std::size_t i = 0; i < Drifts; ++i) {
+    Mat2 drift;
+    drift << 0.0, drifts[i] * h, 0.0, 0.0;
+    change = then(then(change, drift), kick_change(mode, kicks[i + 1] * h));
+  }
+  return change;
+}
+
+// N of one splitting step of h (s), with the coefficients of physics/integrators.cpp: Strang's
+// half kick, drift, half kick; and Yoshida's triple jump of it, Strang steps of γ₁h, γ₂h, γ₁h
+// with γ₁ = 1 / (2 - ∛2), γ₂ = 1 - 2γ₁, whose touching half kicks are merged into one kick. (For
+// exact kicks merging changes nothing; for frozen ones it is what the integrator does.)
+Mat2 splitting_change(Method method, const LinearMode& mode, double h) {
+  if (method == Method::splitting) return composition_change<1>(mode, h, {0.5, 0.5}, {1.0});
+  const double outer = 1.0 / (2.0 - std::cbrt(2.0));
+  const double inner = 1.0 - 2.0 * outer;
+  return composition_change<3>(
+      mode, h, {0.5 * outer, 0.5 * (outer + inner), 0.5 * (outer + inner), 0.5 * outer},
+      {outer, inner, outer});
+}
+
 // N of a step of h (s) on a decaying momentum, p' = -k p: the map's factor minus one.
-double decay_change(Method method, double k, double h) {
-  const double z = -k * h;
+double decay_change(Method method, const LinearMode& mode, double h) {
+  const double z = -mode.damping_rate * h;
   switch (method) {
     case Method::euler:
     case Method::symplectic_euler:  // the kick is an explicit Euler step of the momentum
       return z;
     case Method::rk4:
       return z * (1.0 + z / 2.0 * (1.0 + z / 3.0 * (1.0 + z / 4.0)));
-    case Method::splitting:  // damping applied exactly
+    case Method::splitting:  // the momentum's part of the kicks; drifts do not touch it
     case Method::splitting4:
-      return std::expm1(z);
+      return splitting_change(method, mode, h)(1, 1);
   }
   return 0.0;
-}
-
-// N of (I + second)(I + first): first, then second.
-Mat2 then(const Mat2& first, const Mat2& second) {
-  return first + second + second * first;
-}
-
-// N of Strang splitting over h (s): half a kick, a drift, half a kick, each kick the exact flow
-// of y'' = -ω² y - k y' with y frozen (physics/integrators.cpp): v -> e^{-kh/2} v - φ ω² y.
-Mat2 strang_change(const LinearMode& mode, double h) {
-  const double k = mode.damping_rate;
-  const double half = 0.5 * h;
-  const double impulse_time = k == 0.0 ? half : -std::expm1(-k * half) / k;  // φ (s)
-  Mat2 half_kick, drift;
-  half_kick << 0.0, 0.0, -impulse_time * mode.frequency * mode.frequency, std::expm1(-k * half);
-  drift << 0.0, h, 0.0, 0.0;
-  return then(then(half_kick, drift), half_kick);
 }
 
 // N of one step of h (s) of the method on (y, y') with y'' = -ω² y - k y'.
@@ -90,15 +125,9 @@ Mat2 oscillator_change(Method method, const LinearMode& mode, double h) {
       change << -h * h * w2, h * (1.0 - h * k), -h * w2, -h * k;
       break;
     case Method::splitting:
-      change = strang_change(mode, h);
+    case Method::splitting4:
+      change = splitting_change(method, mode, h);
       break;
-    case Method::splitting4: {
-      // Yoshida's triple jump: Strang steps of γ₁h, γ₂h, γ₁h with γ₁ = 1 / (2 - ∛2), γ₂ = 1 - 2γ₁.
-      const double outer = 1.0 / (2.0 - std::cbrt(2.0));
-      const Mat2 outer_step = strang_change(mode, outer * h);
-      change = then(then(outer_step, strang_change(mode, (1.0 - 2.0 * outer) * h)), outer_step);
-      break;
-    }
   }
   return change;
 }
@@ -114,7 +143,7 @@ bool bounded(double mu, double tolerance) {
 // drives is only its running sum.
 bool stable(Method method, const LinearMode& mode, double h) {
   constexpr double kRounding = 1e-14;
-  if (mode.frequency == 0.0) return bounded(decay_change(method, mode.damping_rate, h), kRounding);
+  if (mode.frequency == 0.0) return bounded(decay_change(method, mode, h), kRounding);
   const Mat2 change = oscillator_change(method, mode, h);
   const double half_trace = 0.5 * change.trace();
   const double determinant = change.determinant();
@@ -137,10 +166,12 @@ std::string printed(const char* format, auto... values) {
 }
 
 struct BodyRates {
-  double linear_damping = 0.0;                   // Σ c (N s/m)
-  double angular_damping = 0.0;                  // Σ c (N m s)
-  physics::Vec3 torque = physics::Vec3::Zero();  // Σ constant torques, world (N m)
+  double linear_damping = 0.0;                    // Σ c (N s/m)
+  double angular_damping = 0.0;                   // Σ c (N m s)
+  physics::Vec3 torque = physics::Vec3::Zero();   // Σ constant torques, world (N m)
+  physics::Vec3 gravity = physics::Vec3::Zero();  // Σ gravitational fields, world (m/s²)
   std::vector<physics::Spring> springs;
+  std::vector<const physics::PenaltyContact*> penalty_contacts;
 };
 
 BodyRates rates_of(const physics::BodyModel& model) {
@@ -154,6 +185,10 @@ BodyRates rates_of(const physics::BodyModel& model) {
       out.torque += t->torque;
     } else if (const auto* s = std::get_if<physics::Spring>(&law)) {
       out.springs.push_back(*s);
+    } else if (const auto* g = std::get_if<physics::Gravity>(&law)) {
+      out.gravity += g->acceleration;
+    } else if (const auto* p = std::get_if<physics::PenaltyContact>(&law)) {
+      out.penalty_contacts.push_back(p);
     }
   }
   return out;
@@ -191,20 +226,32 @@ std::optional<Integrator> alternative(Integrator current, const auto& ok) {
   return std::nullopt;
 }
 
+// A mode with the words a warning gives it.
+struct NamedMode {
+  LinearMode mode;
+  std::string cause;  // what makes the mode, with its numbers: the warning's first clause
+  std::string outcome = "the motion will blow up";  // what a step beyond the limit does
+  // The mode is penalty contact's: contact = "impulse" has no such limit.
+  bool penalty_contact = false;
+};
+
 std::string advice(const StepWarning& warning) {
   std::string out;
   if (warning.suggested_dt) out += printed("use dt <= %.3g s", *warning.suggested_dt);
+  const auto suggest = [&](const std::string& setting) {
+    out += (out.empty() ? "use " : " or ") + setting;
+  };
   if (warning.suggested_integrator) {
-    out += out.empty() ? "use " : " or ";
-    out += printed("integrator = \"%s\"",
-                   std::string(physics::integrator_name(*warning.suggested_integrator)).c_str());
+    suggest(printed("integrator = \"%s\"",
+                    std::string(physics::integrator_name(*warning.suggested_integrator)).c_str()));
   }
+  if (warning.suggests_impulse_contact) suggest("contact = \"impulse\"");
   return out.empty() ? out : "; " + out;
 }
 
-// A warning when `dt` is beyond the stability limit of `integrator` on `mode`.
-std::optional<StepWarning> check_mode(Integrator integrator, const LinearMode& mode,
-                                      const std::string& cause, double dt) {
+// A warning when `dt` is beyond the stability limit of `integrator` on the mode.
+std::optional<StepWarning> check_mode(Integrator integrator, const NamedMode& named, double dt) {
+  const LinearMode& mode = named.mode;
   const std::optional<double> limit = stability_limit(integrator, mode);
   if (!limit || dt <= *limit) return std::nullopt;
   const std::string name(physics::integrator_name(integrator));
@@ -214,21 +261,70 @@ std::optional<StepWarning> check_mode(Integrator integrator, const LinearMode& m
   const char* symbol = oscillates ? "ω_n" : "k";
   if (*limit == 0.0) {
     warning.message = printed("%s: %s is unstable on it at any dt (it gains energy every step)",
-                              cause.c_str(), name.c_str());
+                              named.cause.c_str(), name.c_str());
   } else {
     warning.message = printed(
-        "%s: %s·dt = %.3g is beyond %s's stability limit %s·dt <= %.4g%s, "
-        "so the motion will blow up",
-        cause.c_str(), symbol, rate * dt, name.c_str(), symbol, rate * *limit,
-        oscillates && mode.damping_rate > 0.0 ? " with this damping" : "");
+        "%s: %s·dt = %.3g is beyond %s's stability limit %s·dt <= %.4g%s, so %s",
+        named.cause.c_str(), symbol, rate * dt, name.c_str(), symbol, rate * *limit,
+        oscillates && mode.damping_rate > 0.0 ? " with this damping" : "", named.outcome.c_str());
     warning.suggested_dt = kSuggestedFractionOfLimit * *limit;
   }
   warning.suggested_integrator = alternative(integrator, [&](Integrator candidate) {
     const std::optional<double> other = stability_limit(candidate, mode);
     return other && dt <= *other;
   });
+  warning.suggests_impulse_contact = named.penalty_contact;
   warning.message += advice(warning);
   return warning;
+}
+
+// Of several modes of one kind (a box rocking about each of its axes), the one `integrator`
+// is least stable on: the smallest limit.
+const PenaltyMode* least_stable(Integrator integrator, const std::vector<PenaltyMode>& modes) {
+  const PenaltyMode* out = nullptr;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const PenaltyMode& candidate : modes) {
+    const std::optional<double> limit = stability_limit(integrator, candidate.mode);
+    if (limit && (!out || *limit < smallest)) {
+      out = &candidate;
+      smallest = *limit;
+    }
+  }
+  return out;
+}
+
+// The words of a penalty contact mode (sim/penalty_modes.hpp).
+NamedMode described(const PenaltyMode& mode, const physics::PenaltyContact& law, double friction) {
+  constexpr const char* kAxes[] = {"x", "y", "z"};
+  const double rate = mode.mode.damping_rate, frequency = mode.mode.frequency;
+  NamedMode out;
+  out.mode = mode.mode;
+  out.penalty_contact = true;
+  switch (mode.kind) {
+    case PenaltyMode::Kind::bounce:
+      out.cause = printed(
+          "penalty contact (k = %.4g N/m, c = %.4g N s/m per corner) makes the box bounce on "
+          "four corners at ω_n = sqrt(4k/m) = %.4g rad/s, damped at 4c/m = %.4g /s",
+          law.stiffness, law.damping, frequency, rate);
+      break;
+    case PenaltyMode::Kind::rock:
+      out.cause = printed(
+          "penalty contact makes the box rock on four corners about its %s axis at "
+          "ω_n = sqrt(4k a²/I) = %.4g rad/s (lever a = %.3g m), damped at 4c a²/I = %.4g /s",
+          kAxes[mode.axis], frequency, mode.lever, rate);
+      break;
+    case PenaltyMode::Kind::slide:
+    case PenaltyMode::Kind::twist:
+      out.cause = printed(
+          "penalty contact's friction (μ = %.3g, slip speed %.3g m/s) makes a resting box's "
+          "%s decay at k = %.4g /s",
+          friction, law.slip_speed,
+          mode.kind == PenaltyMode::Kind::slide ? "slip (with its rocking)" : "twist", rate);
+      // The friction force is at most μ F_n: a slip that overshoots stays bounded.
+      out.outcome = "the box will jitter on the plane instead of resting";
+      break;
+  }
+  return out;
 }
 
 }  // namespace
@@ -272,7 +368,7 @@ std::vector<StepWarning> check_step(const physics::BodyModel& model,
   const double linear_rate = rates.linear_damping * constants.inverse_mass;
 
   const auto add = [&](const LinearMode& mode, const std::string& cause) {
-    if (auto warning = check_mode(integrator, mode, cause, dt)) {
+    if (auto warning = check_mode(integrator, {.mode = mode, .cause = cause}, dt)) {
       warnings.push_back(std::move(*warning));
     }
   };
@@ -300,6 +396,17 @@ std::vector<StepWarning> check_step(const physics::BodyModel& model,
       add(mode, printed("the spring's damping makes the attachment's speed decay at up to "
                         "k = %.4g /s",
                         mode.damping_rate));
+    }
+  }
+
+  for (const physics::PenaltyContact* law : rates.penalty_contacts) {
+    const PenaltyModes modes = penalty_modes(constants, *law, rates.gravity);
+    for (const PenaltyMode* mode : {&modes.bounce, least_stable(integrator, modes.rocking),
+                                    least_stable(integrator, modes.slipping)}) {
+      if (!mode) continue;
+      if (auto warning = check_mode(integrator, described(*mode, *law, modes.friction), dt)) {
+        warnings.push_back(std::move(*warning));
+      }
     }
   }
 

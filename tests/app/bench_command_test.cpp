@@ -28,9 +28,11 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
+// Each hard case once, each contact case with both contact methods.
 std::size_t quick_row_count() {
   const tumble::bench::AccuracySettings quick = tumble::bench::quick_accuracy_settings();
-  return quick.cases.size() * std::size(tumble::physics::kAllIntegrators) * quick.steps.size();
+  return (quick.cases.size() + 2 * quick.contact_cases.size()) *
+         std::size(tumble::physics::kAllIntegrators) * quick.steps.size();
 }
 
 TEST_F(BenchAccuracyCommand, QuickWritesTheCsvTheMarkdownAndTheChart) {
@@ -39,23 +41,36 @@ TEST_F(BenchAccuracyCommand, QuickWritesTheCsvTheMarkdownAndTheChart) {
   const std::vector<std::string> csv = lines_of(read_file(dir_ / "out" / "accuracy.csv"));
   ASSERT_FALSE(csv.empty());
   EXPECT_EQ(csv[0],
-            "case,integrator,dt,steps,blew_up,orientation_error_rad,position_error_m,"
-            "angular_momentum_error,energy_error,ns_per_step,ns_per_simulated_second");
+            "case,contact,integrator,dt,steps,blew_up,measure,error,second_measure,second_error,"
+            "orientation_error_rad,position_error_m,angular_momentum_error,energy_error,"
+            "ns_per_step,ns_per_simulated_second");
   EXPECT_EQ(csv.size(), 1 + quick_row_count());
-  // Explicit Euler at k dt = 10 on the stiff decay: blown up, and said so.
-  bool found = false;
-  for (const std::string& line : csv) {
-    if (line.rfind("stiff_linear_damping,euler,0.033333333333333333,30,1,nan,nan", 0) == 0) {
-      found = true;
+  // Explicit Euler at k dt = 10 on the stiff decay: blown up, and said so. Penalty contact at
+  // 1/30 (ω_n dt = 26 rocking) likewise; its rows leave the final-state errors empty.
+  const auto has_line_starting = [&](const std::string& start) {
+    for (const std::string& line : csv) {
+      if (line.rfind(start, 0) == 0) return true;
     }
-  }
-  EXPECT_TRUE(found) << read_file(dir_ / "out" / "accuracy.csv");
+    return false;
+  };
+  EXPECT_TRUE(has_line_starting(
+      "stiff_linear_damping,none,euler,0.033333333333333333,30,1,position_error_m,nan,,,nan,nan"))
+      << read_file(dir_ / "out" / "accuracy.csv");
+  EXPECT_TRUE(
+      has_line_starting("bounce,penalty,rk4,0.033333333333333333,30,1,apex_error_m,nan,,,,,,,"))
+      << read_file(dir_ / "out" / "accuracy.csv");
+  EXPECT_TRUE(has_line_starting("rest,impulse,rk4,0.016666666666666666,360,0,penetration_m,"))
+      << read_file(dir_ / "out" / "accuracy.csv");
 
   const std::string markdown = read_file(dir_ / "out" / "accuracy.md");
   EXPECT_NE(markdown.find("# Speed against error"), std::string::npos);
   EXPECT_NE(markdown.find("## article_cube"), std::string::npos);
   EXPECT_NE(markdown.find("| rk4 | 1/60 |"), std::string::npos) << markdown;
   EXPECT_NE(markdown.find("blew up"), std::string::npos);
+  EXPECT_NE(markdown.find("## bounce"), std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("| contact | integrator | dt (s) | apex error (m) |"), std::string::npos)
+      << markdown;
+  EXPECT_NE(markdown.find("| penalty | rk4 | 1/30 | blew up |"), std::string::npos) << markdown;
 
   const std::string png = read_file(dir_ / "out" / "accuracy.png");
   ASSERT_GT(png.size(), 8u);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <iterator>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace tumble::bench {
 namespace {
@@ -64,24 +66,46 @@ TEST(Accuracy, Rk4OnTheArticleCube) {
 
 TEST(Accuracy, TheQuickSweepCoversItsCasesIntegratorsAndStepsInOrder) {
   const AccuracySettings quick = quick_accuracy_settings();
-  int started = 0;
+  std::vector<std::string> started;
   const std::vector<AccuracyRow> rows =
-      measure_accuracy(quick, [&](const HardCase&, Integrator) { ++started; });
+      measure_accuracy(quick, [&](const std::string& run, Integrator) { started.push_back(run); });
   const std::size_t integrators = std::size(physics::kAllIntegrators);
-  ASSERT_EQ(rows.size(), quick.cases.size() * integrators * quick.steps.size());
-  EXPECT_EQ(started, static_cast<int>(quick.cases.size() * integrators));
+  const std::size_t runs = (quick.cases.size() + 2 * quick.contact_cases.size()) * integrators;
+  ASSERT_EQ(rows.size(), runs * quick.steps.size());
+  ASSERT_EQ(started.size(), runs);
   std::size_t i = 0;
-  for (const std::string& name : quick.cases) {
+  const auto expect_rows = [&](const std::string& name, const std::string& contact) {
     for (const Integrator integrator : physics::kAllIntegrators) {
+      EXPECT_EQ(started[i / quick.steps.size()],
+                contact == "none" ? name : name + " (" + contact + " contact)");
       for (const double dt : quick.steps) {
         EXPECT_EQ(rows[i].case_name, name);
+        EXPECT_EQ(rows[i].contact, contact);
         EXPECT_EQ(rows[i].integrator, physics::integrator_name(integrator));
         EXPECT_EQ(rows[i].dt, dt);
+        EXPECT_FALSE(rows[i].measure.empty());
         ++i;
       }
     }
+  };
+  for (const std::string& name : quick.cases) expect_rows(name, "none");
+  for (const std::string& name : quick.contact_cases) {
+    expect_rows(name, "impulse");
+    expect_rows(name, "penalty");
   }
   EXPECT_THROW(measure_accuracy({.cases = {"no_such_case"}}), std::invalid_argument);
+  EXPECT_THROW(measure_accuracy({.contact_cases = {"no_such_case"}}), std::invalid_argument);
+}
+
+// A hard case's headline error is named and repeated in `error`.
+TEST(Accuracy, AHardCaseNamesItsHeadlineError) {
+  const AccuracyRow row = measure_accuracy(*find_hard_case("stiff_linear_damping"), Integrator::rk4,
+                                           1.0 / 480, kUntimed);
+  EXPECT_EQ(row.contact, "none");
+  EXPECT_EQ(row.measure, "position_error_m");
+  EXPECT_EQ(row.error, row.position_error);
+  EXPECT_TRUE(row.second_measure.empty());
+  EXPECT_TRUE(std::isnan(row.second_error));
 }
 
 }  // namespace

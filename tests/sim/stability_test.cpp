@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <string>
+
+#include "physics/contact.hpp"
 
 namespace tumble::sim {
 namespace {
@@ -242,6 +246,210 @@ TEST(CheckStep, ExpectsTheSpinATorqueBuildsUp) {
   damped.forces.push_back(physics::AngularDamping{.coefficient = 0.1});
   EXPECT_TRUE(check_step(damped, at_rest(damped), Integrator::rk4, 0.5 / 10.5, 100.0).empty());
   EXPECT_EQ(check_step(damped, at_rest(damped), Integrator::rk4, 0.5 / 9.5, 100.0).size(), 1u);
+}
+
+// ---- Penalty contact: the advisor's limits against the integrators' own ------------------------
+
+constexpr double kG = 9.81;  // m/s²
+
+// A 1 kg box of edge lengths `size` (m) on a floor at y = 0 under gravity, with penalty contact
+// of stiffness k and damping c per corner (N/m, N s/m) and friction μ for both box and floor.
+BodyModel penalty_box(const Vec3& size, double stiffness, double damping, double friction) {
+  const physics::Material material{.restitution = 0.0, .friction = friction};
+  BodyModel model{.constants = physics::box_constants(1.0, size),
+                  .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
+                  .half_size = 0.5 * size,
+                  .material = material};
+  model.forces.push_back(physics::PenaltyContact{.planes = {physics::Plane{.material = material}},
+                                                 .half_size = model.half_size,
+                                                 .material = material,
+                                                 .stiffness = stiffness,
+                                                 .damping = damping});
+  return model;
+}
+
+// Each corner's share of the weight sinks it by m g / (4k) at rest (m).
+double rest_depth(const BodyModel& model) {
+  const auto& law = std::get<physics::PenaltyContact>(model.forces.back());
+  return model.constants.mass * kG / (4.0 * law.stiffness);
+}
+
+// The height of the centre (m) at which the box, turned by `orientation`, rests on its lowest
+// face: that face's corners sunk by rest_depth.
+double rest_height(const BodyModel& model, const Quat& orientation) {
+  double lowest = 0.0;  // of a corner relative to the centre (m)
+  for (int feature = 0; feature < 8; ++feature) {
+    lowest = std::min(lowest, (orientation * physics::corner(model.half_size, feature)).y());
+  }
+  return -lowest - rest_depth(model);
+}
+
+// Lowered from 1 µm above its rest height and left to settle by RK4 at a step far inside every
+// limit (ω_n dt <= 0.01), for 30 times the bounce's decay time 2m/(4c), the slowest of its modes.
+BodyState settled(const BodyModel& model, const Quat& orientation = Quat::Identity()) {
+  const auto& law = std::get<physics::PenaltyContact>(model.forces.back());
+  const double step = 0.01 / std::sqrt(4.0 * law.stiffness / model.constants.mass);  // s
+  const double duration = 60.0 * model.constants.mass / (4.0 * law.damping);         // s
+  BodyState state =
+      physics::make_state(model.constants, Vec3(0, rest_height(model, orientation) + 1e-6, 0),
+                          Vec3::Zero(), orientation, Vec3::Zero());
+  for (int n = 0; n * step < duration; ++n) {
+    state = physics::step(Integrator::rk4, model, state, n * step, step);
+  }
+  EXPECT_NEAR(state.position().y(), rest_height(model, orientation), 1e-12);
+  EXPECT_LT(state.velocity().norm(), 1e-9);
+  return state;
+}
+
+// The energy of the departure from rest (J): kinetic, plus ½ k (d - d_rest)² for each corner in
+// contact — the linearised system's energy, gravity's first-order part cancelling the springs'.
+double departure_energy(const BodyModel& model, const BodyState& state) {
+  const auto& law = std::get<physics::PenaltyContact>(model.forces.back());
+  double energy = physics::kinetic_energy(state);
+  for (int feature = 0; feature < 8; ++feature) {
+    const double depth =
+        -physics::body_point_to_world(state, physics::corner(law.half_size, feature)).y();
+    if (depth > 0.0) energy += 0.5 * law.stiffness * std::pow(depth - rest_depth(model), 2);
+  }
+  return energy;
+}
+
+// Whether a departure from rest grows under `integrator` at `dt`: the largest energy of the last
+// 50 of 4000 steps against that of the first 5 (a step's transient), or a millionfold growth at
+// any step (an amplitude 1e3 × the start, still far inside the sink, where the run stops: the
+// system stays linear throughout).
+bool grows(Integrator integrator, const BodyModel& model, const BodyState& start, double dt) {
+  constexpr int kSteps = 4000, kFirst = 5, kLast = 50;
+  const double start_energy = departure_energy(model, start);
+  BodyState state = start;
+  double first = start_energy, last = 0.0;
+  for (int n = 0; n < kSteps; ++n) {
+    state = physics::step(integrator, model, state, n * dt, dt);
+    const double energy = departure_energy(model, state);
+    if (!(energy <= 1e6 * start_energy)) return true;
+    if (n < kFirst) first = std::max(first, energy);
+    if (n >= kSteps - kLast) last = std::max(last, energy);
+  }
+  return !(last <= 10.0 * first);
+}
+
+// The step (s) where growth sets in, by bisection in log dt between a step that does not grow
+// and one that does, to 0.2%.
+double measured_limit(Integrator integrator, const BodyModel& model, const BodyState& start,
+                      double stable, double unstable) {
+  EXPECT_FALSE(grows(integrator, model, start, stable)) << "dt = " << stable;
+  EXPECT_TRUE(grows(integrator, model, start, unstable)) << "dt = " << unstable;
+  while (unstable / stable > 1.002) {
+    const double middle = std::sqrt(stable * unstable);
+    (grows(integrator, model, start, middle) ? unstable : stable) = middle;
+  }
+  return std::sqrt(stable * unstable);
+}
+
+// The smallest dt (s) at which the advisor warns, found the same way from check_step.
+double predicted_limit(Integrator integrator, const BodyModel& model, const BodyState& start) {
+  double quiet = 1e-7, warned = 1.0;
+  EXPECT_TRUE(check_step(model, start, integrator, quiet, 1.0).empty());
+  EXPECT_FALSE(check_step(model, start, integrator, warned, 1.0).empty());
+  while (warned / quiet > 1.0 + 1e-9) {
+    const double middle = std::sqrt(quiet * warned);
+    (check_step(model, start, integrator, middle, 1.0).empty() ? quiet : warned) = middle;
+  }
+  return warned;
+}
+
+// The starting departure: 1 nm up and a turn of 10 nrad about (1, 0, 2), which rocks the cube
+// about x and z; the corners move by under 10 nm against a sink of 25 µm.
+BodyState nudged(const BodyModel& model, const BodyState& rest) {
+  physics::PrimaryState primary = rest.primary();
+  primary.position.y() += 1e-9;
+  primary.orientation =
+      Quat(Eigen::AngleAxisd(1e-8, Vec3(1, 0, 2).normalized())) * primary.orientation;
+  return BodyState(primary, model.constants);
+}
+
+// Compares the advisor's limit with the measured one for every integrator.
+void expect_predicted_limits(const BodyModel& model, const BodyState& start) {
+  for (const Integrator integrator : physics::kAllIntegrators) {
+    SCOPED_TRACE(std::string(physics::integrator_name(integrator)));
+    const double predicted = predicted_limit(integrator, model, start);
+    const double measured =
+        measured_limit(integrator, model, start, predicted / 3.0, 3.0 * predicted);
+    std::printf("[ measured ] %-16s unstable from dt = %.5g s, predicted %.5g s (%+.2f%%)\n",
+                std::string(physics::integrator_name(integrator)).c_str(), measured, predicted,
+                100.0 * (predicted / measured - 1.0));
+    EXPECT_NEAR(predicted, measured, 0.05 * measured);
+    // One warning, or two where bouncing and rocking share a limit (explicit Euler's c/k).
+    const std::vector<StepWarning> warnings =
+        check_step(model, start, integrator, 1.01 * predicted, 1.0);
+    ASSERT_FALSE(warnings.empty());
+    for (const StepWarning& warning : warnings) {
+      EXPECT_NE(warning.message.find("contact = \"impulse\""), std::string::npos)
+          << warning.message;
+      EXPECT_TRUE(warning.suggests_impulse_contact);
+    }
+  }
+}
+
+// A 1 kg unit cube, ω_n = 632 rad/s bouncing (4c/m = 200 /s) and 775 rad/s rocking
+// (4c a²/I = 300 /s), no friction. Explicit Euler, unstable on any undamped spring, is stable
+// here up to 2ζ/ω_n = c/k = 0.5 ms for both.
+TEST(CheckStep, PredictsWherePenaltyContactTurnsEachIntegratorUnstable) {
+  const BodyModel model = penalty_box(Vec3::Ones(), 1e5, 50.0, 0.0);
+  expect_predicted_limits(model, nudged(model, settled(model)));
+}
+
+// A 0.3 × 1 × 2 m box lying on its largest face (body x up): its rocking about body y, with
+// the 1 m lever, is the stiffest of any face (ω_n² = 4k a²/I_y = 1.17e6 /s²), so that the mode
+// the advisor picks is the one this box has.
+TEST(CheckStep, PredictsThePenaltyLimitsOfABoxOnItsStiffestFace) {
+  const BodyModel model = penalty_box(Vec3(0.3, 1.0, 2.0), 1e5, 50.0, 0.0);
+  const Quat on_largest_face(Eigen::AngleAxisd(std::numbers::pi / 2.0, Vec3::UnitZ()));
+  expect_predicted_limits(model, nudged(model, settled(model, on_largest_face)));
+}
+
+// Soft contact (ω_n = 63 and 77 rad/s) with friction μ = 0.5: the regularised friction's slip,
+// decaying at up to 3 μ g / v_s = 294 /s (twisting), is then the stiffest mode for every
+// integrator. The departure adds a slide of 0.1 µm/s along x and a twist of 0.1 µrad/s, far below
+// the slip speed of 5 cm/s where the friction is linear.
+TEST(CheckStep, PredictsWherePenaltyFrictionTurnsEachIntegratorUnstable) {
+  const BodyModel model = penalty_box(Vec3::Ones(), 1e3, 10.0, 0.5);
+  physics::PrimaryState primary = nudged(model, settled(model)).primary();
+  primary.momentum.x() += 1e-7;
+  primary.angular_momentum.y() += 1e-7 * model.constants.inertia.y();
+  const BodyState start(primary, model.constants);
+  expect_predicted_limits(model, start);
+  const std::vector<StepWarning> warnings = check_step(model, start, Integrator::rk4, 0.01, 1.0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].message.find("twist decay at k = 294.3 /s"), std::string::npos)
+      << warnings[0].message;
+  EXPECT_NE(warnings[0].message.find("jitter"), std::string::npos) << warnings[0].message;
+}
+
+// Beyond the friction's limit the slip overshoots every step, but the friction force is at most
+// μ F_n: the box sliding at 0.3 m/s and twisting at 0.2 rad/s under symplectic Euler does not come
+// to rest, yet stays slower than it started. Inside the limit it stops.
+TEST(CheckStep, BeyondTheFrictionLimitTheBoxJittersWithoutBlowingUp) {
+  const BodyModel model = penalty_box(Vec3::Ones(), 1e3, 10.0, 0.5);
+  const double limit = predicted_limit(Integrator::symplectic_euler, model, settled(model));
+  const auto fastest_late_spin = [&](double dt) {
+    BodyState state =
+        physics::make_state(model.constants, Vec3(0, rest_height(model, Quat::Identity()), 0),
+                            Vec3(0.3, 0, 0), Quat::Identity(), Vec3(0, 0.2, 0));
+    double fastest = 0.0;  // rad/s, over the second half of 20000 steps
+    for (int n = 0; n < 20000; ++n) {
+      state = physics::step(Integrator::symplectic_euler, model, state, n * dt, dt);
+      if (n >= 10000) fastest = std::max(fastest, state.angular_velocity().norm());
+    }
+    return fastest;
+  };
+  EXPECT_LT(fastest_late_spin(0.95 * limit), 1e-12);
+  const double jitter = fastest_late_spin(1.5 * limit);
+  std::printf(
+      "[ measured ] symplectic_euler at 1.5 × the friction limit: spins at up to %.3g rad/s\n",
+      jitter);
+  EXPECT_GT(jitter, 1e-3);
+  EXPECT_LT(jitter, 0.2);
 }
 
 }  // namespace
