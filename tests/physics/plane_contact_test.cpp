@@ -291,6 +291,58 @@ TEST_P(Tunnelling, CubeAt100MetresPerSecondBouncesOffAWall) {
 
 INSTANTIATE_TEST_SUITE_P(AtCoarseSteps, Tunnelling, ::testing::Values(1.0 / 60.0, 1.0 / 30.0));
 
+// No energy from nowhere: kinetic plus potential energy never rises above its start by more than
+// 1e-9 of it, in every kind of contact above (restitution <= 1), with rk4 for 10 s.
+struct EnergyCase {
+  const char* name;
+  DropSetup setup;
+};
+
+class NoEnergyFromNowhere : public ::testing::TestWithParam<EnergyCase> {};
+
+TEST_P(NoEnergyFromNowhere, EnergyNeverRisesAboveItsStart) {
+  sim::Simulation world = simulation(GetParam().setup);
+  const double start = energy(world);
+  double largest_gain = 0.0;
+  while (world.time() < 10.0 - 1e-12) {
+    world.step();
+    largest_gain = std::max(largest_gain, energy(world) - start);
+  }
+  std::printf("[ measured ] %s: largest energy gain %.3g J of %.3g J\n", GetParam().name,
+              largest_gain, start);
+  EXPECT_LE(largest_gain, 1e-9 * std::abs(start));
+}
+
+std::vector<EnergyCase> energy_cases() {
+  std::vector<EnergyCase> out;
+  DropSetup bounce;
+  bounce.position = Vec3(0.0, 1.5, 0.0);
+  bounce.body = {.restitution = 0.5, .friction = 0.0};
+  out.push_back({"bounce", bounce});
+  DropSetup slide;
+  slide.velocity = Vec3(5.0, 0.0, 5.0);
+  out.push_back({"diagonal_slide", slide});
+  out.push_back({"slope_sticks", on_slope(20.0, 0.5)});
+  out.push_back({"slope_slides", on_slope(20.0, 0.2)});
+  DropSetup tumble;
+  tumble.position = Vec3(0.0, 2.0, 0.0);
+  tumble.orientation = Quat(Eigen::AngleAxisd(0.7, Vec3(1.0, 0.3, 0.2).normalized()));
+  tumble.angular_velocity = Vec3(2.0, 1.0, -3.0);
+  tumble.body = {.restitution = 0.3, .friction = 0.5};
+  out.push_back({"tumbling_drop", tumble});
+  DropSetup walls = tumble;
+  walls.velocity = Vec3(6.0, 2.0, -4.0);
+  walls.body = {.restitution = 1.0, .friction = 0.3};
+  const Material wall{.restitution = 0.8, .friction = 0.4};
+  walls.planes = {Plane{.material = wall}, plane_through(Vec3(2, 0, 0), -Vec3::UnitX(), wall),
+                  plane_through(Vec3(0, 0, -2), Vec3::UnitZ(), wall)};
+  out.push_back({"thrown_into_a_corner", walls});
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Contact, NoEnergyFromNowhere, ::testing::ValuesIn(energy_cases()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
 // Every integrator composes with impulse contact: the tumbling drop comes to rest on a face, just
 // touching the floor, and stays there.
 class EveryIntegrator : public ::testing::TestWithParam<Integrator> {};
@@ -308,7 +360,8 @@ TEST_P(EveryIntegrator, TumblingDropComesToRestTouchingTheFloor) {
   while (world.time() < 10.0 - 1e-12) {
     world.step();
     deepest = std::max(
-        deepest, -closest_corner(world.current().front(), Vec3::Constant(0.5), s.planes[0]).separation);
+        deepest,
+        -closest_corner(world.current().front(), Vec3::Constant(0.5), s.planes[0]).separation);
   }
   const BodyState& rest = world.current().front();
   std::printf("[ measured ] %s: deepest %.3g m, at 10 s |v| %.3g m/s, |w| %.3g rad/s\n",
