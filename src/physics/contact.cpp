@@ -40,10 +40,17 @@ Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const
       candidates[count++] = {.feature = feature, .body_point = body_point, .separation = s};
   }
   // Deepest first; equal depths (a face flat on the plane) stay in corner order, so the
-  // manifold is the same on every machine.
-  std::stable_sort(
-      candidates.begin(), candidates.begin() + count,
-      [](const ContactPoint& a, const ContactPoint& b) { return a.separation < b.separation; });
+  // manifold is the same on every machine. Insertion sort: stable, and for at most eight points
+  // cheaper than std::stable_sort, which takes a buffer from the heap.
+  for (int i = 1; i < count; ++i) {
+    const ContactPoint moving = candidates[static_cast<std::size_t>(i)];
+    int j = i;
+    for (; j > 0 && moving.separation < candidates[static_cast<std::size_t>(j - 1)].separation;
+         --j) {
+      candidates[static_cast<std::size_t>(j)] = candidates[static_cast<std::size_t>(j - 1)];
+    }
+    candidates[static_cast<std::size_t>(j)] = moving;
+  }
   Manifold out;
   out.count = std::min(count, kMaxManifoldPoints);
   std::copy(candidates.begin(), candidates.begin() + out.count, out.points.begin());
