@@ -28,32 +28,33 @@ Closest closest_corner(const BodyState& state, const Vec3& half_size, const Plan
 
 Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const Plane& plane,
                             double margin) {
-  std::array<ContactPoint, 8> candidates;
-  int count = 0;
   // n·(x + R c) - offset = n·x - offset + (Rᵀ n)·c: one rotation for all eight corners.
   const Vec3 body_normal = state.orientation().conjugate() * plane.normal;
   const double centre = separation(plane, state.position());
+  int features[8];
+  double separations[8];
+  int count = 0;
   for (int feature = 0; feature < 8; ++feature) {
-    const Vec3 body_point = corner(half_size, feature);
-    const double s = centre + body_normal.dot(body_point);
-    if (s < margin)
-      candidates[count++] = {.feature = feature, .body_point = body_point, .separation = s};
-  }
-  // Deepest first; equal depths (a face flat on the plane) stay in corner order, so the
-  // manifold is the same on every machine. Insertion sort: stable, and for at most eight points
-  // cheaper than std::stable_sort, which takes a buffer from the heap.
-  for (int i = 1; i < count; ++i) {
-    const ContactPoint moving = candidates[static_cast<std::size_t>(i)];
-    int j = i;
-    for (; j > 0 && moving.separation < candidates[static_cast<std::size_t>(j - 1)].separation;
-         --j) {
-      candidates[static_cast<std::size_t>(j)] = candidates[static_cast<std::size_t>(j - 1)];
+    const double s = centre + body_normal.dot(corner(half_size, feature));
+    if (!(s < margin)) continue;
+    // Deepest first (insertion, so stable): equal depths, a face flat on the plane, stay in
+    // corner order, and the manifold is the same on every machine.
+    int at = count++;
+    for (; at > 0 && s < separations[at - 1]; --at) {
+      features[at] = features[at - 1];
+      separations[at] = separations[at - 1];
     }
-    candidates[static_cast<std::size_t>(j)] = moving;
+    features[at] = feature;
+    separations[at] = s;
   }
   Manifold out;
   out.count = std::min(count, kMaxManifoldPoints);
-  std::copy(candidates.begin(), candidates.begin() + out.count, out.points.begin());
+  for (int i = 0; i < out.count; ++i) {
+    ContactPoint& point = out.points[static_cast<std::size_t>(i)];
+    point.feature = features[i];
+    point.body_point = corner(half_size, features[i]);
+    point.separation = separations[i];
+  }
   return out;
 }
 

@@ -18,15 +18,13 @@ void tangent_basis(const Vec3& n, Vec3 (&out)[2]) {
   out[1] = n.cross(out[0]);
 }
 
-// 1 / (m⁻¹ + d·(I⁻¹(r×d) × r)): the mass the body shows to an impulse along d at arm r.
-double effective_mass(const SolverBody& body, const Vec3& arm, const Vec3& direction) {
-  const Vec3 moment = arm.cross(direction);
-  const double inverse = body.inverse_mass + moment.dot(body.inverse_inertia * moment);
-  return inverse > 0.0 ? 1.0 / inverse : 0.0;
-}
-
-Vec3 point_velocity(const SolverBody& body, const Vec3& arm) {
-  return body.velocity + body.angular_velocity.cross(arm);
+// The direction `along` (unit, world) of a point at `arm` (m, world, from the centre) of the body.
+ImpulseDirection direction(const SolverBody& body, const Vec3& arm, const Vec3& along) {
+  ImpulseDirection out{.linear = along, .moment = arm.cross(along)};
+  out.turn = body.inverse_inertia * out.moment;
+  const double inverse = body.inverse_mass + out.moment.dot(out.turn);
+  out.mass = inverse > 0.0 ? 1.0 / inverse : 0.0;
+  return out;
 }
 
 // One pass of friction then normal impulses over every point (normal last: it matters most).
@@ -35,29 +33,25 @@ double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint>
   double largest_change = 0.0;
   for (ContactConstraint& c : points) {
     SolverBody& body = bodies[c.body];
-    const Vec3 velocity = point_velocity(body, c.arm);
     // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
     double wanted[2];
     for (int k = 0; k < 2; ++k) {
-      wanted[k] = c.tangent_impulse[k] - c.tangent_mass[k] * velocity.dot(c.tangent[k]);
+      wanted[k] = c.tangent_impulse[k] - c.tangent[k].mass * c.tangent[k].speed(body);
     }
     const double limit = c.friction * c.normal_impulse;
-    const double size = std::hypot(wanted[0], wanted[1]);
-    const double scale = size > limit ? limit / size : 1.0;
-    Vec3 impulse = Vec3::Zero();
+    const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
+    const double scale = size_squared > limit * limit ? limit / std::sqrt(size_squared) : 1.0;
     for (int k = 0; k < 2; ++k) {
-      const double accumulated = wanted[k] * scale;
-      impulse += (accumulated - c.tangent_impulse[k]) * c.tangent[k];
-      largest_change = std::max(largest_change, std::abs(accumulated - c.tangent_impulse[k]));
-      c.tangent_impulse[k] = accumulated;
+      const double change = wanted[k] * scale - c.tangent_impulse[k];
+      c.tangent[k].push(body, change);
+      c.tangent_impulse[k] += change;
+      largest_change = std::max(largest_change, std::abs(change));
     }
-    body.apply(impulse, c.arm);
-
-    const double normal_speed = point_velocity(body, c.arm).dot(c.normal);
-    const double accumulated = std::max(0.0, c.normal_impulse - c.normal_mass * normal_speed);
+    const double accumulated =
+        std::max(0.0, c.normal_impulse - c.normal.mass * c.normal.speed(body));
     const double change = accumulated - c.normal_impulse;
     c.normal_impulse = accumulated;
-    body.apply(change * c.normal, c.arm);
+    c.normal.push(body, change);
     largest_change = std::max(largest_change, std::abs(change));
   }
   return largest_change;
@@ -73,11 +67,11 @@ double bounce_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> po
     if (bounce_impulse[i] == 0.0) continue;  // marks a point that does not bounce
     SolverBody& body = bodies[c.body];
     const double target = -c.restitution * c.approach_speed;
-    const double normal_speed = point_velocity(body, c.arm).dot(c.normal);
-    const double total = std::max(0.0, accumulated[i] - c.normal_mass * (normal_speed - target));
+    const double total =
+        std::max(0.0, accumulated[i] - c.normal.mass * (c.normal.speed(body) - target));
     const double change = total - accumulated[i];
     accumulated[i] = total;
-    body.apply(change * c.normal, c.arm);
+    c.normal.push(body, change);
     largest_change = std::max(largest_change, std::abs(change));
   }
   return largest_change;
@@ -118,14 +112,6 @@ SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constan
       .inertia = rotation * constants.inertia.asDiagonal() * rotation.transpose()};
 }
 
-void SolverBody::apply(const Vec3& impulse, const Vec3& arm) {
-  const Vec3 moment = arm.cross(impulse);
-  velocity += inverse_mass * impulse;
-  angular_velocity += inverse_inertia * moment;
-  linear_impulse += impulse;
-  angular_impulse += moment;
-}
-
 double SolverBody::kinetic_energy() const {
   const double mass = inverse_mass > 0.0 ? 1.0 / inverse_mass : 0.0;
   return 0.5 * mass * velocity.squaredNorm() +
@@ -136,14 +122,13 @@ ContactConstraint make_constraint(std::size_t body_index, const SolverBody& body
                                   const Vec3& normal, const Material& material) {
   ContactConstraint c;
   c.body = body_index;
-  c.arm = arm;
-  c.normal = normal;
-  tangent_basis(normal, c.tangent);
-  c.normal_mass = effective_mass(body, arm, normal);
-  for (int k = 0; k < 2; ++k) c.tangent_mass[k] = effective_mass(body, arm, c.tangent[k]);
+  c.normal = direction(body, arm, normal);
+  Vec3 tangents[2];
+  tangent_basis(normal, tangents);
+  for (int k = 0; k < 2; ++k) c.tangent[k] = direction(body, arm, tangents[k]);
   c.friction = material.friction;
   c.restitution = material.restitution;
-  c.approach_speed = point_velocity(body, arm).dot(normal);
+  c.approach_speed = c.normal.speed(body);
   return c;
 }
 
@@ -162,11 +147,11 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
     for (ContactConstraint& c : points) {
       if (!c.source) continue;
       c.normal_impulse = c.source->normal_impulse;
-      c.tangent_impulse[0] = c.source->tangent_impulse.dot(c.tangent[0]);
-      c.tangent_impulse[1] = c.source->tangent_impulse.dot(c.tangent[1]);
-      bodies[c.body].apply(c.normal_impulse * c.normal + c.tangent_impulse[0] * c.tangent[0] +
-                               c.tangent_impulse[1] * c.tangent[1],
-                           c.arm);
+      c.normal.push(bodies[c.body], c.normal_impulse);
+      for (int k = 0; k < 2; ++k) {
+        c.tangent_impulse[k] = c.source->tangent_impulse.dot(c.tangent[k].linear);
+        c.tangent[k].push(bodies[c.body], c.tangent_impulse[k]);
+      }
     }
   }
   for (int pass = 0; pass < settings.iterations; ++pass) {
@@ -177,7 +162,7 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
     if (!c.source) continue;
     c.source->normal_impulse = c.normal_impulse;
     c.source->tangent_impulse =
-        c.tangent_impulse[0] * c.tangent[0] + c.tangent_impulse[1] * c.tangent[1];
+        c.tangent_impulse[0] * c.tangent[0].linear + c.tangent_impulse[1] * c.tangent[1].linear;
   }
 
   // The bounce, from the velocities the inelastic solve left (Poisson-like: compression first,

@@ -25,18 +25,34 @@ struct SolverBody {
 
   // The body as the state has it: velocities and mass at that pose.
   static SolverBody from(const BodyState& state, const BodyConstants& constants);
-  void apply(const Vec3& impulse /* N s, world */, const Vec3& arm /* m, world, from centre */);
   double kinetic_energy() const;  // of the velocities, with the inertia above (J)
+};
+
+// A direction d in which a contact point pushes its body, with what the solve reads and writes
+// for it precomputed (the Jacobian row and its image through the inverse mass): the point's speed
+// along d is v·d + ω·(r × d), and an impulse λ along d changes v by λ d/m and ω by λ I⁻¹(r × d).
+struct ImpulseDirection {
+  Vec3 linear = Vec3::Zero();  // d: unit, world frame
+  Vec3 moment = Vec3::Zero();  // r × d (m)
+  Vec3 turn = Vec3::Zero();    // I⁻¹ (r × d) (1/(kg m))
+  double mass = 0.0;  // 1 / (m⁻¹ + (r × d)·I⁻¹(r × d)): the mass the body shows (kg)
+
+  double speed(const SolverBody& body) const {  // m/s
+    return body.velocity.dot(linear) + body.angular_velocity.dot(moment);
+  }
+  void push(SolverBody& body, double impulse /* N s */) const {
+    body.velocity += (impulse * body.inverse_mass) * linear;
+    body.angular_velocity += impulse * turn;
+    body.linear_impulse += impulse * linear;
+    body.angular_impulse += impulse * moment;
+  }
 };
 
 // One contact point between body `body` and a static plane.
 struct ContactConstraint {
   std::size_t body = 0;         // index into the SolverBody list
-  Vec3 arm = Vec3::Zero();      // contact point - centre of mass, world frame (m)
-  Vec3 normal = Vec3::UnitY();  // unit, world, pointing from the plane to the body
-  Vec3 tangent[2];              // unit, world, spanning the plane
-  double normal_mass = 0.0;     // 1 / (m⁻¹ + n·(I⁻¹(r×n) × r)) (kg)
-  double tangent_mass[2] = {0.0, 0.0};
+  ImpulseDirection normal;      // along the plane's normal, from the plane to the body
+  ImpulseDirection tangent[2];  // two unit directions spanning the plane
   double friction = 0.0;        // μ of the pair
   double restitution = 0.0;     // e of the pair
   double approach_speed = 0.0;  // normal velocity before the solve (m/s; negative approaching)
@@ -46,7 +62,8 @@ struct ContactConstraint {
   ContactPoint* source = nullptr;
 };
 
-// A point whose arm and normal are given, with its effective masses computed from the body.
+// A point at `arm` (m, world, from the body's centre) pushed along `normal` (unit, world), with
+// its directions computed from the body.
 ContactConstraint make_constraint(std::size_t body_index, const SolverBody& body, const Vec3& arm,
                                   const Vec3& normal, const Material& material);
 
