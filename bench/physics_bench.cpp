@@ -123,11 +123,7 @@ void StepBoxRestingOnPenaltyPlane(benchmark::State& state) {
   BodyModel model = box_under_gravity(state.range(1));
   const Integrator integrator = integrator_at(state.range(0));
   const ContactSettings contact{.method = ContactMethod::penalty};
-  model.forces.push_back(PenaltyContact{.planes = {Plane{}},
-                                        .half_size = model.half_size,
-                                        .material = model.material,
-                                        .stiffness = contact.stiffness,
-                                        .damping = contact.damping});
+  model = with_penalty_contact(model, {Plane{}}, contact.stiffness, contact.damping);
   const double sink = model.constants.mass * 9.81 / (4.0 * contact.stiffness);  // m
   const BodyState start = box_at(model, 0.5 - sink);
   for (auto _ : state) benchmark::DoNotOptimize(step(integrator, model, start, 0.0, kDt));

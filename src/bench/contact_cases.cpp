@@ -201,13 +201,9 @@ sim::Simulation contact_simulation(const ContactCase& c, physics::ContactMethod 
   if (method == physics::ContactMethod::impulse) {
     return sim::Simulation({c.model}, {c.initial}, integrator, dt, c.planes);
   }
-  physics::BodyModel model = c.model;
-  model.forces.push_back(physics::PenaltyContact{.planes = c.planes,
-                                                 .half_size = model.half_size,
-                                                 .material = model.material,
-                                                 .stiffness = c.penalty.stiffness,
-                                                 .damping = c.penalty.damping});
-  return sim::Simulation({model}, {c.initial}, integrator, dt, {}, c.penalty);
+  return sim::Simulation(
+      {physics::with_penalty_contact(c.model, c.planes, c.penalty.stiffness, c.penalty.damping)},
+      {c.initial}, integrator, dt, {}, c.penalty);
 }
 
 }  // namespace tumble::bench

@@ -20,6 +20,11 @@ struct BodyModel {
   Material material = {};
 };
 
+// The model with penalty contact against `planes` added to its laws: a PenaltyContact of the
+// model's box and material, at `stiffness` (N/m) and `damping` (N s/m) per corner.
+BodyModel with_penalty_contact(BodyModel model, std::vector<Plane> planes, double stiffness,
+                               double damping);
+
 enum class Integrator {
   euler,             // explicit Euler: every derivative from the start of the step (order 1)
   symplectic_euler,  // semi-implicit Euler: momenta first, then positions from new velocities

@@ -5,6 +5,7 @@
 
 #include "physics/contact.hpp"
 #include "physics/forces.hpp"
+#include "physics/integrators.hpp"
 
 namespace tumble::physics {
 
@@ -33,6 +34,16 @@ Wrench penalty_contact_wrench(const PenaltyContact& law, const BodyState& state)
     }
   }
   return total;
+}
+
+BodyModel with_penalty_contact(BodyModel model, std::vector<Plane> planes, double stiffness,
+                               double damping) {
+  model.forces.push_back(PenaltyContact{.planes = std::move(planes),
+                                        .half_size = model.half_size,
+                                        .material = model.material,
+                                        .stiffness = stiffness,
+                                        .damping = damping});
+  return model;
 }
 
 }  // namespace tumble::physics

@@ -34,13 +34,10 @@ physics::BodyModel body_model(const Scene& scene, const BodySpec& body) {
                            .material = body.material};
   const physics::ContactSettings& contact = scene.physics.contact;
   if (!scene.planes.empty() && contact.method == physics::ContactMethod::penalty) {
-    physics::PenaltyContact law{.planes = {},
-                                .half_size = model.half_size,
-                                .material = body.material,
-                                .stiffness = contact.stiffness,
-                                .damping = contact.damping};
-    for (const PlaneSpec& spec : scene.planes) law.planes.push_back(plane(spec));
-    model.forces.push_back(std::move(law));
+    std::vector<physics::Plane> planes;
+    for (const PlaneSpec& spec : scene.planes) planes.push_back(plane(spec));
+    model = physics::with_penalty_contact(std::move(model), std::move(planes), contact.stiffness,
+                                          contact.damping);
   }
   return model;
 }

@@ -87,12 +87,8 @@ TEST(ContactCases, ImpulseContactWithRk4MeetsTheClosedForms) {
 // errors are NaN.
 TEST(ContactCases, PenaltyRunsTheAdviceCallsStableDoNotBlowUp) {
   const ContactCase& c = *find_contact_case("bounce");
-  physics::BodyModel model = c.model;
-  model.forces.push_back(physics::PenaltyContact{.planes = c.planes,
-                                                 .half_size = model.half_size,
-                                                 .material = model.material,
-                                                 .stiffness = c.penalty.stiffness,
-                                                 .damping = c.penalty.damping});
+  const physics::BodyModel model =
+      physics::with_penalty_contact(c.model, c.planes, c.penalty.stiffness, c.penalty.damping);
   int stable = 0;
   for (const Integrator integrator : physics::kAllIntegrators) {
     for (const double dt : kAccuracySteps) {

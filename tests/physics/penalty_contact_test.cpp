@@ -61,11 +61,7 @@ double first_apex(sim::Simulation& world, double until) {
 // the first step with every corner out and rising.
 double penalty_apex(double stiffness, double damping) {
   BodyModel model = dropped_cube();
-  model.forces.push_back(PenaltyContact{.planes = {Plane{.material = model.material}},
-                                        .half_size = model.half_size,
-                                        .material = model.material,
-                                        .stiffness = stiffness,
-                                        .damping = damping});
+  model = with_penalty_contact(model, {Plane{.material = model.material}}, stiffness, damping);
   const double dt = 0.02 * std::sqrt(model.constants.mass / (4.0 * stiffness));
   const double landing_speed = std::sqrt(2.0 * kG * kDropHeight);  // m/s
   sim::Simulation world(

@@ -260,12 +260,8 @@ BodyModel penalty_box(const Vec3& size, double stiffness, double damping, double
                   .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
                   .half_size = 0.5 * size,
                   .material = material};
-  model.forces.push_back(physics::PenaltyContact{.planes = {physics::Plane{.material = material}},
-                                                 .half_size = model.half_size,
-                                                 .material = material,
-                                                 .stiffness = stiffness,
-                                                 .damping = damping});
-  return model;
+  return physics::with_penalty_contact(model, {physics::Plane{.material = material}}, stiffness,
+                                       damping);
 }
 
 // Each corner's share of the weight sinks it by m g / (4k) at rest (m).
