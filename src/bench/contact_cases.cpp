@@ -41,7 +41,7 @@ CubeOnFloor cube_on_floor(const physics::Material& material) {
 // The height of the lowest corner above the floor (m): negative inside it.
 double lowest_corner(const BodyState& state, const physics::BodyModel& model,
                      const physics::Plane& floor) {
-  return physics::closest_corner(state, model.half_size, floor).separation;
+  return physics::closest_corner_separation(state, model.half_size, floor);
 }
 
 // The bottom face's height at the first apex after the first bounce (m): the vertex of the

@@ -14,7 +14,8 @@ const char* contact_method_name(ContactMethod method) {
   return "unknown";
 }
 
-Closest closest_corner(const BodyState& state, const Vec3& half_size, const Plane& plane) {
+double closest_corner_separation(const BodyState& state, const Vec3& half_size,
+                                 const Plane& plane) {
   // The corner furthest against the normal has the sign opposite to the normal's body-frame
   // components: one rotation instead of eight corner positions.
   const Vec3 body_normal = state.orientation().conjugate() * plane.normal;
@@ -23,7 +24,7 @@ Closest closest_corner(const BodyState& state, const Vec3& half_size, const Plan
     if (body_normal[axis] < 0.0) feature |= 1 << axis;
   }
   const Vec3 point = body_point_to_world(state, corner(half_size, feature));
-  return {.separation = separation(plane, point), .feature = feature};
+  return separation(plane, point);
 }
 
 Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const Plane& plane,

@@ -67,12 +67,8 @@ struct Manifold {
 Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const Plane& plane,
                             double margin);
 
-// The lowest separation of any corner of the box from the plane (m), and which corner.
-struct Closest {
-  double separation = 0.0;  // m
-  int feature = 0;
-};
-Closest closest_corner(const BodyState& state, const Vec3& half_size, const Plane& plane);
+// The lowest separation of any corner of the box from the plane (m; negative inside).
+double closest_corner_separation(const BodyState& state, const Vec3& half_size, const Plane& plane);
 
 // The body-frame offset of corner `feature` (bit i: sign along body axis i).
 inline Vec3 corner(const Vec3& half_size, int feature) {

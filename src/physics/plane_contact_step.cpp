@@ -27,7 +27,7 @@ bool touches_any(const BodyState& state, const Vec3& half_size, const std::vecto
   const double radius = half_size.norm();
   for (const Plane& plane : planes) {
     if (separation(plane, state.position()) > radius + kTouchingDistance) continue;
-    if (closest_corner(state, half_size, plane).separation < kTouchingDistance) return true;
+    if (closest_corner_separation(state, half_size, plane) < kTouchingDistance) return true;
   }
   return false;
 }

@@ -65,7 +65,7 @@ void refuse_bodies_inside(const TableReader& root, const Scene& scene) {
     for (std::size_t j = 0; j < scene.planes.size(); ++j) {
       const PlaneSpec& spec = scene.planes[j];
       const double depth =
-          -physics::closest_corner(start, 0.5 * body.size, scene::plane(spec)).separation;
+          -physics::closest_corner_separation(start, 0.5 * body.size, scene::plane(spec));
       if (!(depth > kStartOverlapAllowed)) continue;
       const std::string what = "body " + in_quotes(body.name) + " starts " + format_number(depth) +
                                " m inside plane " + in_quotes(spec.name);

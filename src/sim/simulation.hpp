@@ -62,7 +62,6 @@ class Simulation {
   const std::vector<physics::BodyModel>& models() const { return models_; }
   const std::vector<physics::BodyState>& current() const { return current_; }
   const std::vector<physics::BodyState>& previous() const { return previous_; }
-  const std::vector<physics::Plane>& planes() const { return planes_; }
 
  private:
   std::vector<physics::BodyModel> models_;

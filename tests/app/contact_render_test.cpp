@@ -30,9 +30,8 @@ TEST_F(DroppedCube, RestsOnTheFloorWithinAPixelAt720p) {
   tumble::sim::Simulation simulation = tumble::scene::build_simulation(scene);
   const auto states = simulation.states_at(scene.duration);
   const tumble::physics::Plane floor = tumble::scene::plane(scene.planes.front());
-  const double gap =
-      tumble::physics::closest_corner(states.front(), 0.5 * scene.bodies.front().size, floor)
-          .separation;  // m: > 0 floating, < 0 sunk
+  const double gap = tumble::physics::closest_corner_separation(
+      states.front(), 0.5 * scene.bodies.front().size, floor);  // m: > 0 floating, < 0 sunk
   // One pixel of a 720-line image at the cube's distance from the scene's camera (m).
   const double distance = (*scene.camera.position - states.front().position()).norm();
   const double pixel =

@@ -219,7 +219,7 @@ TEST(PlaneContact, TumblingCubeComesToRestOnAFaceAndStaysStill) {
     const Vec3 face = rest.orientation() * Vec3::Unit(axis);
     face_angle = std::min(face_angle, std::acos(std::min(1.0, std::abs(face.y()))));
   }
-  const double penetration = -closest_corner(rest, Vec3::Constant(0.5), s.planes[0]).separation;
+  const double penetration = -closest_corner_separation(rest, Vec3::Constant(0.5), s.planes[0]);
   std::printf(
       "[ measured ] at 10 s: |v| %.3g m/s, |w| %.3g rad/s, face %.3g rad, penetration %.3g m\n",
       rest.velocity().norm(), rest.angular_velocity().norm(), face_angle, penetration);
@@ -359,9 +359,8 @@ TEST_P(EveryIntegrator, TumblingDropComesToRestTouchingTheFloor) {
   double deepest = 0.0;
   while (world.time() < 10.0 - 1e-12) {
     world.step();
-    deepest = std::max(
-        deepest,
-        -closest_corner(world.current().front(), Vec3::Constant(0.5), s.planes[0]).separation);
+    deepest = std::max(deepest, -closest_corner_separation(world.current().front(),
+                                                           Vec3::Constant(0.5), s.planes[0]));
   }
   const BodyState& rest = world.current().front();
   std::printf("[ measured ] %s: deepest %.3g m, at 10 s |v| %.3g m/s, |w| %.3g rad/s\n",
