@@ -69,9 +69,10 @@ void BlowUpCheck(benchmark::State& state) {
 }
 
 // Contact with a plane (range(0) = integrator), one step from the same state each time: a box
-// resting on a floor under gravity through the world step (impulse contact), or with penalty
-// contact, against the same box's free step (StepBoxWithGravity); and the box 10 m above the
-// floor, where the world step only finds that nothing touches.
+// resting on a floor under gravity through the world step (impulse contact), the same box sliding
+// at 3 m/s, or resting with penalty contact, against the same box's free step
+// (StepBoxWithGravity); and the box 10 m above the floor, where the world step only finds that
+// nothing touches.
 // range(1): 0 for a unit cube, 1 for a 0.3 × 1 × 2 m box on its long face.
 BodyModel box_under_gravity(std::int64_t shape) {
   const Vec3 size = shape == 0 ? Vec3::Ones() : Vec3(0.3, 1.0, 2.0);
@@ -93,7 +94,9 @@ void StepBoxWithGravity(benchmark::State& state) {
   state.SetLabel(std::string(integrator_name(integrator)));
 }
 
-void step_with_floor_repeatedly(benchmark::State& state, double height /* m */) {
+// `speed` (m/s) along x once settled: a sliding box, whose friction works at its limit.
+void step_with_floor_repeatedly(benchmark::State& state, double height /* m */,
+                                double speed = 0.0) {
   const BodyModel model = box_under_gravity(state.range(1));
   const Integrator integrator = integrator_at(state.range(0));
   const std::vector<Plane> floor = {Plane{}};
@@ -104,6 +107,11 @@ void step_with_floor_repeatedly(benchmark::State& state, double height /* m */) 
     start = step_with_planes(integrator, model, start, 0.0, kDt, floor, {}, memory);
   }
   if (height > 1.0) start = box_at(model, height);
+  if (speed != 0.0) {
+    PrimaryState moving = start.primary();
+    moving.momentum.x() = model.constants.mass * speed;
+    start = BodyState(moving, model.constants);
+  }
   for (auto _ : state) {
     benchmark::DoNotOptimize(
         step_with_planes(integrator, model, start, 0.0, kDt, floor, {}, memory));
@@ -129,6 +137,10 @@ void StepBoxRestingOnPenaltyPlane(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(step(integrator, model, start, 0.0, kDt));
   state.SetLabel(std::string(integrator_name(integrator)));
 }
+void StepBoxSlidingOnPlane(benchmark::State& state) {
+  step_with_floor_repeatedly(state, 0.5, 3.0);
+}
+
 void StepBoxAbovePlane(benchmark::State& state) {
   step_with_floor_repeatedly(state, 10.0);
 }
@@ -142,6 +154,9 @@ BENCHMARK(StepBoxWithGravity)
     ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
     ->ArgNames({"integrator", "shape"});
 BENCHMARK(StepBoxRestingOnPlane)
+    ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
+    ->ArgNames({"integrator", "shape"});
+BENCHMARK(StepBoxSlidingOnPlane)
     ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
     ->ArgNames({"integrator", "shape"});
 BENCHMARK(StepBoxRestingOnPenaltyPlane)

@@ -27,26 +27,38 @@ double closest_corner_separation(const BodyState& state, const Vec3& half_size,
   return separation(plane, point);
 }
 
-Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const Plane& plane,
+CornerSeparations corner_separations(const Mat3& rotation, const Vec3& position,
+                                     const Vec3& half_size, const Plane& plane) {
+  // n·(x + R c) - offset = n·x - offset + (Rᵀ n)·c: one rotation of the normal for all eight,
+  // and each corner's term is a sum of ± (Rᵀ n)_i h_i.
+  const Vec3 reach = (rotation.transpose() * plane.normal).cwiseProduct(half_size);
+  const double centre = separation(plane, position);
+  CornerSeparations out;
+  for (int feature = 0; feature < 8; ++feature) {
+    out[static_cast<std::size_t>(feature)] = centre + (((feature & 1) ? reach.x() : -reach.x()) +
+                                                       ((feature & 2) ? reach.y() : -reach.y()) +
+                                                       ((feature & 4) ? reach.z() : -reach.z()));
+  }
+  return out;
+}
+
+Manifold box_plane_manifold(const CornerSeparations& separations, const Vec3& half_size,
                             double margin) {
-  // n·(x + R c) - offset = n·x - offset + (Rᵀ n)·c: one rotation for all eight corners.
-  const Vec3 body_normal = state.orientation().conjugate() * plane.normal;
-  const double centre = separation(plane, state.position());
   int features[8];
-  double separations[8];
+  double depths[8];
   int count = 0;
   for (int feature = 0; feature < 8; ++feature) {
-    const double s = centre + body_normal.dot(corner(half_size, feature));
+    const double s = separations[static_cast<std::size_t>(feature)];
     if (!(s < margin)) continue;
     // Deepest first (insertion, so stable): equal depths, a face flat on the plane, stay in
     // corner order, and the manifold is the same on every machine.
     int at = count++;
-    for (; at > 0 && s < separations[at - 1]; --at) {
+    for (; at > 0 && s < depths[at - 1]; --at) {
       features[at] = features[at - 1];
-      separations[at] = separations[at - 1];
+      depths[at] = depths[at - 1];
     }
     features[at] = feature;
-    separations[at] = s;
+    depths[at] = s;
   }
   Manifold out;
   out.count = std::min(count, kMaxManifoldPoints);
@@ -54,7 +66,7 @@ Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const
     ContactPoint& point = out.points[static_cast<std::size_t>(i)];
     point.feature = features[i];
     point.body_point = corner(half_size, features[i]);
-    point.separation = separations[i];
+    point.separation = depths[i];
   }
   return out;
 }

@@ -43,14 +43,18 @@ inline constexpr ContactMethod kAllContactMethods[] = {ContactMethod::impulse,
 // The name of a method in scene files ("impulse", "penalty").
 const char* contact_method_name(ContactMethod method);
 
+// What the last solve of a contact point accumulated, kept for warm starting the next step.
+struct Impulses {
+  double normal = 0.0;          // N s, >= 0
+  Vec3 tangent = Vec3::Zero();  // N s, world frame, normal to the contact normal
+};
+
 // A corner of a box touching (or about to touch) a plane.
 struct ContactPoint {
   int feature = 0;                 // the corner: bit i set means +half_size on body axis i
   Vec3 body_point = Vec3::Zero();  // the corner relative to the centre, body frame (m)
   double separation = 0.0;         // along the plane normal; negative when inside (m)
-  // Accumulated impulses of the last solve, kept for warm starting the next step.
-  double normal_impulse = 0.0;          // N s
-  Vec3 tangent_impulse = Vec3::Zero();  // N s, world frame, in the plane
+  Impulses impulses;
 };
 
 // At most four points: the four lowest corners are enough to hold a box still on a face.
@@ -62,9 +66,15 @@ struct Manifold {
   std::array<ContactPoint, kMaxManifoldPoints> points;
 };
 
-// The box's corners whose separation from the plane is below `margin` (m), the deepest first,
-// at most four. `half_size` is half the edge lengths along the body axes (m).
-Manifold box_plane_manifold(const BodyState& state, const Vec3& half_size, const Plane& plane,
+// The separation from a plane (m, negative inside) of each corner of a box, indexed by corner
+// (`corner` below): `rotation` body to world, `position` the centre (m, world), `half_size` half
+// the edge lengths along the body axes (m).
+using CornerSeparations = std::array<double, 8>;
+CornerSeparations corner_separations(const Mat3& rotation, const Vec3& position,
+                                     const Vec3& half_size, const Plane& plane);
+
+// The corners whose separation is below `margin` (m), the deepest first, at most four.
+Manifold box_plane_manifold(const CornerSeparations& separations, const Vec3& half_size,
                             double margin);
 
 // The lowest separation of any corner of the box from the plane (m; negative inside).

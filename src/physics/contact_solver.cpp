@@ -7,24 +7,70 @@
 namespace tumble::physics {
 namespace {
 
-// Two unit vectors spanning the plane normal to n, from the world axis least along n (so the
-// same normal always gives the same basis).
-void tangent_basis(const Vec3& n, Vec3 (&out)[2]) {
-  int least = 0;
-  for (int axis = 1; axis < 3; ++axis) {
-    if (std::abs(n[axis]) < std::abs(n[least])) least = axis;
-  }
-  out[0] = n.cross(Vec3::Unit(least)).normalized();
-  out[1] = n.cross(out[0]);
+// Relative speed along a direction: of a's point minus b's (m/s).
+[[gnu::always_inline]] inline double speed(const ImpulseDirection& d, const SolverBody& a,
+                                           const SolverBody* b) {
+  double out = a.velocity.dot(d.linear) + a.angular_velocity.dot(d.moment_a);
+  if (b) out -= b->velocity.dot(d.linear) + b->angular_velocity.dot(d.moment_b);
+  return out;
 }
 
-// The direction `along` (unit, world) of a point at `arm` (m, world, from the centre) of the body.
-ImpulseDirection direction(const SolverBody& body, const Vec3& arm, const Vec3& along) {
-  ImpulseDirection out{.linear = along, .moment = arm.cross(along)};
-  out.turn = body.inverse_inertia * out.moment;
-  const double inverse = body.inverse_mass + out.moment.dot(out.turn);
-  out.mass = inverse > 0.0 ? 1.0 / inverse : 0.0;
-  return out;
+// An impulse (N s) along the direction on a, and its opposite on b.
+[[gnu::always_inline]] inline void push(const ImpulseDirection& d, SolverBody& a, SolverBody* b,
+                                        double impulse) {
+  const Vec3 linear = impulse * d.linear;
+  a.velocity += a.inverse_mass * linear;
+  a.angular_velocity += impulse * d.turn_a;
+  a.linear_impulse += linear;
+  a.angular_impulse += impulse * d.moment_a;
+  if (!b) return;
+  b->velocity -= b->inverse_mass * linear;
+  b->angular_velocity -= impulse * d.turn_b;
+  b->linear_impulse -= linear;
+  b->angular_impulse -= impulse * d.moment_b;
+}
+
+// The direction `along` (unit, world) at a point `arm_a` (m, world) from a's centre, and at
+// `arm_b` from b's when there is a b.
+// (Computed in locals and stored once: reading back a half-written member stalls on the store.)
+ImpulseDirection direction(const Vec3& along, const SolverBody& a, const Vec3& arm_a,
+                           const SolverBody* b, const Vec3& arm_b) {
+  const Vec3 moment_a = arm_a.cross(along);
+  const Vec3 turn_a = a.inverse_inertia * moment_a;
+  double inverse = a.inverse_mass + moment_a.dot(turn_a);
+  Vec3 moment_b = Vec3::Zero(), turn_b = Vec3::Zero();
+  if (b) {
+    moment_b = arm_b.cross(along);
+    turn_b = b->inverse_inertia * moment_b;
+    inverse += b->inverse_mass + moment_b.dot(turn_b);
+  }
+  return {.linear = along,
+          .moment_a = moment_a,
+          .turn_a = turn_a,
+          .moment_b = moment_b,
+          .turn_b = turn_b,
+          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
+}
+
+ContactConstraint constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
+                             std::uint32_t b, const SolverBody* body_b, const Vec3& arm_b,
+                             const Vec3& normal, const Vec3 (&tangents)[2],
+                             const Material& material) {
+  ContactConstraint c{
+      .a = a,
+      .b = b,
+      .normal = direction(normal, body_a, arm_a, body_b, arm_b),
+      .tangent = {direction(tangents[0], body_a, arm_a, body_b, arm_b),
+                  direction(tangents[1], body_a, arm_a, body_b, arm_b)},
+      .friction = material.friction,
+      .restitution = material.restitution,
+  };
+  c.approach_speed = speed(c.normal, body_a, body_b);
+  return c;
+}
+
+SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
+  return c.b == kStatic ? nullptr : &bodies[c.b];
 }
 
 // One pass of friction then normal impulses over every point (normal last: it matters most).
@@ -32,26 +78,27 @@ ImpulseDirection direction(const SolverBody& body, const Vec3& arm, const Vec3& 
 double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points) {
   double largest_change = 0.0;
   for (ContactConstraint& c : points) {
-    SolverBody& body = bodies[c.body];
+    SolverBody& a = bodies[c.a];
+    SolverBody* b = second(bodies, c);
     // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
     double wanted[2];
     for (int k = 0; k < 2; ++k) {
-      wanted[k] = c.tangent_impulse[k] - c.tangent[k].mass * c.tangent[k].speed(body);
+      wanted[k] = c.tangent_impulse[k] - c.tangent[k].mass * speed(c.tangent[k], a, b);
     }
     const double limit = c.friction * c.normal_impulse;
     const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
     const double scale = size_squared > limit * limit ? limit / std::sqrt(size_squared) : 1.0;
     for (int k = 0; k < 2; ++k) {
       const double change = wanted[k] * scale - c.tangent_impulse[k];
-      c.tangent[k].push(body, change);
+      push(c.tangent[k], a, b, change);
       c.tangent_impulse[k] += change;
       largest_change = std::max(largest_change, std::abs(change));
     }
     const double accumulated =
-        std::max(0.0, c.normal_impulse - c.normal.mass * c.normal.speed(body));
+        std::max(0.0, c.normal_impulse - c.normal.mass * speed(c.normal, a, b));
     const double change = accumulated - c.normal_impulse;
     c.normal_impulse = accumulated;
-    c.normal.push(body, change);
+    push(c.normal, a, b, change);
     largest_change = std::max(largest_change, std::abs(change));
   }
   return largest_change;
@@ -65,13 +112,14 @@ double bounce_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> po
   for (std::size_t i = 0; i < points.size(); ++i) {
     const ContactConstraint& c = points[i];
     if (bounce_impulse[i] == 0.0) continue;  // marks a point that does not bounce
-    SolverBody& body = bodies[c.body];
+    SolverBody& a = bodies[c.a];
+    SolverBody* b = second(bodies, c);
     const double target = -c.restitution * c.approach_speed;
     const double total =
-        std::max(0.0, accumulated[i] - c.normal.mass * (c.normal.speed(body) - target));
+        std::max(0.0, accumulated[i] - c.normal.mass * (speed(c.normal, a, b) - target));
     const double change = total - accumulated[i];
     accumulated[i] = total;
-    c.normal.push(body, change);
+    push(c.normal, a, b, change);
     largest_change = std::max(largest_change, std::abs(change));
   }
   return largest_change;
@@ -83,33 +131,53 @@ double largest_normal_impulse(std::span<const ContactConstraint> points) {
   return largest;
 }
 
-// Kinetic energy of (v + s dv, ω + s dω) is a + b s + c s²: the largest s in [0, 1] at which it is
-// at most `bound`, given that it is at s = 0.
-double largest_step_within(const SolverBody& at_zero, const SolverBody& at_one, double bound) {
+// The kinetic energy of a body at (v + s dv, ω + s dω) as c₀ + c₁ s + c₂ s² (J), dv and dω
+// taking it from `at_zero` to `at_one`.
+struct EnergyInStep {
+  double c0 = 0.0, c1 = 0.0, c2 = 0.0;
+};
+EnergyInStep energy_in_step(const SolverBody& at_zero, const SolverBody& at_one) {
   const Vec3 dv = at_one.velocity - at_zero.velocity;
   const Vec3 dw = at_one.angular_velocity - at_zero.angular_velocity;
   const Mat3& inertia = at_zero.inertia;
   const double mass = at_zero.inverse_mass > 0.0 ? 1.0 / at_zero.inverse_mass : 0.0;
-  const double a = at_zero.kinetic_energy() - bound;  // <= 0
-  const double b = mass * at_zero.velocity.dot(dv) + at_zero.angular_velocity.dot(inertia * dw);
-  const double c = 0.5 * (mass * dv.squaredNorm() + dw.dot(inertia * dw));
-  if (c <= 0.0) return 0.0;
-  // The positive root of c s² + b s + a = 0 (a <= 0 so it exists), written without cancellation.
-  const double root = std::sqrt(std::max(0.0, b * b - 4.0 * c * a));
-  const double s = b >= 0.0 ? (-2.0 * a) / (b + root) : (root - b) / (2.0 * c);
+  return {.c0 = at_zero.kinetic_energy(),
+          .c1 = mass * at_zero.velocity.dot(dv) + at_zero.angular_velocity.dot(inertia * dw),
+          .c2 = 0.5 * (mass * dv.squaredNorm() + dw.dot(inertia * dw))};
+}
+
+// The largest s in [0, 1] at which an energy c₀ + c₁ s + c₂ s² is at most `bound`, given that
+// it is at s = 0.
+double largest_step_within(const EnergyInStep& e, double bound) {
+  const double a = e.c0 - bound;  // <= 0
+  if (e.c2 <= 0.0) return 0.0;
+  // The positive root of c₂ s² + c₁ s + a = 0 (a <= 0 so it exists), without cancellation.
+  const double root = std::sqrt(std::max(0.0, e.c1 * e.c1 - 4.0 * e.c2 * a));
+  const double s = e.c1 >= 0.0 ? (-2.0 * a) / (e.c1 + root) : (root - e.c1) / (2.0 * e.c2);
   return std::clamp(s, 0.0, 1.0);
+}
+
+double total_kinetic_energy(std::span<const SolverBody> bodies) {
+  double total = 0.0;
+  for (const SolverBody& body : bodies) total += body.kinetic_energy();
+  return total;
 }
 
 }  // namespace
 
-SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constants) {
-  const Mat3 rotation = state.orientation().toRotationMatrix();
-  return {
-      .velocity = state.velocity(),
-      .angular_velocity = state.angular_velocity(),
-      .inverse_mass = constants.inverse_mass,
-      .inverse_inertia = rotation * constants.inverse_inertia.asDiagonal() * rotation.transpose(),
-      .inertia = rotation * constants.inertia.asDiagonal() * rotation.transpose()};
+SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constants,
+                            const Mat3& rotation) {
+  SolverBody out{.velocity = state.velocity(),
+                 .angular_velocity = state.angular_velocity(),
+                 .inverse_mass = constants.inverse_mass};
+  if (constants.isotropic) {  // a scalar tensor in every frame
+    out.inverse_inertia = Mat3::Identity() * constants.inverse_inertia.x();
+    out.inertia = Mat3::Identity() * constants.inertia.x();
+  } else {
+    out.inverse_inertia = rotation * constants.inverse_inertia.asDiagonal() * rotation.transpose();
+    out.inertia = rotation * constants.inertia.asDiagonal() * rotation.transpose();
+  }
+  return out;
 }
 
 double SolverBody::kinetic_energy() const {
@@ -118,39 +186,47 @@ double SolverBody::kinetic_energy() const {
          0.5 * angular_velocity.dot(inertia * angular_velocity);
 }
 
-ContactConstraint make_constraint(std::size_t body_index, const SolverBody& body, const Vec3& arm,
-                                  const Vec3& normal, const Material& material) {
-  ContactConstraint c;
-  c.body = body_index;
-  c.normal = direction(body, arm, normal);
-  Vec3 tangents[2];
-  tangent_basis(normal, tangents);
-  for (int k = 0; k < 2; ++k) c.tangent[k] = direction(body, arm, tangents[k]);
-  c.friction = material.friction;
-  c.restitution = material.restitution;
-  c.approach_speed = c.normal.speed(body);
-  return c;
+void tangent_basis(const Vec3& normal, Vec3 (&out)[2]) {
+  int least = 0;
+  for (int axis = 1; axis < 3; ++axis) {
+    if (std::abs(normal[axis]) < std::abs(normal[least])) least = axis;
+  }
+  out[0] = normal.cross(Vec3::Unit(least)).normalized();
+  out[1] = normal.cross(out[0]);
+}
+
+ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
+                                  const Vec3& normal, const Vec3 (&tangents)[2],
+                                  const Material& material) {
+  return constraint(a, body_a, arm_a, kStatic, nullptr, Vec3::Zero(), normal, tangents, material);
+}
+
+ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
+                                  std::uint32_t b, const SolverBody& body_b, const Vec3& arm_b,
+                                  const Vec3& normal, const Vec3 (&tangents)[2],
+                                  const Material& material) {
+  return constraint(a, body_a, arm_a, b, &body_b, arm_b, normal, tangents, material);
 }
 
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                     const SolveSettings& settings) {
-  // Which points may bounce is known before the solve; the energy guard needs the energies then.
+  // Which points may bounce is known before the solve; the energy guard needs the energy then.
   const auto may_bounce = [&](const ContactConstraint& c) {
     return c.restitution > 0.0 && c.approach_speed < -settings.restitution_threshold;
   };
-  std::vector<double> energy_before;
-  if (std::any_of(points.begin(), points.end(), may_bounce)) {
-    for (const SolverBody& body : bodies) energy_before.push_back(body.kinetic_energy());
-  }
+  const bool bounce = std::any_of(points.begin(), points.end(), may_bounce);
+  const double energy_before = bounce ? total_kinetic_energy(bodies) : 0.0;
 
   if (settings.warm_start) {
     for (ContactConstraint& c : points) {
       if (!c.source) continue;
-      c.normal_impulse = c.source->normal_impulse;
-      c.normal.push(bodies[c.body], c.normal_impulse);
+      SolverBody& a = bodies[c.a];
+      SolverBody* b = second(bodies, c);
+      c.normal_impulse = c.source->normal;
+      push(c.normal, a, b, c.normal_impulse);
       for (int k = 0; k < 2; ++k) {
-        c.tangent_impulse[k] = c.source->tangent_impulse.dot(c.tangent[k].linear);
-        c.tangent[k].push(bodies[c.body], c.tangent_impulse[k]);
+        c.tangent_impulse[k] = c.source->tangent.dot(c.tangent[k].linear);
+        push(c.tangent[k], a, b, c.tangent_impulse[k]);
       }
     }
   }
@@ -160,14 +236,14 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
   }
   for (ContactConstraint& c : points) {
     if (!c.source) continue;
-    c.source->normal_impulse = c.normal_impulse;
-    c.source->tangent_impulse =
+    c.source->normal = c.normal_impulse;
+    c.source->tangent =
         c.tangent_impulse[0] * c.tangent[0].linear + c.tangent_impulse[1] * c.tangent[1].linear;
   }
 
   // The bounce, from the velocities the inelastic solve left (Poisson-like: compression first,
   // then restitution), only where the point approached fast enough and was pushed.
-  if (energy_before.empty()) return;
+  if (!bounce) return;
   std::vector<double> bouncing(points.size(), 0.0);
   bool any = false;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -185,17 +261,24 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
     for (const double a : accumulated) largest = std::max(largest, a);
     if (change <= settings.tolerance * largest) break;
   }
+  if (total_kinetic_energy(bodies) <= energy_before) return;
+  // One scale for the whole group: energy a bounce moves from one body to another is kept.
+  EnergyInStep energy;
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (bodies[b].kinetic_energy() <= energy_before[b]) continue;
-    const double s = largest_step_within(inelastic[b], bodies[b], energy_before[b]);
+    const EnergyInStep e = energy_in_step(inelastic[b], bodies[b]);
+    energy.c0 += e.c0;
+    energy.c1 += e.c1;
+    energy.c2 += e.c2;
+  }
+  const double s = largest_step_within(energy, energy_before);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
     SolverBody& body = bodies[b];
-    body.velocity = inelastic[b].velocity + s * (body.velocity - inelastic[b].velocity);
+    const SolverBody& from = inelastic[b];
+    body.velocity = from.velocity + s * (body.velocity - from.velocity);
     body.angular_velocity =
-        inelastic[b].angular_velocity + s * (body.angular_velocity - inelastic[b].angular_velocity);
-    body.linear_impulse =
-        inelastic[b].linear_impulse + s * (body.linear_impulse - inelastic[b].linear_impulse);
-    body.angular_impulse =
-        inelastic[b].angular_impulse + s * (body.angular_impulse - inelastic[b].angular_impulse);
+        from.angular_velocity + s * (body.angular_velocity - from.angular_velocity);
+    body.linear_impulse = from.linear_impulse + s * (body.linear_impulse - from.linear_impulse);
+    body.angular_impulse = from.angular_impulse + s * (body.angular_impulse - from.angular_impulse);
   }
 }
 

@@ -2,9 +2,10 @@
 // clamping (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005), a circular friction
 // cone per point, a restitution pass after the inelastic solve, and a guard that a bounce never
 // leaves more kinetic energy than the impact found. Bodies are plain velocity records; a point
-// ties one body to a static shape (a plane), and the next step of this design adds a second body.
+// ties body `a` to body `b`, or to a static shape (a plane) when `b` is kStatic.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "physics/contact.hpp"
@@ -17,55 +18,68 @@ struct SolverBody {
   Vec3 velocity = Vec3::Zero();          // world frame (m/s)
   Vec3 angular_velocity = Vec3::Zero();  // world frame (rad/s)
   double inverse_mass = 0.0;             // 1/kg
-  Mat3 inverse_inertia =
-      Mat3::Zero();             // I_world⁻¹ at the pose the points were found at (1/(kg m²))
-  Mat3 inertia = Mat3::Zero();  // I_world there (kg m²), for the kinetic energy
+  // I_world⁻¹ at the pose the points were found at (1/(kg m²)), and I_world there (kg m²), for
+  // the kinetic energy.
+  Mat3 inverse_inertia = Mat3::Zero();
+  Mat3 inertia = Mat3::Zero();
   Vec3 linear_impulse = Vec3::Zero();   // Σ of the impulses applied by the solve (N s)
   Vec3 angular_impulse = Vec3::Zero();  // Σ of their moments about the centre (N m s)
 
-  // The body as the state has it: velocities and mass at that pose.
-  static SolverBody from(const BodyState& state, const BodyConstants& constants);
+  // The body as the state has it: velocities and mass at that pose, whose body-to-world
+  // rotation is `rotation` (passed in: the caller has it already).
+  static SolverBody from(const BodyState& state, const BodyConstants& constants,
+                         const Mat3& rotation);
   double kinetic_energy() const;  // of the velocities, with the inertia above (J)
 };
 
-// A direction d in which a contact point pushes its body, with what the solve reads and writes
-// for it precomputed (the Jacobian row and its image through the inverse mass): the point's speed
-// along d is v·d + ω·(r × d), and an impulse λ along d changes v by λ d/m and ω by λ I⁻¹(r × d).
-struct ImpulseDirection {
-  Vec3 linear = Vec3::Zero();  // d: unit, world frame
-  Vec3 moment = Vec3::Zero();  // r × d (m)
-  Vec3 turn = Vec3::Zero();    // I⁻¹ (r × d) (1/(kg m))
-  double mass = 0.0;  // 1 / (m⁻¹ + (r × d)·I⁻¹(r × d)): the mass the body shows (kg)
+// The index of a point's second body when it touches a static shape.
+inline constexpr std::uint32_t kStatic = UINT32_MAX;
 
-  double speed(const SolverBody& body) const {  // m/s
-    return body.velocity.dot(linear) + body.angular_velocity.dot(moment);
-  }
-  void push(SolverBody& body, double impulse /* N s */) const {
-    body.velocity += (impulse * body.inverse_mass) * linear;
-    body.angular_velocity += impulse * turn;
-    body.linear_impulse += impulse * linear;
-    body.angular_impulse += impulse * moment;
-  }
+// A direction d in which a contact point pushes body a (and pushes b by -d), with what the solve
+// reads and writes precomputed (the Jacobian row and its image through the inverse masses): the
+// relative speed along d is v_a·d + ω_a·(r_a × d) - v_b·d - ω_b·(r_b × d), and an impulse λ along
+// d changes v_a by λ d/m_a and ω_a by λ I_a⁻¹(r_a × d), and b by the opposite.
+// Its fields have no default values on purpose: make_constraint sets every one, and zeroing them
+// first cost a third of building a constraint (a `rep stos` per direction).
+struct ImpulseDirection {
+  Vec3 linear;    // d: unit, world frame
+  Vec3 moment_a;  // r_a × d (m)
+  Vec3 turn_a;    // I_a⁻¹ (r_a × d) (1/(kg m))
+  Vec3 moment_b;  // r_b × d (m); zero against a static shape
+  Vec3 turn_b;    // I_b⁻¹ (r_b × d) (1/(kg m))
+  double mass;    // 1 / (m_a⁻¹ + m_b⁻¹ + moments through inverse inertias): the pair's (kg)
 };
 
-// One contact point between body `body` and a static plane.
+// One contact point between bodies a and b (b may be kStatic).
 struct ContactConstraint {
-  std::size_t body = 0;         // index into the SolverBody list
-  ImpulseDirection normal;      // along the plane's normal, from the plane to the body
-  ImpulseDirection tangent[2];  // two unit directions spanning the plane
+  std::uint32_t a = 0;          // index into the SolverBody list
+  std::uint32_t b = kStatic;    // likewise, or kStatic
+  ImpulseDirection normal;      // unit, from b (or the static shape) towards a
+  ImpulseDirection tangent[2];  // two unit directions normal to it
   double friction = 0.0;        // μ of the pair
   double restitution = 0.0;     // e of the pair
-  double approach_speed = 0.0;  // normal velocity before the solve (m/s; negative approaching)
+  double approach_speed = 0.0;  // normal speed before the solve (m/s; negative approaching)
   double normal_impulse = 0.0;  // accumulated (N s, >= 0)
   double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ normal (N s)
   // Where the result goes back to for warm starting: a point of one manifold.
-  ContactPoint* source = nullptr;
+  Impulses* source = nullptr;
 };
 
-// A point at `arm` (m, world, from the body's centre) pushed along `normal` (unit, world), with
-// its directions computed from the body.
-ContactConstraint make_constraint(std::size_t body_index, const SolverBody& body, const Vec3& arm,
-                                  const Vec3& normal, const Material& material);
+// Two unit vectors spanning the plane normal to the unit `normal`, from the world axis least
+// along it (so the same normal always gives the same basis).
+void tangent_basis(const Vec3& normal, Vec3 (&out)[2]);
+
+// A point at `arm_a` from a's centre (m, world) touching a static shape whose normal (unit,
+// world) is normal, with tangents from tangent_basis(normal).
+ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
+                                  const Vec3& normal, const Vec3 (&tangents)[2],
+                                  const Material& material);
+// A point between two bodies: at `arm_a` from a's centre and `arm_b` from b's (m, world), the
+// normal pointing from b towards a.
+ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
+                                  std::uint32_t b, const SolverBody& body_b, const Vec3& arm_b,
+                                  const Vec3& normal, const Vec3 (&tangents)[2],
+                                  const Material& material);
 
 // What a solve is asked for.
 struct SolveSettings {
@@ -79,10 +93,12 @@ struct SolveSettings {
 
 // Solves the points against the bodies' velocities in place: first the inelastic solve (normal
 // speeds >= 0, friction within the cone), then the bounce (normal speed >= -e × approach speed for
-// points that approached faster than the threshold and pushed), then, per body, a bounce that
-// would raise the kinetic energy above its value before the solve is scaled back until it does
-// not (sequential bounces at several points can otherwise create energy: Box3D issue 83).
-// Accumulated impulses are written back to each point's `source`.
+// points that approached faster than the threshold and pushed), then, if the bounce raised the
+// kinetic energy of the bodies above its value before the solve, it is scaled back until it does
+// not (sequential bounces at several points can otherwise create energy: Box3D issue 83). The
+// bodies given are solved as one group: a caller with unrelated groups (islands) solves each
+// alone, so that one group's bounce does not scale another's. Accumulated impulses are written
+// back to each point's `source`.
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                     const SolveSettings& settings);
 

@@ -15,45 +15,67 @@ constexpr int kProjectionIterations = 4;
 // the velocity left is then about 1e-7 of what gravity adds in a step, far below what shows.
 constexpr double kRestingTolerance = 1e-6;
 
-// A body point in the world through the state's rotation matrix: cheaper than rotating by q.
-Vec3 world_point(const BodyState& state, const Vec3& body_point) {
-  const Mat4& m = state.derived().body_to_world;
-  return m.topLeftCorner<3, 3>() * body_point + m.topRightCorner<3, 1>();
+// Whether the box's bounding sphere at `position` (m, world) comes within `margin` (m) of any
+// plane: one dot product per plane, and the whole test for a body that touches nothing.
+bool near_any(const Vec3& position, const Vec3& half_size, const std::vector<Plane>& planes,
+              double margin) {
+  const double reach = half_size.norm() + margin;
+  return std::any_of(planes.begin(), planes.end(),
+                     [&](const Plane& plane) { return separation(plane, position) <= reach; });
 }
 
-// Whether any corner of the box touches (is within kTouchingDistance of, or inside) any plane: a
-// bounding-sphere test first, so a body far from every plane costs one dot product per plane.
-bool touches_any(const BodyState& state, const Vec3& half_size, const std::vector<Plane>& planes) {
-  const double radius = half_size.norm();
-  for (const Plane& plane : planes) {
-    if (separation(plane, state.position()) > radius + kTouchingDistance) continue;
-    if (closest_corner_separation(state, half_size, plane) < kTouchingDistance) return true;
-  }
-  return false;
-}
-
-double lowest_separation(const BodyState& state, const std::vector<Plane>& planes,
-                         const std::vector<ImpactCorner>& corners) {
+// Into `out`, one per plane: the corner separations of the box at (rotation, position), or +∞
+// for every corner of a plane that the box's bounding sphere is further from than `margin` (m).
+// Returns the lowest separation.
+double corner_separations(const Mat3& rotation, const Vec3& position, const Vec3& half_size,
+                          const std::vector<Plane>& planes, double margin,
+                          std::vector<CornerSeparations>& out) {
+  out.resize(planes.size());
+  const double reach = half_size.norm() + margin;
   double lowest = std::numeric_limits<double>::infinity();
-  for (const ImpactCorner& c : corners) {
-    lowest = std::min(lowest, separation(planes[c.plane], world_point(state, c.body_point)));
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    if (separation(planes[p], position) > reach) {
+      out[p].fill(std::numeric_limits<double>::infinity());
+      continue;
+    }
+    out[p] = corner_separations(rotation, position, half_size, planes[p]);
+    lowest = std::min(lowest, *std::min_element(out[p].begin(), out[p].end()));
   }
   return lowest;
 }
 
-// Into `out`: the corners apart from a plane at `start` (by more than kTouchingDistance) and
-// inside it at `end`.
-void find_impact_corners(const BodyState& start, const BodyState& end, const Vec3& half_size,
-                         const std::vector<Plane>& planes, std::vector<ImpactCorner>& out) {
+double lowest_separation(const BodyState& state, const std::vector<Plane>& planes,
+                         const std::vector<ImpactCorner>& corners) {
+  const Mat3 rotation = state.rotation();
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const ImpactCorner& c : corners) {
+    lowest =
+        std::min(lowest, separation(planes[c.plane], rotation * c.body_point + state.position()));
+  }
+  return lowest;
+}
+
+// Into `out`: the corners inside a plane at the end of the step (`end`, the separations there)
+// that were apart from it at `start` (by more than kTouchingDistance).
+void find_impact_corners(const BodyState& start, const std::vector<CornerSeparations>& end,
+                         const Vec3& half_size, const std::vector<Plane>& planes,
+                         std::vector<ImpactCorner>& out) {
   out.clear();
-  const double radius = half_size.norm();
+  Mat3 start_rotation;
+  bool rotated = false;
   for (std::size_t p = 0; p < planes.size(); ++p) {
-    if (separation(planes[p], end.position()) > radius) continue;
+    if (!(*std::min_element(end[p].begin(), end[p].end()) < 0.0)) continue;
+    if (!rotated) {
+      start_rotation = start.rotation();
+      rotated = true;
+    }
+    const CornerSeparations before =
+        corner_separations(start_rotation, start.position(), half_size, planes[p]);
     for (int feature = 0; feature < 8; ++feature) {
-      const Vec3 body_point = corner(half_size, feature);
-      if (separation(planes[p], world_point(end, body_point)) >= 0.0) continue;
-      if (separation(planes[p], world_point(start, body_point)) <= kTouchingDistance) continue;
-      out.push_back({p, body_point});
+      const auto f = static_cast<std::size_t>(feature);
+      if (end[p][f] < 0.0 && before[f] > kTouchingDistance) {
+        out.push_back({p, corner(half_size, feature)});
+      }
     }
   }
 }
@@ -91,24 +113,27 @@ double time_of_impact(Integrator integrator, const BodyModel& model, const BodyS
 }
 
 // Into contacts.found and contacts.points: the manifold of each plane (its corners closer than
-// `margin`, m) and a constraint for each of its points, pointing back at it for the impulses.
-void find_constraints(const BodyModel& model, const BodyState& state, const SolverBody& body,
-                      const std::vector<Plane>& planes, double margin, PlaneContacts& contacts) {
-  contacts.found.assign(planes.size(), Manifold{});
+// `margin`, m, from the state's corner separations) and a constraint for each of its points,
+// pointing back at it for the impulses.
+void find_constraints(const BodyModel& model, const Mat3& rotation, const SolverBody& body,
+                      const std::vector<Plane>& planes,
+                      const std::vector<CornerSeparations>& separations, double margin,
+                      PlaneContacts& contacts) {
+  contacts.found.resize(planes.size());
   contacts.points.clear();
-  const double radius = model.half_size.norm();
-  const Mat3 rotation = state.derived().body_to_world.topLeftCorner<3, 3>();
   for (std::size_t p = 0; p < planes.size(); ++p) {
-    const Plane& plane = planes[p];
-    if (separation(plane, state.position()) > radius + margin) continue;
     Manifold& manifold = contacts.found[p];
-    manifold = box_plane_manifold(state, model.half_size, plane, margin);
+    manifold = box_plane_manifold(separations[p], model.half_size, margin);
+    if (manifold.count == 0) continue;
+    const Plane& plane = planes[p];
     const Material material = combine(model.material, plane.material);
+    Vec3 tangents[2];
+    tangent_basis(plane.normal, tangents);
     for (int i = 0; i < manifold.count; ++i) {
       ContactPoint& point = manifold.points[static_cast<std::size_t>(i)];
       contacts.points.push_back(
-          make_constraint(0, body, rotation * point.body_point, plane.normal, material));
-      contacts.points.back().source = &point;
+          make_constraint(0, body, rotation * point.body_point, plane.normal, tangents, material));
+      contacts.points.back().source = &point.impulses;
     }
   }
 }
@@ -125,8 +150,12 @@ BodyState with_impulses(const BodyState& state, const SolverBody& body,
 BodyState resolve_impact(const BodyModel& model, const BodyState& at,
                          const std::vector<Plane>& planes, const ContactSettings& settings,
                          PlaneContacts& contacts) {
-  SolverBody bodies[1] = {SolverBody::from(at, model.constants)};
-  find_constraints(model, at, bodies[0], planes, kTouchingDistance, contacts);
+  const Mat3 rotation = at.rotation();
+  corner_separations(rotation, at.position(), model.half_size, planes, kTouchingDistance,
+                     contacts.separations);
+  SolverBody bodies[1] = {SolverBody::from(at, model.constants, rotation)};
+  find_constraints(model, rotation, bodies[0], planes, contacts.separations, kTouchingDistance,
+                   contacts);
   // An impact is solved to convergence: its bounce decides the energy of everything after it.
   solve_contacts(bodies, contacts.points,
                  {.iterations = 100,
@@ -137,8 +166,16 @@ BodyState resolve_impact(const BodyModel& model, const BodyState& at,
 
 // Rotates q by the rotation vector `angle` (rad, world frame): exp(angle / 2) q.
 Quat rotated(const Quat& q, const Vec3& angle) {
-  const double size = angle.norm();
-  if (size == 0.0) return q;
+  const double squared = angle.squaredNorm();
+  // exp(angle / 2) = (cos(θ/2), sin(θ/2)/θ angle); below 1e-4 rad the Taylor terms kept are exact
+  // to rounding (the next ones are below θ⁴/384 < 3e-19), and a resting body turns by ~1e-17.
+  if (squared < 1e-8) {
+    const Quat turn(1.0 - squared / 8.0, 0.0, 0.0, 0.0);
+    Quat out = turn;
+    out.vec() = (0.5 - squared / 48.0) * angle;
+    return out * q;
+  }
+  const double size = std::sqrt(squared);
   return Quat(Eigen::AngleAxisd(size, angle / size)) * q;
 }
 
@@ -170,11 +207,14 @@ PrimaryState project_out(const BodyModel& model, const Mat3& inverse_inertia, Pr
   return pose;
 }
 
+// The free step's end `free`, whose rotation is `rotation` and corner separations are
+// contacts.separations, with its resting and sliding contacts solved.
 BodyState resolve_resting(Integrator integrator, const BodyModel& model, const BodyState& free,
-                          double h, const std::vector<Plane>& planes,
+                          const Mat3& rotation, double h, const std::vector<Plane>& planes,
                           const ContactSettings& settings, PlaneContacts& contacts) {
-  SolverBody bodies[1] = {SolverBody::from(free, model.constants)};
-  find_constraints(model, free, bodies[0], planes, kTouchingDistance, contacts);
+  SolverBody bodies[1] = {SolverBody::from(free, model.constants, rotation)};
+  find_constraints(model, rotation, bodies[0], planes, contacts.separations, kTouchingDistance,
+                   contacts);
   // Warm start from the last step's impulses of the same corners.
   for (std::size_t p = 0; p < planes.size(); ++p) {
     for (int i = 0; i < contacts.found[p].count; ++i) {
@@ -182,8 +222,7 @@ BodyState resolve_resting(Integrator integrator, const BodyModel& model, const B
       for (int j = 0; j < contacts.manifolds[p].count; ++j) {
         const ContactPoint& before = contacts.manifolds[p].points[static_cast<std::size_t>(j)];
         if (before.feature != now.feature) continue;
-        now.normal_impulse = before.normal_impulse;
-        now.tangent_impulse = before.tangent_impulse;
+        now.impulses = before.impulses;
       }
     }
   }
@@ -206,6 +245,43 @@ BodyState resolve_resting(Integrator integrator, const BodyModel& model, const B
                    model.constants);
 }
 
+// Whether a corner of the box at `state` is within kTouchingDistance of a plane; if so, into
+// `separations` its corner separations and into `rotation` its rotation matrix.
+bool touching(const BodyState& state, const Vec3& half_size, const std::vector<Plane>& planes,
+              std::vector<CornerSeparations>& separations, Mat3& rotation) {
+  if (!near_any(state.position(), half_size, planes, kTouchingDistance)) return false;
+  rotation = state.rotation();
+  return corner_separations(rotation, state.position(), half_size, planes, kTouchingDistance,
+                            separations) < kTouchingDistance;
+}
+
+// The step from `in` at t whose free step `free` (rotation `rotation`, separations in
+// contacts.separations) touches a plane: its impacts at their times, then what rests.
+BodyState step_in_contact(Integrator integrator, const BodyModel& model, const BodyState& in,
+                          double t, double dt, BodyState free, Mat3 rotation,
+                          const std::vector<Plane>& planes, const ContactSettings& settings,
+                          PlaneContacts& contacts) {
+  BodyState state = in;
+  double time = t, remaining = dt;
+  for (int impacts = 0; impacts < kMaxImpactsPerStep; ++impacts) {
+    find_impact_corners(state, contacts.separations, model.half_size, planes,
+                        contacts.impact_corners);
+    if (contacts.impact_corners.empty()) break;
+    const double until =
+        time_of_impact(integrator, model, state, time, remaining, planes, contacts.impact_corners);
+    const BodyState at = until > 0.0 ? step(integrator, model, state, time, until) : state;
+    state = resolve_impact(model, at, planes, settings, contacts);
+    time += until;
+    remaining -= until;
+    free = step(integrator, model, state, time, remaining);
+    if (!touching(free, model.half_size, planes, contacts.separations, rotation)) {
+      for (Manifold& m : contacts.manifolds) m.count = 0;
+      return free;
+    }
+  }
+  return resolve_resting(integrator, model, free, rotation, remaining, planes, settings, contacts);
+}
+
 }  // namespace
 
 double impulse_position_weight(Integrator integrator, double h) {
@@ -226,28 +302,14 @@ BodyState step_with_planes(Integrator integrator, const BodyModel& model, const 
                            double t, double dt, const std::vector<Plane>& planes,
                            const ContactSettings& settings, PlaneContacts& contacts) {
   contacts.manifolds.resize(planes.size());
-  BodyState state = in;
-  double time = t, remaining = dt;
-  for (int impacts = 0;; ++impacts) {
-    const BodyState free = step(integrator, model, state, time, remaining);
-    if (!touches_any(free, model.half_size, planes)) {
-      for (Manifold& m : contacts.manifolds) m.count = 0;  // nothing to warm start from
-      return free;
-    }
-    if (impacts < kMaxImpactsPerStep) {
-      find_impact_corners(state, free, model.half_size, planes, contacts.impact_corners);
-      if (!contacts.impact_corners.empty()) {
-        const double until = time_of_impact(integrator, model, state, time, remaining, planes,
-                                            contacts.impact_corners);
-        const BodyState at = until > 0.0 ? step(integrator, model, state, time, until) : state;
-        state = resolve_impact(model, at, planes, settings, contacts);
-        time += until;
-        remaining -= until;
-        continue;
-      }
-    }
-    return resolve_resting(integrator, model, free, remaining, planes, settings, contacts);
+  BodyState out = step(integrator, model, in, t, dt);
+  Mat3 rotation;
+  if (touching(out, model.half_size, planes, contacts.separations, rotation)) {
+    out = step_in_contact(integrator, model, in, t, dt, out, rotation, planes, settings, contacts);
+  } else {
+    for (Manifold& m : contacts.manifolds) m.count = 0;  // nothing to warm start from
   }
+  return out;
 }
 
 }  // namespace tumble::physics

@@ -29,10 +29,11 @@ struct ImpactCorner {
 // One body's contact between steps: its last manifold with each plane (warm starting), and
 // scratch space kept from step to step so that a step of a touching body allocates nothing.
 struct PlaneContacts {
-  std::vector<Manifold> manifolds;           // one per plane, in the planes' order
-  std::vector<Manifold> found;               // scratch
-  std::vector<ContactConstraint> points;     // scratch
-  std::vector<ImpactCorner> impact_corners;  // scratch
+  std::vector<Manifold> manifolds;             // one per plane, in the planes' order
+  std::vector<Manifold> found;                 // scratch
+  std::vector<CornerSeparations> separations;  // scratch: of the pose being looked at, per plane
+  std::vector<ContactConstraint> points;       // scratch
+  std::vector<ImpactCorner> impact_corners;    // scratch
 };
 
 // How far an impulse applied over a step of h moves the body in that step, as a multiple of the

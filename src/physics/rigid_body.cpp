@@ -48,27 +48,34 @@ Vec3 apply_inertia_world(const BodyConstants& constants, const Quat& orientation
 
 void BodyState::recalculate(const BodyConstants& constants) {
   primary_.orientation.normalize();
-  const Mat3 rotation = primary_.orientation.toRotationMatrix();
 
   derived_.velocity = primary_.momentum * constants.inverse_mass;
   if (constants.isotropic) {
     derived_.angular_velocity = constants.inverse_inertia.x() * primary_.angular_momentum;
   } else {
     derived_.angular_velocity =
-        through_body_tensor(rotation, constants.inverse_inertia, primary_.angular_momentum);
+        through_body_tensor(rotation(), constants.inverse_inertia, primary_.angular_momentum);
   }
   const Vec3& w = derived_.angular_velocity;
   derived_.spin.coeffs() = 0.5 * (Quat(0.0, w.x(), w.y(), w.z()) * primary_.orientation).coeffs();
 
-  derived_.body_to_world.setIdentity();
-  derived_.body_to_world.topLeftCorner<3, 3>() = rotation;
-  derived_.body_to_world.topRightCorner<3, 1>() = primary_.position;
-  derived_.world_to_body.setIdentity();
-  derived_.world_to_body.topLeftCorner<3, 3>() = rotation.transpose();
-  derived_.world_to_body.topRightCorner<3, 1>() = -(rotation.transpose() * primary_.position);
-
   // A non-finite state is not asserted against: a step too large for the forces produces one,
   // and sim::Simulation reports it as a blow-up, naming the body and the time.
+}
+
+Mat4 BodyState::body_to_world() const {
+  Mat4 out = Mat4::Identity();
+  out.topLeftCorner<3, 3>() = rotation();
+  out.topRightCorner<3, 1>() = primary_.position;
+  return out;
+}
+
+Mat4 BodyState::world_to_body() const {
+  const Mat3 inverse = rotation().transpose();
+  Mat4 out = Mat4::Identity();
+  out.topLeftCorner<3, 3>() = inverse;
+  out.topRightCorner<3, 1>() = -(inverse * primary_.position);
+  return out;
 }
 
 BodyState make_state(const BodyConstants& constants, const Vec3& position, const Vec3& velocity,

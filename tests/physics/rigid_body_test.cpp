@@ -55,11 +55,11 @@ TEST(RigidBody, MatricesAreInversesOfEachOther) {
   const BodyState state(
       PrimaryState{.position = Vec3(1.0, -2.0, 3.0), .orientation = box.orientation},
       box.constants);
-  const Mat4 product = state.derived().body_to_world * state.derived().world_to_body;
+  const Mat4 product = state.body_to_world() * state.world_to_body();
   EXPECT_LT((product - Mat4::Identity()).cwiseAbs().maxCoeff(), 1e-14);
   // And they place a body point where the quaternion does.
   const Vec3 body_point(0.2, 0.5, -1.0);
-  const Eigen::Vector4d world = state.derived().body_to_world * body_point.homogeneous();
+  const Eigen::Vector4d world = state.body_to_world() * body_point.homogeneous();
   EXPECT_LT((world.head<3>() - body_point_to_world(state, body_point)).norm(), 1e-14);
 }
 
