@@ -429,7 +429,8 @@ PairManifold box_box_manifold(const BoxPose& a, const BoxPose& b, double margin)
   if (edge_wins(search)) return edge_contact(a, b, search.edge, margin);
   PairManifold out = face_contact(a, b, search.face, margin);
   // The face axis won by its bias alone and its face clips to nothing (edges crossing past the
-  // face): the edge pair still holds the boxes apart (Box3D falls back the same way).
+  // face): the edge pair still holds the boxes apart (research/contact.md §3.3 notes Box3D
+  // doing the same).
   if (out.count == 0 && search.has_edge) out = edge_contact(a, b, search.edge, margin);
   return out;
 }

@@ -112,7 +112,7 @@ TEST(BoxBox, SmallCubeOnALargeBoxGivesItsCornersInAnyFrame) {
   for (int i = 0; i < m.count; ++i) EXPECT_NEAR(m.points[i].separation, 0.0, kExact);
 }
 
-// Twice the area of the convex quadrilateral through four points in the xz-plane (m²).
+// The area of the convex quadrilateral through four points, in the xz-plane (m²).
 double quad_area_xz(std::vector<Vec3> points) {
   Vec3 centre = Vec3::Zero();
   for (const Vec3& p : points) centre += p / 4.0;
