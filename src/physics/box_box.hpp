@@ -36,9 +36,7 @@ struct PairPoint {
   Vec3 point_a = Vec3::Zero();  // the contact point relative to A's centre, A's body frame (m)
   Vec3 point_b = Vec3::Zero();  // the same point relative to B's centre, B's body frame (m)
   double separation = 0.0;      // along the normal, negative when overlapping (m)
-  // Accumulated impulses for warm starting; the narrow phase leaves them zero.
-  double normal_impulse = 0.0;          // N s
-  Vec3 tangent_impulse = Vec3::Zero();  // N s, world frame
+  Impulses impulses;  // for warm starting; the narrow phase leaves them zero
 };
 
 struct PairManifold {
