@@ -36,7 +36,7 @@ struct PairPoint {
   Vec3 point_a = Vec3::Zero();  // the contact point relative to A's centre, A's body frame (m)
   Vec3 point_b = Vec3::Zero();  // the same point relative to B's centre, B's body frame (m)
   double separation = 0.0;      // along the normal, negative when overlapping (m)
-  Impulses impulses;  // for warm starting; the narrow phase leaves them zero
+  Impulses impulses;            // for warm starting; the narrow phase leaves them zero
 };
 
 struct PairManifold {

@@ -4,16 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/contact_island.hpp"
 #include "physics/contact_solver.hpp"
 
 namespace tumble::physics {
 namespace {
-
-// Passes of the position projection; each moves the body by what is left inside.
-constexpr int kProjectionIterations = 4;
-// A resting solve ends when a pass changes no impulse by more than this fraction of the largest:
-// the velocity left is then about 1e-7 of what gravity adds in a step, far below what shows.
-constexpr double kRestingTolerance = 1e-6;
 
 // Whether the box's bounding sphere at `position` (m, world) comes within `margin` (m) of any
 // plane: one dot product per plane, and the whole test for a body that touches nothing.
@@ -112,17 +107,16 @@ double time_of_impact(Integrator integrator, const BodyModel& model, const BodyS
   return outside;
 }
 
-// Into contacts.found and contacts.points: the manifold of each plane (its corners closer than
-// `margin`, m, from the state's corner separations) and a constraint for each of its points,
-// pointing back at it for the impulses.
-void find_constraints(const BodyModel& model, const Mat3& rotation, const SolverBody& body,
-                      const std::vector<Plane>& planes,
+// Into `found` (one per plane) the manifold of each plane (its corners closer than `margin`, m,
+// from the corner separations), and onto `points` a constraint for each of its points, pointing
+// back at it for the impulses; `body` is the body's index among the solver's bodies.
+void find_constraints(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
+                      const SolverBody& solver_body, const std::vector<Plane>& planes,
                       const std::vector<CornerSeparations>& separations, double margin,
-                      PlaneContacts& contacts) {
-  contacts.found.resize(planes.size());
-  contacts.points.clear();
+                      std::vector<Manifold>& found, std::vector<ContactConstraint>& points) {
+  found.resize(planes.size());
   for (std::size_t p = 0; p < planes.size(); ++p) {
-    Manifold& manifold = contacts.found[p];
+    Manifold& manifold = found[p];
     manifold = box_plane_manifold(separations[p], model.half_size, margin);
     if (manifold.count == 0) continue;
     const Plane& plane = planes[p];
@@ -131,9 +125,9 @@ void find_constraints(const BodyModel& model, const Mat3& rotation, const Solver
     tangent_basis(plane.normal, tangents);
     for (int i = 0; i < manifold.count; ++i) {
       ContactPoint& point = manifold.points[static_cast<std::size_t>(i)];
-      contacts.points.push_back(
-          make_constraint(0, body, rotation * point.body_point, plane.normal, tangents, material));
-      contacts.points.back().source = &point.impulses;
+      points.push_back(make_constraint(body, solver_body, rotation * point.body_point, plane.normal,
+                                       tangents, material));
+      points.back().source = &point.impulses;
     }
   }
 }
@@ -154,95 +148,15 @@ BodyState resolve_impact(const BodyModel& model, const BodyState& at,
   corner_separations(rotation, at.position(), model.half_size, planes, kTouchingDistance,
                      contacts.separations);
   SolverBody bodies[1] = {SolverBody::from(at, model.constants, rotation)};
-  find_constraints(model, rotation, bodies[0], planes, contacts.separations, kTouchingDistance,
-                   contacts);
+  contacts.points.clear();
+  find_constraints(model, 0, rotation, bodies[0], planes, contacts.separations, kTouchingDistance,
+                   contacts.found, contacts.points);
   // An impact is solved to convergence: its bounce decides the energy of everything after it.
   solve_contacts(bodies, contacts.points,
                  {.iterations = 100,
                   .restitution_threshold = settings.restitution_threshold,
                   .warm_start = false});
   return with_impulses(at, bodies[0], model.constants);
-}
-
-// Rotates q by the rotation vector `angle` (rad, world frame): exp(angle / 2) q.
-Quat rotated(const Quat& q, const Vec3& angle) {
-  const double squared = angle.squaredNorm();
-  // exp(angle / 2) = (cos(θ/2), sin(θ/2)/θ angle); below 1e-4 rad the Taylor terms kept are exact
-  // to rounding (the next ones are below θ⁴/384 < 3e-19), and a resting body turns by ~1e-17.
-  if (squared < 1e-8) {
-    const Quat turn(1.0 - squared / 8.0, 0.0, 0.0, 0.0);
-    Quat out = turn;
-    out.vec() = (0.5 - squared / 48.0) * angle;
-    return out * q;
-  }
-  const double size = std::sqrt(squared);
-  return Quat(Eigen::AngleAxisd(size, angle / size)) * q;
-}
-
-// Non-linear Gauss-Seidel on the pose: each manifold corner still inside is pushed out to the
-// surface along the normal by a position-level impulse through the body's mass and inertia.
-// The inverse inertia is the one at the start of the projection: the pose turns by little.
-PrimaryState project_out(const BodyModel& model, const Mat3& inverse_inertia, PrimaryState pose,
-                         const std::vector<Plane>& planes, const std::vector<Manifold>& manifolds) {
-  for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
-    bool moved = false;
-    for (std::size_t p = 0; p < planes.size(); ++p) {
-      for (int i = 0; i < manifolds[p].count; ++i) {
-        const Vec3 arm =
-            pose.orientation * manifolds[p].points[static_cast<std::size_t>(i)].body_point;
-        const double depth = -separation(planes[p], pose.position + arm);
-        if (depth <= 0.0) continue;
-        const Vec3& n = planes[p].normal;
-        const Vec3 moment = arm.cross(n);
-        const Vec3 turn_per_unit = inverse_inertia * moment;
-        const double inverse_mass = model.constants.inverse_mass + moment.dot(turn_per_unit);
-        const double push = depth / inverse_mass;  // position-level impulse (kg m)
-        pose.position += (push * model.constants.inverse_mass) * n;
-        pose.orientation = rotated(pose.orientation, push * turn_per_unit).normalized();
-        moved = true;
-      }
-    }
-    if (!moved) break;
-  }
-  return pose;
-}
-
-// The free step's end `free`, whose rotation is `rotation` and corner separations are
-// contacts.separations, with its resting and sliding contacts solved.
-BodyState resolve_resting(Integrator integrator, const BodyModel& model, const BodyState& free,
-                          const Mat3& rotation, double h, const std::vector<Plane>& planes,
-                          const ContactSettings& settings, PlaneContacts& contacts) {
-  SolverBody bodies[1] = {SolverBody::from(free, model.constants, rotation)};
-  find_constraints(model, rotation, bodies[0], planes, contacts.separations, kTouchingDistance,
-                   contacts);
-  // Warm start from the last step's impulses of the same corners.
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    for (int i = 0; i < contacts.found[p].count; ++i) {
-      ContactPoint& now = contacts.found[p].points[static_cast<std::size_t>(i)];
-      for (int j = 0; j < contacts.manifolds[p].count; ++j) {
-        const ContactPoint& before = contacts.manifolds[p].points[static_cast<std::size_t>(j)];
-        if (before.feature != now.feature) continue;
-        now.impulses = before.impulses;
-      }
-    }
-  }
-  solve_contacts(bodies, contacts.points,
-                 {.iterations = kContactIterations,
-                  .tolerance = kRestingTolerance,
-                  .restitution_threshold = settings.restitution_threshold,
-                  .warm_start = true});
-  contacts.manifolds.swap(contacts.found);
-
-  const SolverBody& solved = bodies[0];
-  const double weight = impulse_position_weight(integrator, h);
-  PrimaryState primary = free.primary();
-  primary.momentum += solved.linear_impulse;
-  primary.angular_momentum += solved.angular_impulse;
-  primary.position += weight * (solved.velocity - free.velocity());
-  primary.orientation =
-      rotated(primary.orientation, weight * (solved.angular_velocity - free.angular_velocity()));
-  return BodyState(project_out(model, solved.inverse_inertia, primary, planes, contacts.manifolds),
-                   model.constants);
 }
 
 // Whether a corner of the box at `state` is within kTouchingDistance of a plane; if so, into
@@ -253,33 +167,6 @@ bool touching(const BodyState& state, const Vec3& half_size, const std::vector<P
   rotation = state.rotation();
   return corner_separations(rotation, state.position(), half_size, planes, kTouchingDistance,
                             separations) < kTouchingDistance;
-}
-
-// The step from `in` at t whose free step `free` (rotation `rotation`, separations in
-// contacts.separations) touches a plane: its impacts at their times, then what rests.
-BodyState step_in_contact(Integrator integrator, const BodyModel& model, const BodyState& in,
-                          double t, double dt, BodyState free, Mat3 rotation,
-                          const std::vector<Plane>& planes, const ContactSettings& settings,
-                          PlaneContacts& contacts) {
-  BodyState state = in;
-  double time = t, remaining = dt;
-  for (int impacts = 0; impacts < kMaxImpactsPerStep; ++impacts) {
-    find_impact_corners(state, contacts.separations, model.half_size, planes,
-                        contacts.impact_corners);
-    if (contacts.impact_corners.empty()) break;
-    const double until =
-        time_of_impact(integrator, model, state, time, remaining, planes, contacts.impact_corners);
-    const BodyState at = until > 0.0 ? step(integrator, model, state, time, until) : state;
-    state = resolve_impact(model, at, planes, settings, contacts);
-    time += until;
-    remaining -= until;
-    free = step(integrator, model, state, time, remaining);
-    if (!touching(free, model.half_size, planes, contacts.separations, rotation)) {
-      for (Manifold& m : contacts.manifolds) m.count = 0;
-      return free;
-    }
-  }
-  return resolve_resting(integrator, model, free, rotation, remaining, planes, settings, contacts);
 }
 
 }  // namespace
@@ -298,17 +185,80 @@ double impulse_position_weight(Integrator integrator, double h) {
   return 0.5 * h;
 }
 
+PlaneAdvance advance_among_planes(Integrator integrator, const BodyModel& model,
+                                  const BodyState& in, double t, double dt,
+                                  const std::vector<Plane>& planes, const ContactSettings& settings,
+                                  PlaneContacts& contacts) {
+  contacts.manifolds.resize(planes.size());
+  PlaneAdvance out{.end = step(integrator, model, in, t, dt), .remaining = dt};
+  out.touching = touching(out.end, model.half_size, planes, contacts.separations, out.rotation);
+  if (!out.touching) {
+    for (Manifold& m : contacts.manifolds) m.count = 0;  // nothing to warm start from
+    return out;
+  }
+  BodyState state = in;
+  double time = t;
+  for (int impacts = 0; impacts < kMaxImpactsPerStep; ++impacts) {
+    find_impact_corners(state, contacts.separations, model.half_size, planes,
+                        contacts.impact_corners);
+    if (contacts.impact_corners.empty()) break;
+    const double until = time_of_impact(integrator, model, state, time, out.remaining, planes,
+                                        contacts.impact_corners);
+    const BodyState at = until > 0.0 ? step(integrator, model, state, time, until) : state;
+    state = resolve_impact(model, at, planes, settings, contacts);
+    time += until;
+    out.remaining -= until;
+    out.end = step(integrator, model, state, time, out.remaining);
+    out.touching = touching(out.end, model.half_size, planes, contacts.separations, out.rotation);
+    if (!out.touching) {
+      for (Manifold& m : contacts.manifolds) m.count = 0;
+      return out;
+    }
+  }
+  return out;
+}
+
+void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
+                      const SolverBody& solver_body, const std::vector<Plane>& planes,
+                      PlaneContacts& contacts, std::vector<ContactConstraint>& points,
+                      std::vector<PositionPoint>& positions) {
+  find_constraints(model, body, rotation, solver_body, planes, contacts.separations,
+                   kTouchingDistance, contacts.found, points);
+  // Warm start from the last step's impulses of the same corners.
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    for (int i = 0; i < contacts.found[p].count; ++i) {
+      ContactPoint& now = contacts.found[p].points[static_cast<std::size_t>(i)];
+      for (int j = 0; j < contacts.manifolds[p].count; ++j) {
+        const ContactPoint& before = contacts.manifolds[p].points[static_cast<std::size_t>(j)];
+        if (before.feature == now.feature) now.impulses = before.impulses;
+      }
+      positions.push_back({.a = body,
+                           .anchor_a = now.body_point,
+                           .normal = planes[p].normal,
+                           .base = -planes[p].offset});
+    }
+  }
+  // The points' sources stay where they are: swapping vectors keeps their buffers.
+  contacts.manifolds.swap(contacts.found);
+}
+
 BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
                            double t, double dt, const std::vector<Plane>& planes,
                            const ContactSettings& settings, PlaneContacts& contacts) {
-  contacts.manifolds.resize(planes.size());
-  BodyState out = step(integrator, model, in, t, dt);
-  Mat3 rotation;
-  if (touching(out, model.half_size, planes, contacts.separations, rotation)) {
-    out = step_in_contact(integrator, model, in, t, dt, out, rotation, planes, settings, contacts);
-  } else {
-    for (Manifold& m : contacts.manifolds) m.count = 0;  // nothing to warm start from
-  }
+  PlaneAdvance advance =
+      advance_among_planes(integrator, model, in, t, dt, planes, settings, contacts);
+  if (!advance.touching) return std::move(advance.end);
+  const IslandBody body{.model = &model,
+                        .end = advance.end,
+                        .rotation = advance.rotation,
+                        .weight = impulse_position_weight(integrator, advance.remaining)};
+  SolverBody solver[1] = {SolverBody::from(body.end, model.constants, body.rotation)};
+  contacts.points.clear();
+  contacts.positions.clear();
+  add_plane_points(model, 0, body.rotation, solver[0], planes, contacts, contacts.points,
+                   contacts.positions);
+  BodyState out;
+  resolve_island({&body, 1}, solver, contacts.points, contacts.positions, settings, {&out, 1});
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "physics/contact.hpp"
+#include "physics/contact_island.hpp"
 #include "physics/contact_solver.hpp"
 #include "physics/integrators.hpp"
 
@@ -17,8 +18,6 @@ inline constexpr double kTouchingDistance = 1e-6;
 // Impacts resolved at their own time within one step; past this the rest of the step treats
 // every contact as resting (a box chattering on a corner cannot stall the step).
 inline constexpr int kMaxImpactsPerStep = 8;
-// Passes of the velocity solver over the points of one body.
-inline constexpr int kContactIterations = 40;
 
 // A corner of the box that may hit a plane within a step.
 struct ImpactCorner {
@@ -33,6 +32,7 @@ struct PlaneContacts {
   std::vector<Manifold> found;                 // scratch
   std::vector<CornerSeparations> separations;  // scratch: of the pose being looked at, per plane
   std::vector<ContactConstraint> points;       // scratch
+  std::vector<PositionPoint> positions;        // scratch
   std::vector<ImpactCorner> impact_corners;    // scratch
 };
 
@@ -43,6 +43,27 @@ struct PlaneContacts {
 // force: x = x₀ + v₀ h + ½ a h²). So a resting body's contact impulse, which balances the
 // step's gravity, also undoes the sinking the step's gravity caused.
 double impulse_position_weight(Integrator integrator, double h /* s */);
+
+// A body's step among planes up to its resting contacts: steps 1 and 2 of step_with_planes.
+struct PlaneAdvance {
+  BodyState end;                     // the free step's end after the impacts
+  Mat3 rotation = Mat3::Identity();  // end's, when touching
+  double remaining = 0.0;            // s: the part of the step after the last impact
+  bool touching = false;  // a corner of `end` touches a plane: contacts.separations holds them
+};
+PlaneAdvance advance_among_planes(Integrator integrator, const BodyModel& model,
+                                  const BodyState& in, double t /* s */, double dt /* s */,
+                                  const std::vector<Plane>& planes, const ContactSettings& settings,
+                                  PlaneContacts& contacts);
+
+// Step 3's points of a touching body (`body`: its index among the island's solver bodies, whose
+// entry is `solver_body`): each plane's manifold from contacts.separations, warm-started from the
+// last step's, onto `points` (velocity) and `positions` (projection). contacts.manifolds then
+// holds the new manifolds, which the solve writes its impulses into.
+void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
+                      const SolverBody& solver_body, const std::vector<Plane>& planes,
+                      PlaneContacts& contacts, std::vector<ContactConstraint>& points,
+                      std::vector<PositionPoint>& positions);
 
 // Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
 // 1. the free step; if no corner ends inside a plane, that is the step (a body that touches

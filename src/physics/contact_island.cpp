@@ -1,0 +1,111 @@
+#include "physics/contact_island.hpp"
+
+#include <cmath>
+
+namespace tumble::physics {
+namespace {
+
+// Passes of the position projection; each moves the bodies by what is left inside.
+constexpr int kProjectionIterations = 4;
+// A resting solve ends when a pass changes no impulse by more than this fraction of the largest:
+// the velocity left is then about 1e-7 of what gravity adds in a step, far below what shows.
+constexpr double kRestingTolerance = 1e-6;
+
+// A pose being projected, and what the projection needs of its mass.
+struct Pose {
+  PrimaryState primary;
+  double inverse_mass = 0.0;              // 1/kg
+  const Mat3* inverse_inertia = nullptr;  // world, at the end of the free step (1/(kg m²))
+};
+
+Vec3 arm(const Pose& pose, const Vec3& anchor) {
+  return pose.primary.orientation * anchor;
+}
+
+// Pushes a's and b's poses apart along the point's normal until its separation is zero, by a
+// position-level impulse through both bodies' masses; false when it was not inside.
+bool project(const PositionPoint& point, Pose& a, Pose* b) {
+  const Vec3 arm_a = arm(a, point.anchor_a);
+  double separation = point.base + point.normal.dot(a.primary.position + arm_a);
+  Vec3 arm_b = Vec3::Zero();
+  if (b) {
+    arm_b = arm(*b, point.anchor_b);
+    separation -= point.normal.dot(b->primary.position + arm_b);
+  }
+  if (separation >= 0.0) return false;
+  const Vec3& n = point.normal;
+  const Vec3 turn_a = *a.inverse_inertia * arm_a.cross(n);
+  double inverse_mass = a.inverse_mass + arm_a.cross(n).dot(turn_a);
+  Vec3 turn_b = Vec3::Zero();
+  if (b) {
+    turn_b = *b->inverse_inertia * arm_b.cross(n);
+    inverse_mass += b->inverse_mass + arm_b.cross(n).dot(turn_b);
+  }
+  const double push = -separation / inverse_mass;  // position-level impulse (kg m)
+  a.primary.position += (push * a.inverse_mass) * n;
+  a.primary.orientation = rotated(a.primary.orientation, push * turn_a).normalized();
+  if (b) {
+    b->primary.position -= (push * b->inverse_mass) * n;
+    b->primary.orientation = rotated(b->primary.orientation, -push * turn_b).normalized();
+  }
+  return true;
+}
+
+}  // namespace
+
+Quat rotated(const Quat& q, const Vec3& angle) {
+  const double squared = angle.squaredNorm();
+  // exp(angle / 2) = (cos(θ/2), sin(θ/2)/θ angle); below 1e-4 rad the Taylor terms kept are exact
+  // to rounding (the next ones are below θ⁴/384 < 3e-19), and a resting body turns by ~1e-17.
+  if (squared < 1e-8) {
+    Quat turn(1.0 - squared / 8.0, 0.0, 0.0, 0.0);
+    turn.vec() = (0.5 - squared / 48.0) * angle;
+    return turn * q;
+  }
+  const double size = std::sqrt(squared);
+  return Quat(Eigen::AngleAxisd(size, angle / size)) * q;
+}
+
+void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
+                    std::span<ContactConstraint> points, std::span<const PositionPoint> positions,
+                    const ContactSettings& settings, std::span<BodyState> out) {
+  solve_contacts(solver, points,
+                 {.iterations = kContactIterations,
+                  .tolerance = kRestingTolerance,
+                  .restitution_threshold = settings.restitution_threshold,
+                  .warm_start = true});
+  // Small islands (one body on the floor, a short stack) are the common case: no allocation.
+  constexpr std::size_t kInline = 8;
+  Pose inline_poses[kInline];
+  std::vector<Pose> heap;
+  Pose* poses = inline_poses;
+  if (bodies.size() > kInline) {
+    heap.resize(bodies.size());
+    poses = heap.data();
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const IslandBody& body = bodies[i];
+    const SolverBody& solved = solver[i];
+    PrimaryState primary = body.end.primary();
+    primary.momentum += solved.linear_impulse;
+    primary.angular_momentum += solved.angular_impulse;
+    primary.position += body.weight * (solved.velocity - body.end.velocity());
+    primary.orientation = rotated(
+        primary.orientation, body.weight * (solved.angular_velocity - body.end.angular_velocity()));
+    poses[i] = {.primary = primary,
+                .inverse_mass = body.model->constants.inverse_mass,
+                .inverse_inertia = &solved.inverse_inertia};
+  }
+  for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
+    bool moved = false;
+    for (const PositionPoint& point : positions) {
+      moved |= project(point, poses[point.a], point.b == kStatic ? nullptr : &poses[point.b]);
+    }
+    if (!moved) break;
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    out[i] = BodyState(poses[i].primary, bodies[i].model->constants);
+  }
+}
+
+}  // namespace tumble::physics

@@ -1,0 +1,53 @@
+// The resolution of one island: bodies that touch each other (or planes) through contact points,
+// solved together after their free steps. Both the step of one body among planes and the world
+// step of many bodies end here, so resting, sliding and stacking share one solve, one pose update
+// and one projection.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "physics/contact.hpp"
+#include "physics/contact_solver.hpp"
+#include "physics/integrators.hpp"
+
+namespace tumble::physics {
+
+// Passes of the velocity solver over the points of an island.
+inline constexpr int kContactIterations = 40;
+
+// A body of an island, at the end of its free step (after any impacts of its own with planes).
+struct IslandBody {
+  const BodyModel* model = nullptr;
+  BodyState end;                     // what the solve corrects
+  Mat3 rotation = Mat3::Identity();  // end's, body to world
+  double weight = 0.0;  // impulse_position_weight of the step's rest after its last impact (s)
+};
+
+// A contact point at the position level, for the projection after the solve: its separation is
+// base + n·(x_a + R_a anchor_a - (x_b + R_b anchor_b)) (m), the b terms absent against a static
+// shape. For a plane base is -offset; for a pair of bodies it is the separation found at the
+// start of the step, so a body that moved through another within the step is pushed back to the
+// side it came from (the anchors' motion measures how far it went, Catto's "Solver2D" relax).
+struct PositionPoint {
+  std::uint32_t a = 0;           // island-local index
+  std::uint32_t b = kStatic;     // likewise, or kStatic
+  Vec3 anchor_a = Vec3::Zero();  // body frame of a (m)
+  Vec3 anchor_b = Vec3::Zero();  // body frame of b (m)
+  Vec3 normal = Vec3::UnitY();   // unit, world, from b towards a
+  double base = 0.0;             // m
+};
+
+// Solves the island's velocity constraints (warm-started from each point's source), then moves
+// each body's pose by weight × its velocity change and projects the positions out of every
+// PositionPoint still inside (non-linear Gauss-Seidel, Catto, Box2D 2.4 "solve position
+// constraints": it moves no momentum, so it adds no kinetic energy). `solver` holds one
+// SolverBody per body, made from its end state. The corrected states go to `out`.
+void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
+                    std::span<ContactConstraint> points, std::span<const PositionPoint> positions,
+                    const ContactSettings& settings, std::span<BodyState> out);
+
+// Rotates q by the rotation vector `angle` (rad, world frame): exp(angle / 2) q.
+Quat rotated(const Quat& q, const Vec3& angle);
+
+}  // namespace tumble::physics
