@@ -34,6 +34,9 @@ struct ContactSettings {
   // not), and stays above the 0.16 m/s that gravity adds in one 1/60 s step, which PhysX names as
   // the floor for it.
   double restitution_threshold = 0.5;  // m/s
+  // Bodies collide with each other (each body's BodyModel::collides too); false: they only
+  // touch planes, as before contact between bodies existed.
+  bool collide_bodies = true;
 };
 
 // The methods in the order they are listed to users.

@@ -7,6 +7,9 @@
 namespace tumble::physics {
 namespace {
 
+constexpr int kBounceIterations = 100;
+constexpr double kBounceTolerance = 1e-13;
+
 // Relative speed along a direction: of a's point minus b's (m/s).
 [[gnu::always_inline]] inline double speed(const ImpulseDirection& d, const SolverBody& a,
                                            const SolverBody* b) {
@@ -94,8 +97,8 @@ double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint>
       c.tangent_impulse[k] += change;
       largest_change = std::max(largest_change, std::abs(change));
     }
-    const double accumulated =
-        std::max(0.0, c.normal_impulse - c.normal.mass * speed(c.normal, a, b));
+    const double accumulated = std::max(
+        0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + c.speculative_speed));
     const double change = accumulated - c.normal_impulse;
     c.normal_impulse = accumulated;
     push(c.normal, a, b, change);
@@ -255,11 +258,13 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
   if (!any) return;
   const std::vector<SolverBody> inelastic(bodies.begin(), bodies.end());
   std::vector<double> accumulated(points.size(), 0.0);
-  for (int pass = 0; pass < settings.iterations; ++pass) {
+  // A bounce is solved to round-off whatever the settings say: it happens once per impact, and
+  // its velocities decide everything after it (an elastic exchange of velocities, say).
+  for (int pass = 0; pass < std::max(settings.iterations, kBounceIterations); ++pass) {
     const double change = bounce_pass(bodies, points, bouncing, accumulated);
     double largest = 0.0;
     for (const double a : accumulated) largest = std::max(largest, a);
-    if (change <= settings.tolerance * largest) break;
+    if (change <= kBounceTolerance * largest) break;
   }
   if (total_kinetic_energy(bodies) <= energy_before) return;
   // One scale for the whole group: energy a bounce moves from one body to another is kept.

@@ -59,7 +59,11 @@ struct ContactConstraint {
   double friction = 0.0;        // μ of the pair
   double restitution = 0.0;     // e of the pair
   double approach_speed = 0.0;  // normal speed before the solve (m/s; negative approaching)
-  double normal_impulse = 0.0;  // accumulated (N s, >= 0)
+  // A speculative point, apart by s at the start of a step of h, may still approach at s/h: it
+  // touches by the step's end and no earlier (Catto, "Speculative contacts", 2013). 0 for a
+  // point that touches (m/s).
+  double speculative_speed = 0.0;
+  double normal_impulse = 0.0;             // accumulated (N s, >= 0)
   double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ normal (N s)
   // Where the result goes back to for warm starting: a point of one manifold.
   Impulses* source = nullptr;

@@ -18,6 +18,7 @@ struct BodyModel {
   // The box the body is, for contact: half its edge lengths along the body axes (m).
   Vec3 half_size = Vec3::Constant(0.5);
   Material material = {};
+  bool collides = true;  // with other bodies (planes always stop it)
 };
 
 // The model with penalty contact against `planes` added to its laws: a PenaltyContact of the

@@ -1,11 +1,11 @@
 #include "sim/simulation.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cstdio>
 #include <utility>
 
 #include "physics/interpolation.hpp"
-#include "physics/plane_contact_step.hpp"
 
 namespace tumble::sim {
 
@@ -19,10 +19,13 @@ Simulation::Simulation(std::vector<physics::BodyModel> models,
       integrator_(integrator),
       dt_(dt),
       planes_(std::move(planes)),
-      contact_(contact),
-      contacts_(planes_.empty() ? 0 : models_.size()) {
+      contact_(contact) {
   assert(models_.size() == current_.size());
   assert(dt_ > 0.0);
+  const auto colliding = std::count_if(models_.begin(), models_.end(),
+                                       [](const physics::BodyModel& m) { return m.collides; });
+  world_step_ = contact_.method == physics::ContactMethod::impulse &&
+                (!planes_.empty() || (contact_.collide_bodies && colliding >= 2));
 }
 
 namespace {
@@ -63,14 +66,12 @@ void Simulation::step() {
   if (blow_up_) return;
   const double t = time();
   previous_.swap(current_);
-  if (planes_.empty()) {
-    for (std::size_t i = 0; i < models_.size(); ++i) {
-      current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
-    }
+  if (world_step_) {
+    physics::step_world(integrator_, models_, previous_, t, dt_, planes_, contact_, contacts_,
+                        current_);
   } else {
     for (std::size_t i = 0; i < models_.size(); ++i) {
-      current_[i] = physics::step_with_planes(integrator_, models_[i], previous_[i], t, dt_,
-                                              planes_, contact_, contacts_[i]);
+      current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
     }
   }
   ++step_count_;

@@ -9,8 +9,8 @@
 
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
-#include "physics/plane_contact_step.hpp"
 #include "physics/rigid_body.hpp"
+#include "physics/world_step.hpp"
 
 namespace tumble::sim {
 
@@ -34,8 +34,9 @@ std::string blow_up_problem(const physics::BodyState& state);
 
 class Simulation {
  public:
-  // One model and one initial state per body. Bodies do not touch each other; they touch the
-  // planes through impulse contact (physics/plane_contact_step.hpp). With no planes each body
+  // One model and one initial state per body. With impulse contact the bodies touch the planes
+  // and each other (unless contact.collide_bodies is false or a model does not collide) through
+  // the world step (physics/world_step.hpp). With no planes and nothing that collides each body
   // runs its integrator alone, the code that ran before contact existed. Penalty contact is a
   // force law of each body (physics::PenaltyContact) and needs no planes here.
   Simulation(std::vector<physics::BodyModel> models, std::vector<physics::BodyState> initial,
@@ -71,8 +72,9 @@ class Simulation {
   double dt_;
   std::vector<physics::Plane> planes_;
   physics::ContactSettings contact_;
-  // Per body, its manifolds with the planes from step to step (warm starting the contact solve).
-  std::vector<physics::PlaneContacts> contacts_;
+  bool world_step_ = false;  // whether anything can touch: planes, or bodies that collide
+  // The manifolds from step to step (warm starting the contact solve).
+  physics::WorldContacts contacts_;
   std::int64_t step_count_ = 0;
   std::optional<BlowUp> blow_up_;
 };

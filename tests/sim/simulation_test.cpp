@@ -95,7 +95,10 @@ TEST(Simulation, AStepBeyondTheStabilityLimitIsCaughtAtTheStepThatPassesTheBound
   const BodyState start = physics::make_state(model.constants, Vec3::Zero(), Vec3(1.0, 0.0, 0.0),
                                               Quat::Identity(), Vec3::Zero());
   const BodyModel calm{.constants = physics::cube_constants(1.0, 1.0), .forces = {}};
-  Simulation simulation({calm, model}, {start, start}, physics::Integrator::euler, 0.05);
+  // 10 m above the other: bodies collide, and this one is not to be hit.
+  const BodyState above = physics::make_state(calm.constants, Vec3(0.0, 10.0, 0.0), Vec3::Zero(),
+                                              Quat::Identity(), Vec3::Zero());
+  Simulation simulation({calm, model}, {above, start}, physics::Integrator::euler, 0.05);
   simulation.states_at(10.0);
   ASSERT_TRUE(simulation.blow_up().has_value());
   const BlowUp& blow_up = *simulation.blow_up();
