@@ -1,0 +1,23 @@
+// The boxes of a frame as the instanced shaders read them (body.vert, box_shadow.vert): one
+// record per box, uploaded in one buffer per frame and drawn with one call per pass. Free of GL.
+// Internal to src/render/.
+#pragma once
+
+#include <vector>
+
+#include "render/frame.hpp"
+
+namespace tumble::render {
+
+// Floats laid out as the vertex attributes take them; every matrix column-major, as GL wants.
+struct BoxInstance {
+  float model[16];    // the unit cube [-0.5, 0.5]^3 to the box in the world (model_matrix)
+  float rotation[9];  // body to world, turns the face normals
+  float size[3];      // edge lengths along the body axes (m)
+  float albedo[3];    // linear (linear_from_srgb of the box's colour)
+};
+
+// One record per box, in the given order.
+std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes);
+
+}  // namespace tumble::render
