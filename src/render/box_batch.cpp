@@ -86,8 +86,8 @@ BoxBatch& BoxBatch::operator=(BoxBatch&& other) noexcept {
   return *this;
 }
 
-void BoxBatch::upload(const std::vector<Box>& boxes) {
-  const std::vector<BoxInstance> instances = box_instances(boxes);
+void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye) {
+  const std::vector<BoxInstance> instances = box_instances(boxes, eye);
   count_ = static_cast<GLsizei>(instances.size());
   glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_);
   // A fresh store each frame, so the driver need not wait for the last frame's draws.

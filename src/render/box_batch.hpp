@@ -21,8 +21,8 @@ class BoxBatch {
   BoxBatch(const BoxBatch&) = delete;
   BoxBatch& operator=(const BoxBatch&) = delete;
 
-  // Replaces the boxes drawn by draw(), in the order given.
-  void upload(const std::vector<Box>& boxes);
+  // Replaces the boxes drawn by draw(), nearest to `eye` (world frame, m) first.
+  void upload(const std::vector<Box>& boxes, const Vec3& eye);
   // One draw of every uploaded box with the bound program, which reads body.vert's attribute
   // locations (or a subset of them, as box_shadow.vert).
   void draw() const;

@@ -423,7 +423,7 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   const RenderSettings& s = r.settings;
   const FrameSetup frame = r.setup(view);
 
-  r.boxes.upload(view.boxes);
+  r.boxes.upload(view.boxes, view.camera.position);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);
