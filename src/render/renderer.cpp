@@ -350,19 +350,17 @@ void Renderer::Resources::draw_ground(const FrameView& view, const FrameSetup& f
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     glEnable(GL_CULL_FACE);
   };
-  draw_with(ground_program);
-  // Again, with shadows, inside the screen rectangle that holds every box's shadow on the
-  // ground: the same triangles give the same depths, so GL_LEQUAL lets the second pass replace
-  // the first pixel for pixel.
+  // With shadows inside the screen rectangle that holds every box's shadow on the ground, then
+  // without them everywhere: the same triangles give the same depths, so GL_LESS keeps the
+  // second pass off the rectangle, and (depth tested before shading) unshaded there.
   const auto region = shadow_region(view, s, frame.view_projection, frame.light_direction);
   if (s.shadows && region) {
     glEnable(GL_SCISSOR_TEST);
     glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
-    glDepthFunc(GL_LEQUAL);
     draw_with(shadowed_ground_program);
-    glDepthFunc(GL_LESS);
     glDisable(GL_SCISSOR_TEST);
   }
+  draw_with(ground_program);
 }
 
 void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& frame,
@@ -437,12 +435,15 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
 
-  if (s.ground.enabled) r.draw_ground(view, frame);
-  // A quad seen from its front has the camera on the same side as every box (boxes stay
-  // outside planes), so it can hide none of them: opaque, before the boxes.
-  r.draw_quads(view, frame, false);
+  // The opaque surfaces in any order give the same picture (GL_LESS keeps the nearest): the
+  // boxes first, so that the ground and the quads behind them fail the depth test before they
+  // are shaded. A quad seen from its front has the camera on the same side as every box (boxes
+  // stay outside planes), so it can hide none of them: opaque too. Those seen from their back
+  // are blended over everything, last.
   r.use(r.body_program, frame, view.camera);
   r.boxes.draw();
+  if (s.ground.enabled) r.draw_ground(view, frame);
+  r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
 
   if (s.msaa > 1) {
