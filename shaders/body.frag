@@ -4,9 +4,9 @@ in vec3 v_world_normal;
 in vec3 v_local_position;
 in vec3 v_local_normal;
 in vec4 v_light_clip;
+flat in vec3 v_size;    // edge lengths (m)
+flat in vec3 v_albedo;  // linear
 
-uniform vec3 u_albedo;  // linear
-uniform vec3 u_size;    // edge lengths (m)
 out vec4 out_color;
 
 // Per-face tints (+x, -x, +y, -y, +z, -z), mixed into the body colour.
@@ -19,13 +19,13 @@ void main() {
   vec3 a = abs(n);
   int axis = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
   int face = axis * 2 + (n[axis] > 0.0 ? 0 : 1);
-  vec3 albedo = u_albedo * kFaceTints[face];
+  vec3 albedo = v_albedo * kFaceTints[face];
 
   // Distance (m) to the nearest edge of this face, from the two in-face coordinates.
-  vec3 to_edge = 0.5 * u_size - abs(v_local_position);
+  vec3 to_edge = 0.5 * v_size - abs(v_local_position);
   to_edge[axis] = 1e9;
   float d = min(to_edge.x, min(to_edge.y, to_edge.z));
-  float width = 0.025 * min(u_size.x, min(u_size.y, u_size.z));
+  float width = 0.025 * min(v_size.x, min(v_size.y, v_size.z));
   float blur = fwidth(d);
   float edge = 1.0 - smoothstep(width - blur, width + blur, d);
   albedo = mix(albedo, albedo * 0.18, edge);

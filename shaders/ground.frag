@@ -1,7 +1,7 @@
 // The ground: a matte plane of one colour, so its lighting is two constants worked out once per
 // frame on the CPU (lit and in shadow); per pixel only the grid, the shadow and the fade remain.
-// Shadow lookups are the costliest part of a software render, so the ground is drawn without
-// them everywhere, then again with them (RECEIVE_SHADOWS) only where a shadow can fall.
+// Shadow lookups are the costliest part of a software render, so the ground is drawn with them
+// (RECEIVE_SHADOWS) only where a shadow can fall, then without them everywhere else.
 in vec3 v_world_position;
 in vec4 v_light_clip;
 

@@ -1,5 +1,6 @@
 #version 330 core
-// Depth from the key light, for the shadow map.
+// Depth from the key light, for the shadow map: the quads, one draw each (the boxes are in
+// box_shadow.vert).
 layout(location = 0) in vec3 in_position;
 uniform mat4 u_model;
 uniform mat4 u_light_view_projection;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "render/box_batch.hpp"
 #include "render/geometry.hpp"
 #include "render/gl.hpp"
 #include "render/offscreen_context.hpp"
@@ -14,7 +15,6 @@ namespace tumble::render {
 namespace {
 
 using Mat4f = Eigen::Matrix4f;
-using Mat3f = Eigen::Matrix3f;
 using Mat3 = Eigen::Matrix3d;
 
 constexpr int kShadowMapSize = 1024;  // texels per side
@@ -100,9 +100,10 @@ struct Renderer::Resources {
   ShaderProgram body_program;
   ShaderProgram ground_program;
   ShaderProgram shadowed_ground_program;  // the same, receiving shadows
-  ShaderProgram shadow_program;
-  ShaderProgram plane_program;  // quads
-  GLuint cube_vao = 0, cube_vbo = 0, cube_ebo = 0;
+  ShaderProgram shadow_program;           // quads
+  ShaderProgram box_shadow_program;       // boxes, instanced
+  ShaderProgram plane_program;            // quads
+  BoxBatch boxes;                         // every box of the frame, one instanced draw per pass
   GLuint ground_vao = 0, ground_vbo = 0;
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
@@ -110,11 +111,10 @@ struct Renderer::Resources {
 
   ~Resources() {
     if (!context) return;
-    glDeleteVertexArrays(1, &cube_vao);
     glDeleteVertexArrays(1, &ground_vao);
     glDeleteVertexArrays(1, &quad_vao);
-    const GLuint buffers[] = {cube_vbo, cube_ebo, ground_vbo, quad_vbo};
-    glDeleteBuffers(4, buffers);
+    const GLuint buffers[] = {ground_vbo, quad_vbo};
+    glDeleteBuffers(2, buffers);
     glDeleteFramebuffers(1, &shadow_fbo);
     glDeleteFramebuffers(1, &msaa_fbo);
     glDeleteTextures(1, &shadow_texture);
@@ -128,7 +128,6 @@ struct Renderer::Resources {
   // Binds `program` with the uniforms every lit shader shares.
   void use(const ShaderProgram& program, const FrameSetup& frame, const Camera& camera);
   void draw_ground(const FrameView& view, const FrameSetup& frame);
-  void draw_boxes(const std::vector<Box>& boxes, const ShaderProgram& program, bool lit);
   void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
   void read_pixels(io::Image& out) const;
 };
@@ -150,32 +149,14 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
   if (!shadowed_ground_program.valid()) return error;
   shadow_program = ShaderProgram::build(shader_directory, {"shadow.vert"}, {"shadow.frag"}, error);
   if (!shadow_program.valid()) return error;
+  box_shadow_program =
+      ShaderProgram::build(shader_directory, {"box_shadow.vert"}, {"shadow.frag"}, error);
+  if (!box_shadow_program.valid()) return error;
   plane_program = ShaderProgram::build(shader_directory, {"plane.vert"},
                                        {"lighting.glsl", "plane.frag"}, error);
   if (!plane_program.valid()) return error;
 
-  // Cube: positions and normals interleaved, two triangles per face.
-  const std::vector<CubeVertex> vertices = cube_vertices();
-  std::vector<GLushort> indices;
-  for (GLushort face = 0; face < 6; ++face) {
-    const GLushort base = face * 4;
-    for (const GLushort corner : {0, 1, 2, 0, 2, 3}) indices.push_back(base + corner);
-  }
-  glGenVertexArrays(1, &cube_vao);
-  glBindVertexArray(cube_vao);
-  glGenBuffers(1, &cube_vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, cube_vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(CubeVertex)),
-               vertices.data(), GL_STATIC_DRAW);
-  glGenBuffers(1, &cube_ebo);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, cube_ebo);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLushort)),
-               indices.data(), GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex), nullptr);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex),
-                        reinterpret_cast<const void*>(offsetof(CubeVertex, normal)));
-  glEnableVertexAttribArray(1);
+  boxes = BoxBatch::create();
 
   // Ground: one square as a triangle strip.
   const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
@@ -249,23 +230,6 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
   return {};
 }
 
-void Renderer::Resources::draw_boxes(const std::vector<Box>& boxes, const ShaderProgram& program,
-                                     bool lit) {
-  glBindVertexArray(cube_vao);
-  const GLint model_location = program.uniform("u_model");
-  for (const Box& box : boxes) {
-    const Mat4 model = model_matrix(box);
-    set_matrix(model_location, model);
-    if (lit) {
-      const Mat3f normal_matrix = box.orientation.normalized().toRotationMatrix().cast<float>();
-      glUniformMatrix3fv(program.uniform("u_normal_matrix"), 1, GL_FALSE, normal_matrix.data());
-      set_vector(program.uniform("u_size"), box.size.cast<float>());
-      set_vector(program.uniform("u_albedo"), linear_from_srgb(box.color));
-    }
-    glDrawElements(GL_TRIANGLES, 36, GL_UNSIGNED_SHORT, nullptr);
-  }
-}
-
 Renderer::Renderer(std::unique_ptr<Resources> resources) : resources_(std::move(resources)) {}
 Renderer::~Renderer() = default;
 
@@ -330,12 +294,14 @@ void Renderer::Resources::draw_shadow_map(const FrameView& view, const FrameSetu
   glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
   glViewport(0, 0, kShadowMapSize, kShadowMapSize);
   glClear(GL_DEPTH_BUFFER_BIT);
-  glUseProgram(shadow_program.id());
-  set_matrix(shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
-  draw_boxes(view.boxes, shadow_program, false);
+  glUseProgram(box_shadow_program.id());
+  set_matrix(box_shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
+  boxes.draw();
   if (!view.quads.empty()) {
+    glUseProgram(shadow_program.id());
+    set_matrix(shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
     glDisable(GL_CULL_FACE);  // a quad casts whichever side the light falls on
     glBindVertexArray(quad_vao);
     for (const Quad& quad : view.quads) {
@@ -384,19 +350,17 @@ void Renderer::Resources::draw_ground(const FrameView& view, const FrameSetup& f
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
     glEnable(GL_CULL_FACE);
   };
-  draw_with(ground_program);
-  // Again, with shadows, inside the screen rectangle that holds every box's shadow on the
-  // ground: the same triangles give the same depths, so GL_LEQUAL lets the second pass replace
-  // the first pixel for pixel.
+  // With shadows inside the screen rectangle that holds every box's shadow on the ground, then
+  // without them everywhere: the same triangles give the same depths, so GL_LESS keeps the
+  // second pass off the rectangle, and (depth tested before shading) unshaded there.
   const auto region = shadow_region(view, s, frame.view_projection, frame.light_direction);
   if (s.shadows && region) {
     glEnable(GL_SCISSOR_TEST);
     glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
-    glDepthFunc(GL_LEQUAL);
     draw_with(shadowed_ground_program);
-    glDepthFunc(GL_LESS);
     glDisable(GL_SCISSOR_TEST);
   }
+  draw_with(ground_program);
 }
 
 void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& frame,
@@ -457,6 +421,7 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   const RenderSettings& s = r.settings;
   const FrameSetup frame = r.setup(view);
 
+  r.boxes.upload(view.boxes, view.camera.position);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);
@@ -470,12 +435,15 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
 
-  if (s.ground.enabled) r.draw_ground(view, frame);
-  // A quad seen from its front has the camera on the same side as every box (boxes stay
-  // outside planes), so it can hide none of them: opaque, before the boxes.
-  r.draw_quads(view, frame, false);
+  // The opaque surfaces in any order give the same picture (GL_LESS keeps the nearest): the
+  // boxes first, so that the ground and the quads behind them fail the depth test before they
+  // are shaded. A quad seen from its front has the camera on the same side as every box (boxes
+  // stay outside planes), so it can hide none of them: opaque too. Those seen from their back
+  // are blended over everything, last.
   r.use(r.body_program, frame, view.camera);
-  r.draw_boxes(view.boxes, r.body_program, true);
+  r.boxes.draw();
+  if (s.ground.enabled) r.draw_ground(view, frame);
+  r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
 
   if (s.msaa > 1) {

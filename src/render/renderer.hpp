@@ -1,6 +1,6 @@
-// Draws a FrameView into an image: shadow pass from the key light, then the ground, the quads
-// seen from their front, the boxes and last the quads seen from their back (translucent) into a
-// multisampled framebuffer, resolved into the off-screen context's buffer.
+// Draws a FrameView into an image: shadow pass from the key light, then the boxes (one instanced
+// draw), the ground, the quads seen from their front and last the quads seen from their back
+// (translucent) into a multisampled framebuffer, resolved into the off-screen context's buffer.
 #pragma once
 
 #include <memory>

@@ -1,0 +1,35 @@
+// Every box of a frame as one instanced draw: the unit cube's vertices and indices, set up once,
+// and one record per box (box_instances.hpp) uploaded in one buffer per frame. Both passes that
+// draw boxes (the shadow map and the lit boxes) draw the same upload. Internal to src/render/;
+// needs a current GL context from create() to destruction.
+#pragma once
+
+#include <vector>
+
+#include "render/frame.hpp"
+#include "render/gl.hpp"
+
+namespace tumble::render {
+
+class BoxBatch {
+ public:
+  BoxBatch() = default;  // no GL objects: for a renderer whose set-up failed
+  static BoxBatch create();
+  ~BoxBatch();
+  BoxBatch(BoxBatch&& other) noexcept;
+  BoxBatch& operator=(BoxBatch&& other) noexcept;
+  BoxBatch(const BoxBatch&) = delete;
+  BoxBatch& operator=(const BoxBatch&) = delete;
+
+  // Replaces the boxes drawn by draw(), nearest to `eye` (world frame, m) first.
+  void upload(const std::vector<Box>& boxes, const Vec3& eye);
+  // One draw of every uploaded box with the bound program, which reads body.vert's attribute
+  // locations (or a subset of them, as box_shadow.vert).
+  void draw() const;
+
+ private:
+  GLuint vao_ = 0, cube_vbo_ = 0, cube_ebo_ = 0, instance_vbo_ = 0;
+  GLsizei count_ = 0;  // boxes uploaded
+};
+
+}  // namespace tumble::render

@@ -1,0 +1,27 @@
+// The boxes of a frame as the instanced shaders read them (body.vert, box_shadow.vert): one
+// record per box, uploaded in one buffer per frame and drawn with one call per pass. Free of GL.
+// Internal to src/render/.
+#pragma once
+
+#include <vector>
+
+#include "render/frame.hpp"
+
+namespace tumble::render {
+
+// Floats laid out as the vertex attributes take them; every matrix column-major, as GL wants.
+struct BoxInstance {
+  float model[16];    // the unit cube [-0.5, 0.5]^3 to the box in the world (model_matrix)
+  float rotation[9];  // body to world, turns the face normals
+  float size[3];      // edge lengths along the body axes (m)
+  float albedo[3];    // linear (linear_from_srgb of the box's colour)
+};
+
+// One record per box, nearest to `eye` (world frame, m) first, ties in the given order. Drawn so,
+// most of a box hidden behind nearer ones fails the depth test before it is shaded (llvmpipe
+// tests depth before shading when the shader writes no depth and discards nothing). The picture
+// is the same in any order (opaque boxes, GL_LESS) but where faces of two boxes meet at exactly
+// equal depth.
+std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye);
+
+}  // namespace tumble::render
