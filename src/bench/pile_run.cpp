@@ -1,0 +1,27 @@
+#include "bench/pile_run.hpp"
+
+#include <algorithm>
+
+namespace tumble::bench {
+
+double median_step_ms(const PileRun& run) {
+  if (run.step_ms.empty()) return 0.0;
+  std::vector<double> sorted = run.step_ms;
+  const std::size_t middle = sorted.size() / 2;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(middle),
+                   sorted.end());
+  if (sorted.size() % 2 == 1) return sorted[middle];
+  const double below = *std::max_element(sorted.begin(), sorted.begin() + middle);
+  return 0.5 * (below + sorted[middle]);  // an even count: the mean of the two middle values
+}
+
+std::size_t peak_contact_step(const PileRun& run) {
+  const auto peak = std::max_element(run.contacts.begin(), run.contacts.end());  // the first
+  return peak == run.contacts.end() ? 0 : static_cast<std::size_t>(peak - run.contacts.begin());
+}
+
+double ms_at_peak_contacts(const PileRun& run) {
+  return run.step_ms.empty() ? 0.0 : run.step_ms.at(peak_contact_step(run));
+}
+
+}  // namespace tumble::bench
