@@ -40,6 +40,8 @@ std::string speed_at_10_s(const PileRun& run, double dt) {
 
 const std::vector<Row> kRows = {
     {"median ms/step", [](const PileRun& r, double) { return fixed(median_step_ms(r), 2); }},
+    {"median cpu ms/step",
+     [](const PileRun& r, double) { return fixed(median_step_cpu_ms(r), 2); }},
     {"ms/step at peak contacts",
      [](const PileRun& r, double) { return fixed(ms_at_peak_contacts(r), 2); }},
     {"peak contacts",

@@ -4,15 +4,26 @@
 
 namespace tumble::bench {
 
-double median_step_ms(const PileRun& run) {
-  if (run.step_ms.empty()) return 0.0;
-  std::vector<double> sorted = run.step_ms;
+namespace {
+
+double median(std::vector<double> sorted) {
+  if (sorted.empty()) return 0.0;
   const std::size_t middle = sorted.size() / 2;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(middle),
                    sorted.end());
   if (sorted.size() % 2 == 1) return sorted[middle];
   const double below = *std::max_element(sorted.begin(), sorted.begin() + middle);
   return 0.5 * (below + sorted[middle]);  // an even count: the mean of the two middle values
+}
+
+}  // namespace
+
+double median_step_ms(const PileRun& run) {
+  return median(run.step_ms);
+}
+
+double median_step_cpu_ms(const PileRun& run) {
+  return median(run.step_cpu_ms);
 }
 
 std::size_t peak_contact_step(const PileRun& run) {

@@ -11,7 +11,10 @@
 namespace tumble::bench {
 
 struct PileRun {
-  std::vector<double> step_ms;         // wall time of each step (ms, steady clock)
+  std::vector<double> step_ms;  // wall time of each step (ms, steady clock)
+  // Processor time of each step (ms, std::clock): on a machine shared with other work it counts
+  // only the time the step ran, where the wall time also counts the time it waited for a core.
+  std::vector<double> step_cpu_ms;
   std::vector<int> contacts;           // contact points after each step, over all pairs
   std::vector<double> depth_m;         // deepest contact point after each step (m; 0 if none)
   std::vector<double> top_speed;       // largest box speed after each step (m/s)
@@ -24,6 +27,8 @@ struct PileRun {
 
 // The median of the steps' wall times (ms); 0 for a run of no steps.
 double median_step_ms(const PileRun& run);
+// The median of the steps' processor times (ms); 0 for a run of no steps.
+double median_step_cpu_ms(const PileRun& run);
 // The index of the first step with the most contacts (0 for a run of no steps).
 std::size_t peak_contact_step(const PileRun& run);
 // The wall time of that step (ms): the cost when the most pairs touch.

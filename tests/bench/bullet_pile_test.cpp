@@ -28,6 +28,7 @@ TEST_F(BulletPile, NamesItsVersionAndPrecision) {
 
 TEST_F(BulletPile, MeasuresEveryStep) {
   EXPECT_EQ(run_->step_ms.size(), 240u);
+  EXPECT_EQ(run_->step_cpu_ms.size(), 240u);
   EXPECT_EQ(run_->contacts.size(), 240u);
   EXPECT_EQ(run_->depth_m.size(), 240u);
   EXPECT_EQ(run_->top_speed.size(), 240u);

@@ -13,6 +13,8 @@ TEST(PileRun, MedianOfAnOddAndAnEvenCount) {
   EXPECT_EQ(median_step_ms(run), 3.0);
   run.step_ms = {4.0, 1.0, 3.0, 2.0};
   EXPECT_EQ(median_step_ms(run), 2.5);
+  run.step_cpu_ms = {0.5, 0.25, 9.0};
+  EXPECT_EQ(median_step_cpu_ms(run), 0.5);
 }
 
 TEST(PileRun, PeakContactsIsTheFirstStepWithTheMost) {
