@@ -1,6 +1,7 @@
 #include "bench/pile_run.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace tumble::bench {
 
@@ -32,7 +33,13 @@ std::size_t peak_contact_step(const PileRun& run) {
 }
 
 double ms_at_peak_contacts(const PileRun& run) {
-  return run.step_ms.empty() ? 0.0 : run.step_ms.at(peak_contact_step(run));
+  if (run.step_ms.empty()) return 0.0;
+  const int peak = run.contacts.at(peak_contact_step(run));
+  std::vector<double> near_peak;
+  for (std::size_t n = 0; n < run.step_ms.size(); ++n) {
+    if (run.contacts.at(n) >= 0.95 * peak) near_peak.push_back(run.step_ms[n]);
+  }
+  return median(std::move(near_peak));
 }
 
 }  // namespace tumble::bench

@@ -24,7 +24,15 @@ TEST(PileRun, PeakContactsIsTheFirstStepWithTheMost) {
   run.contacts = {0, 7, 9, 9, 4};
   run.step_ms = {1.0, 2.0, 3.0, 4.0, 5.0};
   EXPECT_EQ(peak_contact_step(run), 2u);
-  EXPECT_EQ(ms_at_peak_contacts(run), 3.0);
+  EXPECT_EQ(ms_at_peak_contacts(run), 3.5);  // the two steps of 9
+}
+
+// 96 and 95 are within 5% of 100, 94 is not: the median of 7, 8 and 30 ms.
+TEST(PileRun, MsAtPeakIsTheMedianOfTheStepsNearThePeak) {
+  PileRun run;
+  run.contacts = {10, 94, 95, 100, 96};
+  run.step_ms = {1.0, 2.0, 7.0, 30.0, 8.0};
+  EXPECT_EQ(ms_at_peak_contacts(run), 8.0);
 }
 
 }  // namespace
