@@ -1,0 +1,65 @@
+// The pile of `tumble bench contact` (issue 12): boxes of mixed sizes poured from a column into a
+// walled bin. Plain data, the same for every engine that runs it (tumble, and Bullet as a peer),
+// and a pure function of (body count, seed), so two runs and two engines start from equal bits.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "physics/rigid_body.hpp"
+#include "physics/shapes.hpp"
+
+namespace tumble::bench {
+
+// One box at the start of the pour.
+struct PileBox {
+  physics::Vec3 size;              // edge lengths along the body axes (m)
+  double mass = 0.0;               // kg
+  physics::Vec3 position;          // centre of mass, world frame (m)
+  physics::Quat orientation;       // body-to-world rotation, unit, (w, x, y, z)
+  physics::Vec3 velocity;          // world frame (m/s)
+  physics::Vec3 angular_velocity;  // world frame (rad/s)
+};
+
+struct Pile {
+  std::vector<PileBox> boxes;
+  physics::Material box_material;  // every box's surface
+  // The floor (first), then the walls at x = +-half_width and z = +-half_width, normals pointing
+  // into the bin. Each plane's point is normal * offset.
+  std::vector<physics::Plane> planes;
+  double bin_half_width = 0.0;  // m: the walls' distance from the bin's vertical axis
+  physics::Vec3 gravity;        // world frame (m/s²)
+  double dt = 0.0;              // s per step
+  int steps = 0;                // steps in the run
+  // One line for people: the count, seed, size range, density, materials, bin and step.
+  std::string summary;
+};
+
+// The pile of `bodies` boxes (>= 0) drawn from `seed`, run for `seconds` (s, rounded to whole
+// steps of 1/60 s).
+Pile make_pile(int bodies, std::uint64_t seed, double seconds = 20.0);
+
+// Whether a box centre (world frame, m) is still in the bin: |x|, |z| <= half width and y >= 0.
+bool inside_bin(const Pile& pile, const physics::Vec3& centre);
+
+// The radius of a box's bounding sphere (m): half its diagonal.
+double bounding_radius(const PileBox& box);
+
+// splitmix64 (Steele, Lea & Flood, "Fast splittable pseudorandom number generators", OOPSLA
+// 2014; constants as in Vigna's reference code): one 64-bit state, passes BigCrush, and gives
+// the same numbers on every compiler, which std distributions do not promise.
+class SplitMix64 {
+ public:
+  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
+  std::uint64_t next();
+  // Uniform in [0, 1): the top 53 bits as a double's mantissa.
+  double uniform();
+  // Uniform in [low, high).
+  double uniform(double low, double high) { return low + (high - low) * uniform(); }
+
+ private:
+  std::uint64_t state_;
+};
+
+}  // namespace tumble::bench

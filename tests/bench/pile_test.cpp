@@ -1,0 +1,135 @@
+// The pile of `contact_bench`: a pure function of (count, seed), and a start that no engine can
+// object to (no two boxes touching, every box inside the bin, the materials and step it states).
+#include "bench/pile.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace tumble::bench {
+namespace {
+
+using physics::Vec3;
+
+// The reference output of splitmix64 from state 0 (Vigna's splitmix64.c).
+TEST(Pile, SplitMixGivesTheReferenceSequence) {
+  SplitMix64 random(0);
+  EXPECT_EQ(random.next(), 0xe220a8397b1dcdafull);
+  EXPECT_EQ(random.next(), 0x6e789e6aa1b965f4ull);
+}
+
+TEST(Pile, UniformStaysInItsHalfOpenRange) {
+  SplitMix64 random(7);
+  for (int n = 0; n < 100000; ++n) {
+    const double u = random.uniform(0.2, 0.6);
+    ASSERT_GE(u, 0.2);
+    ASSERT_LT(u, 0.6);
+  }
+}
+
+TEST(Pile, NoTwoStartBoxesOverlap) {
+  for (const std::uint64_t seed : {1ull, 2ull, 12345ull}) {
+    const Pile pile = make_pile(1000, seed);
+    for (std::size_t i = 0; i < pile.boxes.size(); ++i) {
+      for (std::size_t j = i + 1; j < pile.boxes.size(); ++j) {
+        const double gap = (pile.boxes[i].position - pile.boxes[j].position).norm() -
+                           bounding_radius(pile.boxes[i]) - bounding_radius(pile.boxes[j]);
+        ASSERT_GT(gap, 0.0) << "boxes " << i << " and " << j << ", seed " << seed;
+      }
+    }
+  }
+}
+
+// Whole bounding spheres inside the walls and above the floor, not only the centres.
+TEST(Pile, EveryStartBoxIsInsideTheBin) {
+  const Pile pile = make_pile(1000, 1);
+  for (const PileBox& box : pile.boxes) {
+    EXPECT_TRUE(inside_bin(pile, box.position));
+    for (const physics::Plane& plane : pile.planes) {
+      EXPECT_GT(separation(plane, box.position), bounding_radius(box));
+    }
+  }
+}
+
+TEST(Pile, BoxesHaveTheStatedSizesMassesAndMotion) {
+  const Pile pile = make_pile(1000, 1);
+  ASSERT_EQ(pile.boxes.size(), 1000u);
+  for (const PileBox& box : pile.boxes) {
+    EXPECT_GE(box.size.minCoeff(), 0.2);
+    EXPECT_LT(box.size.maxCoeff(), 0.6);
+    EXPECT_NEAR(box.mass, 500.0 * box.size.prod(), 1e-12);  // kg at 500 kg/m³
+    EXPECT_NEAR(box.orientation.norm(), 1.0, 1e-15);
+    EXPECT_LE(box.velocity.cwiseAbs().maxCoeff(), 0.25);
+    EXPECT_LE(box.angular_velocity.cwiseAbs().maxCoeff(), 1.0);
+  }
+  // Mixed, not all alike: the sizes spread over most of their range.
+  double smallest = 1.0, largest = 0.0;
+  for (const PileBox& box : pile.boxes) {
+    smallest = std::min(smallest, box.size.minCoeff());
+    largest = std::max(largest, box.size.maxCoeff());
+  }
+  EXPECT_LT(smallest, 0.21);
+  EXPECT_GT(largest, 0.59);
+}
+
+TEST(Pile, TheBinIsAFloorAndFourWallsThreeMetresOut) {
+  const Pile pile = make_pile(10, 1);
+  ASSERT_EQ(pile.planes.size(), 5u);
+  EXPECT_EQ(pile.planes[0].normal, Vec3::UnitY());
+  EXPECT_EQ(pile.planes[0].offset, 0.0);
+  for (std::size_t n = 1; n < pile.planes.size(); ++n) {
+    const physics::Plane& wall = pile.planes[n];
+    EXPECT_EQ(wall.normal.y(), 0.0);
+    EXPECT_EQ(wall.offset, -3.0);                             // 3 m from the axis
+    EXPECT_NEAR(separation(wall, Vec3::Zero()), 3.0, 1e-15);  // facing into the bin
+  }
+  for (const physics::Plane& plane : pile.planes) {
+    EXPECT_EQ(plane.material.restitution, 0.1);
+    EXPECT_EQ(plane.material.friction, 0.5);
+  }
+  EXPECT_EQ(pile.box_material.restitution, 0.1);
+  EXPECT_EQ(pile.box_material.friction, 0.5);
+  EXPECT_EQ(pile.gravity, Vec3(0.0, -9.81, 0.0));
+}
+
+TEST(Pile, RunsTwentySecondsInStepsOfOneSixtieth) {
+  const Pile pile = make_pile(10, 1);
+  EXPECT_EQ(pile.dt, 1.0 / 60.0);
+  EXPECT_EQ(pile.steps, 1200);
+  EXPECT_EQ(make_pile(10, 1, 4.0).steps, 240);
+}
+
+TEST(Pile, TheSameCountAndSeedGiveTheSameBits) {
+  const Pile a = make_pile(200, 9), b = make_pile(200, 9), c = make_pile(200, 10);
+  bool differs = false;
+  for (std::size_t n = 0; n < a.boxes.size(); ++n) {
+    EXPECT_EQ(a.boxes[n].size, b.boxes[n].size);
+    EXPECT_EQ(a.boxes[n].position, b.boxes[n].position);
+    EXPECT_EQ(a.boxes[n].orientation.coeffs(), b.boxes[n].orientation.coeffs());
+    EXPECT_EQ(a.boxes[n].velocity, b.boxes[n].velocity);
+    EXPECT_EQ(a.boxes[n].angular_velocity, b.boxes[n].angular_velocity);
+    differs = differs || a.boxes[n].size != c.boxes[n].size;
+  }
+  EXPECT_TRUE(differs);
+}
+
+// Fewer boxes are a prefix of more: the pile grows by adding boxes on top, so a small test pile
+// is the bottom of the benchmark's.
+TEST(Pile, AFewerBoxPileIsThePrefixOfALargerOne) {
+  const Pile small = make_pile(60, 1), large = make_pile(1000, 1);
+  for (std::size_t n = 0; n < small.boxes.size(); ++n) {
+    EXPECT_EQ(small.boxes[n].size, large.boxes[n].size);
+    EXPECT_EQ(small.boxes[n].position, large.boxes[n].position);
+  }
+}
+
+TEST(Pile, InsideBinIsTheWallsAndTheFloor) {
+  const Pile pile = make_pile(0, 1);
+  EXPECT_TRUE(inside_bin(pile, Vec3(3.0, 0.0, -3.0)));
+  EXPECT_FALSE(inside_bin(pile, Vec3(3.01, 1.0, 0.0)));
+  EXPECT_FALSE(inside_bin(pile, Vec3(0.0, 1.0, -3.01)));
+  EXPECT_FALSE(inside_bin(pile, Vec3(0.0, -0.01, 0.0)));
+}
+
+}  // namespace
+}  // namespace tumble::bench
