@@ -48,8 +48,14 @@ const char* contact_method_name(ContactMethod method);
 
 // What the last solve of a contact point accumulated, kept for warm starting the next step.
 struct Impulses {
-  double normal = 0.0;          // N s, >= 0
+  double normal = 0.0;  // N s, >= 0
+};
+
+// What the last solve of a manifold's friction accumulated (physics/contact_solver.hpp: friction
+// acts on a manifold as a whole, at its centre), kept for warm starting the next step.
+struct PatchImpulses {
   Vec3 tangent = Vec3::Zero();  // N s, world frame, normal to the contact normal
+  double twist = 0.0;           // about the normal (N m s)
 };
 
 // A corner of a box touching (or about to touch) a plane.
@@ -67,6 +73,7 @@ inline constexpr int kMaxManifoldPoints = 4;
 struct Manifold {
   int count = 0;
   std::array<ContactPoint, kMaxManifoldPoints> points;
+  PatchImpulses friction;
 };
 
 // The separation from a plane (m, negative inside) of each corner of a box, indexed by corner

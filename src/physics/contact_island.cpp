@@ -66,10 +66,24 @@ Quat rotated(const Quat& q, const Vec3& angle) {
   return Quat(Eigen::AngleAxisd(size, angle / size)) * q;
 }
 
+PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
+  PatchShape out;
+  if (arms.empty()) return out;
+  for (const Vec3& arm : arms) out.centre_arm += arm;
+  out.centre_arm /= static_cast<double>(arms.size());
+  for (const Vec3& arm : arms) {
+    const Vec3 offset = arm - out.centre_arm;
+    out.twist_arm += (offset - offset.dot(normal) * normal).norm();
+  }
+  out.twist_arm /= static_cast<double>(arms.size());
+  return out;
+}
+
 void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
-                    std::span<ContactConstraint> points, std::span<const PositionPoint> positions,
-                    const ContactSettings& settings, std::span<BodyState> out) {
-  solve_contacts(solver, points,
+                    std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
+                    std::span<const PositionPoint> positions, const ContactSettings& settings,
+                    std::span<BodyState> out) {
+  solve_contacts(solver, points, patches,
                  {.iterations = kContactIterations,
                   .tolerance = kRestingTolerance,
                   .restitution_threshold = settings.restitution_threshold,

@@ -57,52 +57,93 @@ ImpulseDirection direction(const Vec3& along, const SolverBody& a, const Vec3& a
 
 ContactConstraint constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
                              std::uint32_t b, const SolverBody* body_b, const Vec3& arm_b,
-                             const Vec3& normal, const Vec3 (&tangents)[2],
-                             const Material& material) {
+                             const Vec3& normal, const Material& material) {
   ContactConstraint c{
       .a = a,
       .b = b,
       .normal = direction(normal, body_a, arm_a, body_b, arm_b),
-      .tangent = {direction(tangents[0], body_a, arm_a, body_b, arm_b),
-                  direction(tangents[1], body_a, arm_a, body_b, arm_b)},
-      .friction = material.friction,
       .restitution = material.restitution,
   };
   c.approach_speed = speed(c.normal, body_a, body_b);
   return c;
 }
 
+// The turning direction about the unit `axis`: no linear part, the same moment on both bodies.
+ImpulseDirection twist_direction(const Vec3& axis, const SolverBody& a, const SolverBody* b) {
+  const Vec3 turn_a = a.inverse_inertia * axis;
+  double inverse = axis.dot(turn_a);
+  Vec3 moment_b = Vec3::Zero(), turn_b = Vec3::Zero();
+  if (b) {
+    moment_b = axis;
+    turn_b = b->inverse_inertia * axis;
+    inverse += axis.dot(turn_b);
+  }
+  return {.linear = Vec3::Zero(),
+          .moment_a = axis,
+          .turn_a = turn_a,
+          .moment_b = moment_b,
+          .turn_b = turn_b,
+          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
+}
+
 SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
   return c.b == kStatic ? nullptr : &bodies[c.b];
 }
 
-// One pass of friction then normal impulses over every point (normal last: it matters most).
-// Returns the largest change of an accumulated impulse (N s).
-double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points) {
+// The normal row of one point; returns the change of its impulse (N s).
+double solve_normal(std::span<SolverBody> bodies, ContactConstraint& c) {
+  SolverBody& a = bodies[c.a];
+  SolverBody* b = second(bodies, c);
+  const double accumulated = std::max(
+      0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + c.speculative_speed));
+  const double change = accumulated - c.normal_impulse;
+  c.normal_impulse = accumulated;
+  push(c.normal, a, b, change);
+  return change;
+}
+
+// The friction rows of one patch, within μ times its points' normal impulse; returns the largest
+// change (N s, or N m s for the twist).
+double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
+                      FrictionPatch& f) {
+  SolverBody& a = bodies[f.a];
+  SolverBody* b = f.b == kStatic ? nullptr : &bodies[f.b];
+  double normal = 0.0;
+  for (std::uint32_t i = f.first; i < f.first + f.count; ++i) normal += points[i].normal_impulse;
+  // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
+  double wanted[2];
+  for (int k = 0; k < 2; ++k) {
+    wanted[k] = f.tangent_impulse[k] - f.tangent[k].mass * speed(f.tangent[k], a, b);
+  }
+  const double limit = f.friction * normal;
+  const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
+  const double scale = size_squared > limit * limit ? limit / std::sqrt(size_squared) : 1.0;
+  double largest = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    const double change = wanted[k] * scale - f.tangent_impulse[k];
+    push(f.tangent[k], a, b, change);
+    f.tangent_impulse[k] += change;
+    largest = std::max(largest, std::abs(change));
+  }
+  const double twist_limit = limit * f.twist_arm;
+  const double twist =
+      std::clamp(f.twist_impulse - f.twist.mass * speed(f.twist, a, b), -twist_limit, twist_limit);
+  const double change = twist - f.twist_impulse;
+  push(f.twist, a, b, change);
+  f.twist_impulse = twist;
+  return std::max(largest, std::abs(change));
+}
+
+// One pass over every patch: its points' normal rows, then its friction. Returns the largest
+// change of an accumulated impulse.
+double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
+                      std::span<FrictionPatch> patches) {
   double largest_change = 0.0;
-  for (ContactConstraint& c : points) {
-    SolverBody& a = bodies[c.a];
-    SolverBody* b = second(bodies, c);
-    // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
-    double wanted[2];
-    for (int k = 0; k < 2; ++k) {
-      wanted[k] = c.tangent_impulse[k] - c.tangent[k].mass * speed(c.tangent[k], a, b);
+  for (FrictionPatch& f : patches) {
+    for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
+      largest_change = std::max(largest_change, std::abs(solve_normal(bodies, points[i])));
     }
-    const double limit = c.friction * c.normal_impulse;
-    const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
-    const double scale = size_squared > limit * limit ? limit / std::sqrt(size_squared) : 1.0;
-    for (int k = 0; k < 2; ++k) {
-      const double change = wanted[k] * scale - c.tangent_impulse[k];
-      push(c.tangent[k], a, b, change);
-      c.tangent_impulse[k] += change;
-      largest_change = std::max(largest_change, std::abs(change));
-    }
-    const double accumulated = std::max(
-        0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + c.speculative_speed));
-    const double change = accumulated - c.normal_impulse;
-    c.normal_impulse = accumulated;
-    push(c.normal, a, b, change);
-    largest_change = std::max(largest_change, std::abs(change));
+    largest_change = std::max(largest_change, solve_friction(bodies, points, f));
   }
   return largest_change;
 }
@@ -199,20 +240,35 @@ void tangent_basis(const Vec3& normal, Vec3 (&out)[2]) {
 }
 
 ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
-                                  const Vec3& normal, const Vec3 (&tangents)[2],
-                                  const Material& material) {
-  return constraint(a, body_a, arm_a, kStatic, nullptr, Vec3::Zero(), normal, tangents, material);
+                                  const Vec3& normal, const Material& material) {
+  return constraint(a, body_a, arm_a, kStatic, nullptr, Vec3::Zero(), normal, material);
 }
 
 ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
                                   std::uint32_t b, const SolverBody& body_b, const Vec3& arm_b,
-                                  const Vec3& normal, const Vec3 (&tangents)[2],
-                                  const Material& material) {
-  return constraint(a, body_a, arm_a, b, &body_b, arm_b, normal, tangents, material);
+                                  const Vec3& normal, const Material& material) {
+  return constraint(a, body_a, arm_a, b, &body_b, arm_b, normal, material);
+}
+
+FrictionPatch make_patch(std::uint32_t a, const SolverBody& body_a, const Vec3& centre_arm_a,
+                         std::uint32_t b, const SolverBody* body_b, const Vec3& centre_arm_b,
+                         const Vec3& normal, double friction, double twist_arm, std::uint32_t first,
+                         std::uint32_t count) {
+  Vec3 tangents[2];
+  tangent_basis(normal, tangents);
+  return {.a = a,
+          .b = b,
+          .tangent = {direction(tangents[0], body_a, centre_arm_a, body_b, centre_arm_b),
+                      direction(tangents[1], body_a, centre_arm_a, body_b, centre_arm_b)},
+          .twist = twist_direction(normal, body_a, body_b),
+          .friction = friction,
+          .twist_arm = twist_arm,
+          .first = first,
+          .count = count};
 }
 
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
-                    const SolveSettings& settings) {
+                    std::span<FrictionPatch> patches, const SolveSettings& settings) {
   // Which points may bounce is known before the solve; the energy guard needs the energy then.
   const auto may_bounce = [&](const ContactConstraint& c) {
     return c.restitution > 0.0 && c.approach_speed < -settings.restitution_threshold;
@@ -223,25 +279,33 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
   if (settings.warm_start) {
     for (ContactConstraint& c : points) {
       if (!c.source) continue;
-      SolverBody& a = bodies[c.a];
-      SolverBody* b = second(bodies, c);
       c.normal_impulse = c.source->normal;
-      push(c.normal, a, b, c.normal_impulse);
+      push(c.normal, bodies[c.a], second(bodies, c), c.normal_impulse);
+    }
+    for (FrictionPatch& f : patches) {
+      if (!f.source) continue;
+      SolverBody& a = bodies[f.a];
+      SolverBody* b = f.b == kStatic ? nullptr : &bodies[f.b];
       for (int k = 0; k < 2; ++k) {
-        c.tangent_impulse[k] = c.source->tangent.dot(c.tangent[k].linear);
-        push(c.tangent[k], a, b, c.tangent_impulse[k]);
+        f.tangent_impulse[k] = f.source->tangent.dot(f.tangent[k].linear);
+        push(f.tangent[k], a, b, f.tangent_impulse[k]);
       }
+      f.twist_impulse = f.source->twist;
+      push(f.twist, a, b, f.twist_impulse);
     }
   }
   for (int pass = 0; pass < settings.iterations; ++pass) {
-    const double change = inelastic_pass(bodies, points);
+    const double change = inelastic_pass(bodies, points, patches);
     if (change <= settings.tolerance * largest_normal_impulse(points)) break;
   }
   for (ContactConstraint& c : points) {
-    if (!c.source) continue;
-    c.source->normal = c.normal_impulse;
-    c.source->tangent =
-        c.tangent_impulse[0] * c.tangent[0].linear + c.tangent_impulse[1] * c.tangent[1].linear;
+    if (c.source) c.source->normal = c.normal_impulse;
+  }
+  for (FrictionPatch& f : patches) {
+    if (!f.source) continue;
+    f.source->tangent =
+        f.tangent_impulse[0] * f.tangent[0].linear + f.tangent_impulse[1] * f.tangent[1].linear;
+    f.source->twist = f.twist_impulse;
   }
 
   // The bounce, from the velocities the inelastic solve left (Poisson-like: compression first,

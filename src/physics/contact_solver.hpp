@@ -1,8 +1,19 @@
 // The velocity solver over all contact points of a step: sequential impulses with accumulated
-// clamping (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005), a circular friction
-// cone per point, a restitution pass after the inelastic solve, and a guard that a bounce never
-// leaves more kinetic energy than the impact found. Bodies are plain velocity records; a point
-// ties body `a` to body `b`, or to a static shape (a plane) when `b` is kStatic.
+// clamping (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005), friction per
+// manifold at its centre (a "patch": two tangent directions in a circular cone of μ times the
+// manifold's normal impulse, and a twist about the normal within μ × the points' mean distance
+// from the centre × that impulse, as PhysX's patch friction and Bullet's friction anchors do), a
+// restitution pass after the inelastic solve, and a guard that a bounce never leaves more kinetic
+// energy than the impact found. Bodies are plain velocity records; a point ties body `a` to body
+// `b`, or to a static shape (a plane) when `b` is kStatic.
+//
+// A patch has three friction rows for a face's three in-plane degrees of freedom, where friction
+// per point had eight. Stacks shaped the warm starting (a tower of ten unit cubes, measured in
+// world_step_test): warm-starting the friction between bodies, per point or per patch, kept the
+// tower rocking (0.1 m/s after 60 s: last step's friction is out of phase with this step's
+// rocking, and the passes of one step do not undo it); without it the tower comes to rest.
+// Friction against planes is still warm-started (the plane tests hold with it), and the normal
+// impulses everywhere.
 #pragma once
 
 #include <cstdint>
@@ -50,23 +61,35 @@ struct ImpulseDirection {
   double mass;    // 1 / (m_a⁻¹ + m_b⁻¹ + moments through inverse inertias): the pair's (kg)
 };
 
-// One contact point between bodies a and b (b may be kStatic).
+// One contact point between bodies a and b (b may be kStatic): its normal row.
 struct ContactConstraint {
   std::uint32_t a = 0;          // index into the SolverBody list
   std::uint32_t b = kStatic;    // likewise, or kStatic
   ImpulseDirection normal;      // unit, from b (or the static shape) towards a
-  ImpulseDirection tangent[2];  // two unit directions normal to it
-  double friction = 0.0;        // μ of the pair
   double restitution = 0.0;     // e of the pair
   double approach_speed = 0.0;  // normal speed before the solve (m/s; negative approaching)
   // A speculative point, apart by s at the start of a step of h, may still approach at s/h: it
   // touches by the step's end and no earlier (Catto, "Speculative contacts", 2013). 0 for a
   // point that touches (m/s).
   double speculative_speed = 0.0;
-  double normal_impulse = 0.0;             // accumulated (N s, >= 0)
-  double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ normal (N s)
+  double normal_impulse = 0.0;  // accumulated (N s, >= 0)
   // Where the result goes back to for warm starting: a point of one manifold.
   Impulses* source = nullptr;
+};
+
+// The friction of one manifold: the points [first, first + count) of the constraint list, all
+// between the same a and b with the same normal.
+struct FrictionPatch {
+  std::uint32_t a = 0;
+  std::uint32_t b = kStatic;
+  ImpulseDirection tangent[2];  // at the manifold's centre, normal to its normal
+  ImpulseDirection twist;       // turning about the normal (angular only)
+  double friction = 0.0;        // μ of the pair
+  double twist_arm = 0.0;       // m: mean distance of the points from the centre
+  std::uint32_t first = 0, count = 0;
+  double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ Σ normal (N s)
+  double twist_impulse = 0.0;              // accumulated, |twist| <= μ twist_arm Σ normal (N m s)
+  PatchImpulses* source = nullptr;         // the manifold's, for warm starting
 };
 
 // Two unit vectors spanning the plane normal to the unit `normal`, from the world axis least
@@ -74,16 +97,22 @@ struct ContactConstraint {
 void tangent_basis(const Vec3& normal, Vec3 (&out)[2]);
 
 // A point at `arm_a` from a's centre (m, world) touching a static shape whose normal (unit,
-// world) is normal, with tangents from tangent_basis(normal).
+// world) is `normal`.
 ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
-                                  const Vec3& normal, const Vec3 (&tangents)[2],
-                                  const Material& material);
+                                  const Vec3& normal, const Material& material);
 // A point between two bodies: at `arm_a` from a's centre and `arm_b` from b's (m, world), the
 // normal pointing from b towards a.
 ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
                                   std::uint32_t b, const SolverBody& body_b, const Vec3& arm_b,
-                                  const Vec3& normal, const Vec3 (&tangents)[2],
-                                  const Material& material);
+                                  const Vec3& normal, const Material& material);
+
+// The friction patch of the `count` points from `first` of the constraint list, all of them
+// between a and b (kStatic, `body_b` then null) along `normal`: at their centre, `centre_arm_*`
+// from each body's centre (m, world), with tangents from tangent_basis(normal).
+FrictionPatch make_patch(std::uint32_t a, const SolverBody& body_a, const Vec3& centre_arm_a,
+                         std::uint32_t b, const SolverBody* body_b, const Vec3& centre_arm_b,
+                         const Vec3& normal, double friction, double twist_arm, std::uint32_t first,
+                         std::uint32_t count);
 
 // What a solve is asked for.
 struct SolveSettings {
@@ -96,14 +125,14 @@ struct SolveSettings {
 };
 
 // Solves the points against the bodies' velocities in place: first the inelastic solve (normal
-// speeds >= 0, friction within the cone), then the bounce (normal speed >= -e × approach speed for
-// points that approached faster than the threshold and pushed), then, if the bounce raised the
-// kinetic energy of the bodies above its value before the solve, it is scaled back until it does
-// not (sequential bounces at several points can otherwise create energy: Box3D issue 83). The
-// bodies given are solved as one group: a caller with unrelated groups (islands) solves each
-// alone, so that one group's bounce does not scale another's. Accumulated impulses are written
-// back to each point's `source`.
+// speeds >= 0, each patch's friction within its cone), then the bounce (normal speed >= -e ×
+// approach speed for points that approached faster than the threshold and pushed), then, if the
+// bounce raised the kinetic energy of the bodies above its value before the solve, it is scaled
+// back until it does not (sequential bounces at several points can otherwise create energy: Box3D
+// issue 83). The bodies given are solved as one group: a caller with unrelated groups (islands)
+// solves each alone, so that one group's bounce does not scale another's. Accumulated impulses are
+// written back to each point's and patch's `source`. Every point belongs to exactly one patch.
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
-                    const SolveSettings& settings);
+                    std::span<FrictionPatch> patches, const SolveSettings& settings);
 
 }  // namespace tumble::physics

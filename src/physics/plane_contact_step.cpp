@@ -108,12 +108,14 @@ double time_of_impact(Integrator integrator, const BodyModel& model, const BodyS
 }
 
 // Into `found` (one per plane) the manifold of each plane (its corners closer than `margin`, m,
-// from the corner separations), and onto `points` a constraint for each of its points, pointing
-// back at it for the impulses; `body` is the body's index among the solver's bodies.
+// from the corner separations), and onto `points` a constraint for each of its points and onto
+// `patches` its friction, pointing back at it for the impulses; `body` is the body's index among
+// the solver's bodies.
 void find_constraints(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
                       const SolverBody& solver_body, const std::vector<Plane>& planes,
                       const std::vector<CornerSeparations>& separations, double margin,
-                      std::vector<Manifold>& found, std::vector<ContactConstraint>& points) {
+                      std::vector<Manifold>& found, std::vector<ContactConstraint>& points,
+                      std::vector<FrictionPatch>& patches) {
   found.resize(planes.size());
   for (std::size_t p = 0; p < planes.size(); ++p) {
     Manifold& manifold = found[p];
@@ -121,14 +123,20 @@ void find_constraints(const BodyModel& model, std::uint32_t body, const Mat3& ro
     if (manifold.count == 0) continue;
     const Plane& plane = planes[p];
     const Material material = combine(model.material, plane.material);
-    Vec3 tangents[2];
-    tangent_basis(plane.normal, tangents);
+    Vec3 arms[kMaxManifoldPoints];
+    const auto first = static_cast<std::uint32_t>(points.size());
     for (int i = 0; i < manifold.count; ++i) {
       ContactPoint& point = manifold.points[static_cast<std::size_t>(i)];
-      points.push_back(make_constraint(body, solver_body, rotation * point.body_point, plane.normal,
-                                       tangents, material));
+      arms[i] = rotation * point.body_point;
+      points.push_back(make_constraint(body, solver_body, arms[i], plane.normal, material));
       points.back().source = &point.impulses;
     }
+    const PatchShape shape =
+        patch_shape({arms, static_cast<std::size_t>(manifold.count)}, plane.normal);
+    patches.push_back(make_patch(body, solver_body, shape.centre_arm, kStatic, nullptr,
+                                 Vec3::Zero(), plane.normal, material.friction, shape.twist_arm,
+                                 first, static_cast<std::uint32_t>(manifold.count)));
+    patches.back().source = &manifold.friction;
   }
 }
 
@@ -149,10 +157,11 @@ BodyState resolve_impact(const BodyModel& model, const BodyState& at,
                      contacts.separations);
   SolverBody bodies[1] = {SolverBody::from(at, model.constants, rotation)};
   contacts.points.clear();
+  contacts.patches.clear();
   find_constraints(model, 0, rotation, bodies[0], planes, contacts.separations, kTouchingDistance,
-                   contacts.found, contacts.points);
+                   contacts.found, contacts.points, contacts.patches);
   // An impact is solved to convergence: its bounce decides the energy of everything after it.
-  solve_contacts(bodies, contacts.points,
+  solve_contacts(bodies, contacts.points, contacts.patches,
                  {.iterations = 100,
                   .restitution_threshold = settings.restitution_threshold,
                   .warm_start = false});
@@ -221,11 +230,15 @@ PlaneAdvance advance_among_planes(Integrator integrator, const BodyModel& model,
 void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
                       const SolverBody& solver_body, const std::vector<Plane>& planes,
                       PlaneContacts& contacts, std::vector<ContactConstraint>& points,
-                      std::vector<PositionPoint>& positions) {
+                      std::vector<FrictionPatch>& patches, std::vector<PositionPoint>& positions) {
   find_constraints(model, body, rotation, solver_body, planes, contacts.separations,
-                   kTouchingDistance, contacts.found, points);
-  // Warm start from the last step's impulses of the same corners.
+                   kTouchingDistance, contacts.found, points, patches);
+  // Warm start from the last step's impulses of the same corners, and of the same plane's
+  // friction.
   for (std::size_t p = 0; p < planes.size(); ++p) {
+    if (contacts.found[p].count > 0 && contacts.manifolds[p].count > 0) {
+      contacts.found[p].friction = contacts.manifolds[p].friction;
+    }
     for (int i = 0; i < contacts.found[p].count; ++i) {
       ContactPoint& now = contacts.found[p].points[static_cast<std::size_t>(i)];
       for (int j = 0; j < contacts.manifolds[p].count; ++j) {
@@ -254,11 +267,13 @@ BodyState step_with_planes(Integrator integrator, const BodyModel& model, const 
                         .weight = impulse_position_weight(integrator, advance.remaining)};
   SolverBody solver[1] = {SolverBody::from(body.end, model.constants, body.rotation)};
   contacts.points.clear();
+  contacts.patches.clear();
   contacts.positions.clear();
   add_plane_points(model, 0, body.rotation, solver[0], planes, contacts, contacts.points,
-                   contacts.positions);
+                   contacts.patches, contacts.positions);
   BodyState out;
-  resolve_island({&body, 1}, solver, contacts.points, contacts.positions, settings, {&out, 1});
+  resolve_island({&body, 1}, solver, contacts.points, contacts.patches, contacts.positions,
+                 settings, {&out, 1});
   return out;
 }
 

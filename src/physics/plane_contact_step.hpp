@@ -33,6 +33,7 @@ struct PlaneContacts {
   std::vector<CornerSeparations> separations;  // scratch: of the pose being looked at, per plane
   std::vector<ContactConstraint> points;       // scratch
   std::vector<PositionPoint> positions;        // scratch
+  std::vector<FrictionPatch> patches;          // scratch
   std::vector<ImpactCorner> impact_corners;    // scratch
 };
 
@@ -56,14 +57,14 @@ PlaneAdvance advance_among_planes(Integrator integrator, const BodyModel& model,
                                   const std::vector<Plane>& planes, const ContactSettings& settings,
                                   PlaneContacts& contacts);
 
-// Step 3's points of a touching body (`body`: its index among the island's solver bodies, whose
-// entry is `solver_body`): each plane's manifold from contacts.separations, warm-started from the
-// last step's, onto `points` (velocity) and `positions` (projection). contacts.manifolds then
-// holds the new manifolds, which the solve writes its impulses into.
+// Step 3's points and friction patches of a touching body (`body`: its index among the island's
+// solver bodies, whose entry is `solver_body`): each plane's manifold from contacts.separations,
+// warm-started from the last step's, onto `points` (velocity) and `positions` (projection).
+// contacts.manifolds then holds the new manifolds, which the solve writes its impulses into.
 void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
                       const SolverBody& solver_body, const std::vector<Plane>& planes,
                       PlaneContacts& contacts, std::vector<ContactConstraint>& points,
-                      std::vector<PositionPoint>& positions);
+                      std::vector<FrictionPatch>& patches, std::vector<PositionPoint>& positions);
 
 // Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
 // 1. the free step; if no corner ends inside a plane, that is the step (a body that touches

@@ -169,6 +169,7 @@ void solve_island(Integrator integrator, std::span<const BodyModel> models,
   contacts.island_bodies.clear();
   contacts.solver.clear();
   contacts.points.clear();
+  contacts.patches.clear();
   contacts.positions.clear();
   contacts.local.resize(contacts.island_of.size());
   for (const std::uint32_t i : members) {
@@ -187,7 +188,7 @@ void solve_island(Integrator integrator, std::span<const BodyModel> models,
     const std::uint32_t local = contacts.local[i];
     add_plane_points(models[i], local, contacts.island_bodies[local].rotation,
                      contacts.solver[local], planes, contacts.planes[i], contacts.points,
-                     contacts.positions);
+                     contacts.patches, contacts.positions);
   }
   for (std::uint32_t k = contacts.pair_offsets[island]; k < contacts.pair_offsets[island + 1];
        ++k) {
@@ -198,16 +199,17 @@ void solve_island(Integrator integrator, std::span<const BodyModel> models,
     const IslandBody& body_b = contacts.island_bodies[first];
     const IslandBody& body_a = contacts.island_bodies[second];
     const Vec3& n = pair.manifold.normal;
-    Vec3 tangents[2];
-    tangent_basis(n, tangents);
     const Material material = combine(models[a].material, models[b].material);
     const Mat3& a_start = contacts.start_rotations[a];
     const Mat3& b_start = contacts.start_rotations[b];
+    const auto first_point = static_cast<std::uint32_t>(contacts.points.size());
+    Vec3 arms_b[kMaxManifoldPoints], arms_a[kMaxManifoldPoints];
     for (int k = 0; k < pair.manifold.count; ++k) {
       PairPoint& point = pair.manifold.points[static_cast<std::size_t>(k)];
-      contacts.points.push_back(make_constraint(
-          first, contacts.solver[first], body_b.rotation * point.point_b, second,
-          contacts.solver[second], body_a.rotation * point.point_a, n, tangents, material));
+      arms_b[k] = body_b.rotation * point.point_b;
+      arms_a[k] = body_a.rotation * point.point_a;
+      contacts.points.push_back(make_constraint(first, contacts.solver[first], arms_b[k], second,
+                                                contacts.solver[second], arms_a[k], n, material));
       contacts.points.back().source = &point.impulses;
       contacts.points.back().speculative_speed = std::max(point.separation, 0.0) / dt;
       // The projection's separation is the start's plus the anchors' relative motion along n:
@@ -221,10 +223,18 @@ void solve_island(Integrator integrator, std::span<const BodyModel> models,
                                     .normal = n,
                                     .base = point.separation - n.dot(start_offset)});
     }
+    const auto count = static_cast<std::size_t>(pair.manifold.count);
+    const PatchShape shape_b = patch_shape({arms_b, count}, n);
+    const PatchShape shape_a = patch_shape({arms_a, count}, n);
+    contacts.patches.push_back(make_patch(first, contacts.solver[first], shape_b.centre_arm, second,
+                                          &contacts.solver[second], shape_a.centre_arm, n,
+                                          material.friction, shape_b.twist_arm, first_point,
+                                          static_cast<std::uint32_t>(count)));
+    // No warm start of friction between bodies (contact_solver.hpp says why).
   }
   contacts.island_out.resize(members.size());
-  resolve_island(contacts.island_bodies, contacts.solver, contacts.points, contacts.positions,
-                 settings, contacts.island_out);
+  resolve_island(contacts.island_bodies, contacts.solver, contacts.points, contacts.patches,
+                 contacts.positions, settings, contacts.island_out);
   for (std::size_t k = 0; k < members.size(); ++k) {
     out[members[k]] = std::move(contacts.island_out[k]);
   }

@@ -43,6 +43,7 @@ struct WorldContacts {
   std::vector<SolverBody> solver;
   std::vector<ContactConstraint> points;
   std::vector<PositionPoint> positions;
+  std::vector<FrictionPatch> patches;
   std::vector<BodyState> island_out;
 };
 

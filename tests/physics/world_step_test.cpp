@@ -62,5 +62,37 @@ TEST(WorldStep, ElasticHeadOnCollisionOfEqualCubesExchangesTheirVelocities) {
   EXPECT_GE(b.position().x() - a.position().x(), 1.0 - 1e-9);
 }
 
+// A stack of unit cubes on a floor, each resting on the one below (faces touching at the start).
+sim::Simulation stack(int count, Integrator integrator = Integrator::rk4) {
+  const BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 0.0, .friction = 0.5}, true);
+  std::vector<BodyModel> models(static_cast<std::size_t>(count), cube);
+  std::vector<BodyState> start;
+  for (int k = 0; k < count; ++k) start.push_back(at_rest(cube, Vec3(0.0, 0.5 + k, 0.0)));
+  return sim::Simulation(models, start, integrator, kStep,
+                         {Plane{.material = {.restitution = 0.0, .friction = 0.5}}});
+}
+
+TEST(WorldStep, TowerOfTenCubesStandsForAMinute) {
+  sim::Simulation world = stack(10);
+  const Vec3 top_start = world.current().back().position();
+  double drift = 0.0, sink = 0.0, tilt = 0.0;  // largest over the run (m, m, rad)
+  while (world.time() < 60.0) {
+    world.step();
+    ASSERT_FALSE(world.blow_up().has_value());
+    const Vec3 top = world.current().back().position();
+    drift = std::max(drift, std::hypot(top.x() - top_start.x(), top.z() - top_start.z()));
+    sink = std::max(sink, std::abs(top.y() - top_start.y()));
+    for (const BodyState& s : world.current()) {
+      tilt = std::max(tilt, angle_between(Quat::Identity(), s.orientation()));
+    }
+  }
+  std::printf(
+      "[ measured ] top cube over 60 s: %.2e m sideways, %.2e m vertically; tilt %.2e rad\n", drift,
+      sink, tilt);
+  EXPECT_LT(drift, 0.01);
+  EXPECT_LT(sink, 0.001);
+  EXPECT_LT(tilt, 0.01);  // no box tips
+}
+
 }  // namespace
 }  // namespace tumble::physics
