@@ -1,6 +1,10 @@
 #include "scene/plane_tables.hpp"
 
+#include <algorithm>
 #include <set>
+#include <vector>
+
+#include "physics/box_box.hpp"
 
 #include "scene/limits.hpp"
 #include "scene/scene_builder.hpp"
@@ -122,7 +126,51 @@ physics::ContactSettings read_contact_settings(TableReader& in) {
   out.restitution_threshold =
       in.optional_number("restitution_threshold", out.restitution_threshold);
   require_non_negative(in, "restitution_threshold", out.restitution_threshold);
+  out.collide_bodies = in.optional_bool("collide_bodies", out.collide_bodies);
   return out;
+}
+
+void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
+  // Only impulse contact acts between bodies (penalty contact is planes only, so far).
+  if (!scene.physics.contact.collide_bodies ||
+      scene.physics.contact.method != physics::ContactMethod::impulse) {
+    return;
+  }
+  const toml::array& bodies = *root.table().get("bodies")->as_array();
+  // Sorted along x by the lower end of each bounding sphere, so that only neighbours are tested:
+  // a scene of a thousand boxes is checked in milliseconds.
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (scene.bodies[i].collide) order.push_back(i);
+  }
+  const auto radius = [&](std::size_t i) { return 0.5 * scene.bodies[i].size.norm(); };
+  const auto lower = [&](std::size_t i) { return scene.bodies[i].position.x() - radius(i); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return lower(a) < lower(b) || (lower(a) == lower(b) && a < b);
+  });
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    for (std::size_t m = n + 1; m < order.size(); ++m) {
+      const std::size_t a = std::min(order[n], order[m]), b = std::max(order[n], order[m]);
+      const BodySpec& first = scene.bodies[a];
+      const BodySpec& second = scene.bodies[b];
+      if (lower(order[m]) > scene.bodies[order[n]].position.x() + radius(order[n])) break;
+      if ((first.position - second.position).norm() >= radius(a) + radius(b)) continue;
+      const physics::BoxAxis axis = physics::box_box_axis(
+          {first.position, first.orientation.toRotationMatrix(), 0.5 * first.size},
+          {second.position, second.orientation.toRotationMatrix(), 0.5 * second.size});
+      if (!(-axis.separation > kStartOverlapAllowed)) continue;
+      const std::string what = "bodies " + in_quotes(first.name) + " and " +
+                               in_quotes(second.name) + " start overlapping by " +
+                               format_number(-axis.separation) +
+                               " m (bodies collide; give one `collide = false`, or set "
+                               "[physics] collide_bodies = false)";
+      const toml::table& table = *bodies[b].as_table();
+      TableReader reader(table, "bodies[" + std::to_string(b) + "]", root.file());
+      if (table.contains("position")) reader.fail("position", what);
+      TableReader(*bodies[a].as_table(), "bodies[" + std::to_string(a) + "]", root.file())
+          .fail("position", what);
+    }
+  }
 }
 
 void read_planes(TableReader& root, Scene& scene) {

@@ -11,12 +11,16 @@ namespace tumble::scene::detail {
 // left out keeps its value in `fallback`.
 physics::Material read_material(TableReader& in, const physics::Material& fallback);
 
-// contact, contact_stiffness, contact_damping and restitution_threshold of [physics]: each
-// setting only with the method that uses it.
+// contact, contact_stiffness, contact_damping, restitution_threshold and collide_bodies of
+// [physics]: each setting only with the method that uses it.
 physics::ContactSettings read_contact_settings(TableReader& physics);
 
 // The [[planes]] tables of `root` into scene.planes, then refuses a body that starts inside a
 // plane. Needs scene.bodies read.
 void read_planes(TableReader& root, Scene& scene);
+
+// Refuses two colliding bodies whose boxes overlap at the start, naming both. Needs scene.bodies
+// and scene.physics read.
+void refuse_overlapping_bodies(const TableReader& root, const Scene& scene);
 
 }  // namespace tumble::scene::detail

@@ -28,7 +28,8 @@ struct BodySpec {
   physics::Vec3 angular_velocity = physics::Vec3::Zero();  // world frame (rad/s)
   std::vector<physics::ForceLaw> forces;                   // only what the scene lists
   physics::Material material = {};                         // restitution 0, friction 0.5
-  render::Color color = render::Color(0.85, 0.35, 0.2);    // sRGB
+  bool collide = true;  // with other bodies (planes stop every body)
+  render::Color color = render::Color(0.85, 0.35, 0.2);  // sRGB
 };
 
 // A static plane, as written: `point` and the unit `normal` place it; `size` is only how much of

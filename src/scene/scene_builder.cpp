@@ -31,7 +31,8 @@ physics::BodyModel body_model(const Scene& scene, const BodySpec& body) {
   physics::BodyModel model{.constants = body_constants(body),
                            .forces = body.forces,
                            .half_size = 0.5 * body.size,
-                           .material = body.material};
+                           .material = body.material,
+                           .collides = body.collide};
   const physics::ContactSettings& contact = scene.physics.contact;
   if (!scene.planes.empty() && contact.method == physics::ContactMethod::penalty) {
     std::vector<physics::Plane> planes;

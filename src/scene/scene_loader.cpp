@@ -196,6 +196,7 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
     in.fail("mass", "with this mass and motion the kinetic energy is beyond double precision");
   }
   body.material = read_material(in, body.material);
+  body.collide = in.optional_bool("collide", body.collide);
   body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
   if (in.has("forces")) {
     const toml::array* forces = in.table().get("forces")->as_array();
@@ -297,6 +298,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     fail_on_dt(what);
   }
   read_planes(in, scene);
+  refuse_overlapping_bodies(in, scene);
   read_render_tables(in, scene);
   in.reject_unknown_keys();
   return scene;

@@ -337,6 +337,7 @@ mass = 1.0
 shape = "cube"
 size = 1.0
 mass = 1.0
+position = [2.0, 0.0, 0.0]
 )");
   EXPECT_EQ(scene.render.width, 1280);
   EXPECT_EQ(scene.render.height, 720);
@@ -436,6 +437,30 @@ mass = 1.0
 )");
   EXPECT_EQ(only_dt.physics.dt, 0.001);
   EXPECT_EQ(only_dt.physics.integrator, physics::Integrator::rk4);
+}
+
+// Bodies collide by default; collide_bodies = false (or a body's collide = false) lets bodies
+// pass through each other as before contact between bodies existed, so overlapping is allowed.
+TEST(SceneLoader, CollideKeysTurnContactBetweenBodiesOff) {
+  const std::string two_cubes = R"(
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.5, 0.0, 0.0]
+)";
+  const Scene off = parse_valid("duration = 1.0\n[physics]\ncollide_bodies = false\n" + two_cubes);
+  EXPECT_FALSE(off.physics.contact.collide_bodies);
+  const Scene one = parse_valid("duration = 1.0\n" + two_cubes + "collide = false\n");
+  EXPECT_TRUE(one.physics.contact.collide_bodies);
+  EXPECT_TRUE(one.bodies[0].collide);
+  EXPECT_FALSE(one.bodies[1].collide);
+  EXPECT_TRUE(
+      std::holds_alternative<SceneError>(parse_scene("duration = 1.0\n" + two_cubes, "t.toml")));
 }
 
 TEST(SceneLoader, LargeIntegersAreReadAsTheNearestDouble) {
