@@ -1,8 +1,8 @@
 // The pile of issue 12 (bench/pile.hpp) run by each engine in one process, one column each:
 //   build/contact_bench [--bodies 1000] [--seconds 20] [--seed 1]
-// Today the only column is Bullet's (tumble has no box-box contact yet); tumble's run will be a
-// second PileRun in the same table. A separate executable and not `tumble bench contact`: that
-// would link Bullet into the tumble executable, and Bullet is a benchmark peer only.
+// tumble's column, then Bullet's, and their ratio of median step time. A separate executable and
+// not `tumble bench contact`: that would link Bullet into the tumble executable, and Bullet is a
+// benchmark peer only.
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
@@ -12,6 +12,7 @@
 
 #include "bench/pile.hpp"
 #include "bench/pile_run.hpp"
+#include "bench/tumble_pile.hpp"
 #ifdef TUMBLE_HAVE_BULLET
 #include "bench/bullet_pile.hpp"
 #endif
@@ -89,11 +90,17 @@ int main(int argc, char** argv) {
   const tumble::bench::Pile pile = tumble::bench::make_pile(bodies, seed, seconds);
   std::printf("pile: %s, one thread\n", pile.summary.c_str());
   std::vector<PileRun> runs;
+  runs.push_back(tumble::bench::run_pile_in_tumble(pile));
 #ifdef TUMBLE_HAVE_BULLET
   runs.push_back(tumble::bench::run_pile_in_bullet(pile));
 #else
   std::printf("bullet: not built in (libbullet-dev was not found when CMake ran)\n");
 #endif
-  if (!runs.empty()) print_table(runs, pile.dt);
+  print_table(runs, pile.dt);
+  if (runs.size() == 2) {
+    std::printf("tumble / bullet, median ms/step: %.2f (cpu %.2f)\n",
+                median_step_ms(runs[0]) / median_step_ms(runs[1]),
+                median_step_cpu_ms(runs[0]) / median_step_cpu_ms(runs[1]));
+  }
   return 0;
 }

@@ -1,5 +1,6 @@
 #include "physics/contact_island.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tumble::physics {
@@ -66,6 +67,12 @@ Quat rotated(const Quat& q, const Vec3& angle) {
   return Quat(Eigen::AngleAxisd(size, angle / size)) * q;
 }
 
+int solver_passes(std::size_t points) {
+  const std::size_t budget =
+      static_cast<std::size_t>(kPointPassBudget) / std::max<std::size_t>(points, 1);
+  return static_cast<int>(std::clamp<std::size_t>(budget, kFewestPasses, kMostPasses));
+}
+
 PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
   PatchShape out;
   if (arms.empty()) return out;
@@ -84,7 +91,7 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
                     std::span<const PositionPoint> positions, const ContactSettings& settings,
                     std::span<BodyState> out) {
   solve_contacts(solver, points, patches,
-                 {.iterations = kContactIterations,
+                 {.iterations = solver_passes(points.size()),
                   .tolerance = kRestingTolerance,
                   .restitution_threshold = settings.restitution_threshold,
                   .warm_start = true});

@@ -1,0 +1,83 @@
+#include "bench/tumble_pile.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <ctime>
+
+#include "physics/world_step.hpp"
+
+namespace tumble::bench {
+namespace {
+
+// The deepest any box is inside a plane or another box's manifold said (m, >= 0), and how many
+// contact points there are, after a step.
+struct ContactCount {
+  int points = 0;
+  double depth = 0.0;
+};
+
+ContactCount count_contacts(const physics::WorldContacts& contacts,
+                            const std::vector<physics::BodyState>& states, const Pile& pile) {
+  ContactCount out;
+  for (const physics::PairContact& pair : contacts.pairs) {
+    for (int k = 0; k < pair.manifold.count; ++k) {
+      const double s = pair.manifold.points[static_cast<std::size_t>(k)].separation;
+      if (s < physics::kTouchingDistance) ++out.points;
+      out.depth = std::max(out.depth, -s);
+    }
+  }
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    for (const physics::Manifold& m : contacts.planes[i].manifolds) out.points += m.count;
+    for (const physics::Plane& plane : pile.planes) {
+      out.depth = std::max(out.depth, -physics::closest_corner_separation(
+                                          states[i], 0.5 * pile.boxes[i].size, plane));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+PileRun run_pile_in_tumble(const Pile& pile) {
+  std::vector<physics::BodyModel> models;
+  std::vector<physics::BodyState> states;
+  for (const PileBox& box : pile.boxes) {
+    models.push_back({.constants = physics::box_constants(box.mass, box.size),
+                      .forces = {physics::Gravity{.acceleration = pile.gravity}},
+                      .half_size = 0.5 * box.size,
+                      .material = pile.box_material});
+    states.push_back(physics::make_state(models.back().constants, box.position, box.velocity,
+                                         box.orientation, box.angular_velocity));
+  }
+  std::vector<physics::BodyState> next(states.size());
+  physics::WorldContacts contacts;
+  const physics::ContactSettings settings;
+  PileRun run;
+  run.engine = "tumble (impulse, rk4)";
+  for (int n = 0; n < pile.steps; ++n) {
+    const std::clock_t cpu_start = std::clock();
+    const auto wall_start = std::chrono::steady_clock::now();
+    physics::step_world(physics::Integrator::rk4, models, states, n * pile.dt, pile.dt, pile.planes,
+                        settings, contacts, next);
+    const auto wall_end = std::chrono::steady_clock::now();
+    const std::clock_t cpu_end = std::clock();
+    states.swap(next);
+    run.step_ms.push_back(std::chrono::duration<double, std::milli>(wall_end - wall_start).count());
+    run.step_cpu_ms.push_back(1000.0 * static_cast<double>(cpu_end - cpu_start) / CLOCKS_PER_SEC);
+    const ContactCount count = count_contacts(contacts, states, pile);
+    run.contacts.push_back(count.points);
+    run.depth_m.push_back(count.depth);
+    run.largest_penetration_m = std::max(run.largest_penetration_m, count.depth);
+    double top = 0.0;
+    for (const physics::BodyState& s : states) top = std::max(top, s.velocity().norm());
+    run.top_speed.push_back(top);
+  }
+  for (const physics::BodyState& s : states) {
+    run.final_positions.push_back(s.position());
+    if (!inside_bin(pile, s.position())) ++run.escaped;
+  }
+  run.largest_final_speed = run.top_speed.empty() ? 0.0 : run.top_speed.back();
+  return run;
+}
+
+}  // namespace tumble::bench
