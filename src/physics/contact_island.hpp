@@ -16,13 +16,14 @@ namespace tumble::physics {
 // The most passes of the velocity solver over the points of an island: a budget of point passes,
 // within [kFewestPasses, kMostPasses]. A warm-started island ends after a pass or two (the
 // solve's tolerance); a new stack needs many: a tower of ten cubes built at rest drifts 1 cm
-// sideways in its first second with 100 passes, 3 mm with 300. A large island (a pile) gets the
-// budget spread over its points: 30 passes at 400 points, where more cost time and change little
-// (measured with contact_bench: 200 boxes, 30 or 300 passes, 21 cm and 13 cm deepest, both at rest
-// by 6 s).
+// sideways in its first second with 100 passes, 3 mm with 300, and a pyramid of 55 (about 400
+// points) moves 1.1 cm in 30 s with 30 passes, 3 mm with 100. A large island (a pile) gets the
+// budget spread over its points, down to 30 passes from 1300 points on: more cost time there and
+// change little (contact_bench, 200 boxes: 30 or 300 passes gave 21 and 13 cm deepest, both at
+// rest by 6 s).
 inline constexpr int kMostPasses = 300;
 inline constexpr int kFewestPasses = 30;
-inline constexpr int kPointPassBudget = 12000;
+inline constexpr int kPointPassBudget = 40000;
 int solver_passes(std::size_t points);
 
 // A body of an island, at the end of its free step (after any impacts of its own with planes).

@@ -94,6 +94,67 @@ TEST(WorldStep, TowerOfTenCubesStandsForAMinute) {
   EXPECT_LT(tilt, 0.01);  // no box tips
 }
 
+// A 2D-style pyramid of unit cubes, ten rows (55 boxes), 5 cm apart within a row, each box on
+// two below it: Box2D's classic stacking test, in 3D.
+TEST(WorldStep, PyramidOfFiftyFiveCubesStandsForHalfAMinute) {
+  const BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 0.0, .friction = 0.5}, true);
+  std::vector<BodyModel> models;
+  std::vector<BodyState> start;
+  for (int row = 0; row < 10; ++row) {
+    const int count = 10 - row;
+    for (int i = 0; i < count; ++i) {
+      models.push_back(cube);
+      start.push_back(at_rest(cube, Vec3(1.05 * (i - 0.5 * (count - 1)), 0.5 + row, 0.0)));
+    }
+  }
+  sim::Simulation world(models, start, Integrator::rk4, kStep,
+                        {Plane{.material = {.restitution = 0.0, .friction = 0.5}}});
+  double worst = 0.0;  // the largest distance of any box from its start (m)
+  while (world.time() < 30.0) {
+    world.step();
+    ASSERT_FALSE(world.blow_up().has_value());
+    for (std::size_t i = 0; i < start.size(); ++i) {
+      worst = std::max(worst, (world.current()[i].position() - start[i].position()).norm());
+    }
+  }
+  std::printf("[ measured ] pyramid of 55 over 30 s: largest move of a box %.2e m\n", worst);
+  EXPECT_LT(worst, 0.01);
+}
+
+// Twenty dominoes (0.1 × 1 × 0.5 m) 0.5 m apart in a row on a floor; the first is tipped.
+TEST(WorldStep, DominoesFallInOrderAndTheLastEndsLyingDown) {
+  const BodyModel domino =
+      box_model(Vec3(0.1, 1.0, 0.5), 2.0, {.restitution = 0.0, .friction = 0.6}, true);
+  constexpr int kCount = 20;
+  std::vector<BodyModel> models(kCount, domino);
+  std::vector<BodyState> start;
+  for (int k = 0; k < kCount; ++k) {
+    start.push_back(at_rest(domino, Vec3(0.5 * k, 0.5, 0.0), Vec3::Zero(), Quat::Identity(),
+                            k == 0 ? Vec3(0.0, 0.0, -1.6) : Vec3::Zero()));
+  }
+  sim::Simulation world(models, start, Integrator::rk4, kStep,
+                        {Plane{.material = {.restitution = 0.0, .friction = 0.6}}});
+  std::vector<double> tipped(kCount, -1.0);  // when each passed 45° (s)
+  while (world.time() < 8.0) {
+    world.step();
+    for (int k = 0; k < kCount; ++k) {
+      const Vec3 up = world.current()[k].orientation() * Vec3::UnitY();
+      if (tipped[k] < 0.0 && up.y() < std::cos(0.25 * 3.141592653589793)) tipped[k] = world.time();
+    }
+  }
+  for (int k = 0; k < kCount; ++k) {
+    ASSERT_GE(tipped[k], 0.0) << "domino " << k << " never fell";
+    if (k > 0) {
+      EXPECT_GT(tipped[k], tipped[k - 1]) << "domino " << k << " fell before " << k - 1;
+    }
+  }
+  std::printf("[ measured ] dominoes past 45° from %.3f s to %.3f s\n", tipped.front(),
+              tipped.back());
+  const BodyState& last = world.current().back();
+  EXPECT_LT(std::abs((last.orientation() * Vec3::UnitY()).y()), 0.05);  // lying down
+  EXPECT_NEAR(last.position().y(), 0.05, 0.01);  // on its broad face, on the floor
+}
+
 class FastCube : public testing::TestWithParam<double> {};
 
 // A 0.2 m cube at speed v (m/s) toward a free 5 cm plate of 2 × 2 m, no gravity: at 100 m/s it
