@@ -229,7 +229,9 @@ int pick(const std::array<Candidate, kMaxClipVertices>& candidates, int from, in
 // btPersistentManifold::sortCachedPoints also keeps the deepest and maximises the area).
 int reduce(std::array<Candidate, kMaxClipVertices>& candidates, int count, int normal_axis) {
   if (count <= kMaxManifoldPoints) return count;
-  const auto [u, v] = other_axes(normal_axis);
+  // (No structured binding: clang 14 cannot capture one in a lambda.)
+  const std::array<int, 2> axes = other_axes(normal_axis);
+  const int u = axes[0], v = axes[1];
   const auto take = [&](int chosen, int slot) { std::swap(candidates[chosen], candidates[slot]); };
   double best = 0.0;
   take(pick(
@@ -279,7 +281,8 @@ ClipPolygon incident_face(const BoxPose& reference, const BoxPose& incident,
   }
   const double sign = reference_normal.dot(incident.rotation.col(axis)) > 0.0 ? -1.0 : 1.0;
   face_out = face_index(axis, sign);
-  const auto [u, v] = other_axes(axis);
+  const std::array<int, 2> axes = other_axes(axis);
+  const int u = axes[0], v = axes[1];
   const Mat3 to_reference = reference.rotation.transpose() * incident.rotation;
   const Vec3 centre = reference.rotation.transpose() * (incident.position - reference.position);
   constexpr double kCornerU[4] = {-1.0, 1.0, 1.0, -1.0};
@@ -322,7 +325,8 @@ PairManifold face_contact(const BoxPose& a, const BoxPose& b, const BoxAxis& axi
   const double sign = reference_normal.dot(reference.rotation.col(normal_axis)) > 0.0 ? 1.0 : -1.0;
   int incident_index = 0;
   ClipPolygon polygon = incident_face(reference, incident, reference_normal, incident_index);
-  const auto [u, v] = other_axes(normal_axis);
+  const std::array<int, 2> axes = other_axes(normal_axis);
+  const int u = axes[0], v = axes[1];
   const int sides[2] = {u, v};
   for (int side = 0; side < 2; ++side) {
     for (int end = 0; end < 2; ++end) {

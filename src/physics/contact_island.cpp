@@ -108,8 +108,8 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
     const IslandBody& body = bodies[i];
     const SolverBody& solved = solver[i];
     PrimaryState primary = body.end.primary();
-    primary.momentum += solved.linear_impulse;
-    primary.angular_momentum += solved.angular_impulse;
+    primary.momentum += solved.linear_impulse(body.end.velocity());
+    primary.angular_momentum += solved.angular_impulse(body.end.angular_velocity());
     primary.position += body.weight * (solved.velocity - body.end.velocity());
     primary.orientation = rotated(
         primary.orientation, body.weight * (solved.angular_velocity - body.end.angular_velocity()));

@@ -24,13 +24,9 @@ constexpr double kBounceTolerance = 1e-13;
   const Vec3 linear = impulse * d.linear;
   a.velocity += a.inverse_mass * linear;
   a.angular_velocity += impulse * d.turn_a;
-  a.linear_impulse += linear;
-  a.angular_impulse += impulse * d.moment_a;
   if (!b) return;
   b->velocity -= b->inverse_mass * linear;
   b->angular_velocity -= impulse * d.turn_b;
-  b->linear_impulse -= linear;
-  b->angular_impulse -= impulse * d.moment_b;
 }
 
 // The direction `along` (unit, world) at a point `arm_a` (m, world) from a's centre, and at
@@ -224,6 +220,15 @@ SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constan
   return out;
 }
 
+Vec3 SolverBody::linear_impulse(const Vec3& velocity_before) const {
+  const double mass = inverse_mass > 0.0 ? 1.0 / inverse_mass : 0.0;
+  return mass * (velocity - velocity_before);
+}
+
+Vec3 SolverBody::angular_impulse(const Vec3& angular_velocity_before) const {
+  return inertia * (angular_velocity - angular_velocity_before);
+}
+
 double SolverBody::kinetic_energy() const {
   const double mass = inverse_mass > 0.0 ? 1.0 / inverse_mass : 0.0;
   return 0.5 * mass * velocity.squaredNorm() +
@@ -346,8 +351,6 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
     body.velocity = from.velocity + s * (body.velocity - from.velocity);
     body.angular_velocity =
         from.angular_velocity + s * (body.angular_velocity - from.angular_velocity);
-    body.linear_impulse = from.linear_impulse + s * (body.linear_impulse - from.linear_impulse);
-    body.angular_impulse = from.angular_impulse + s * (body.angular_impulse - from.angular_impulse);
   }
 }
 

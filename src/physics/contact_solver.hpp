@@ -33,14 +33,17 @@ struct SolverBody {
   // the kinetic energy.
   Mat3 inverse_inertia = Mat3::Zero();
   Mat3 inertia = Mat3::Zero();
-  Vec3 linear_impulse = Vec3::Zero();   // Σ of the impulses applied by the solve (N s)
-  Vec3 angular_impulse = Vec3::Zero();  // Σ of their moments about the centre (N m s)
 
   // The body as the state has it: velocities and mass at that pose, whose body-to-world
   // rotation is `rotation` (passed in: the caller has it already).
   static SolverBody from(const BodyState& state, const BodyConstants& constants,
                          const Mat3& rotation);
   double kinetic_energy() const;  // of the velocities, with the inertia above (J)
+  // What the solve gave the body, from the velocities it started with: m Δv (N s) and I Δω
+  // (N m s), rather than a sum kept at every push: the same momentum to rounding (through a
+  // collision the total moves by ~1e-16 of itself), and half the writes of a push.
+  Vec3 linear_impulse(const Vec3& velocity_before) const;
+  Vec3 angular_impulse(const Vec3& angular_velocity_before) const;
 };
 
 // The index of a point's second body when it touches a static shape.

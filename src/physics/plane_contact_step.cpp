@@ -144,8 +144,8 @@ void find_constraints(const BodyModel& model, std::uint32_t body, const Mat3& ro
 BodyState with_impulses(const BodyState& state, const SolverBody& body,
                         const BodyConstants& constants) {
   PrimaryState primary = state.primary();
-  primary.momentum += body.linear_impulse;
-  primary.angular_momentum += body.angular_impulse;
+  primary.momentum += body.linear_impulse(state.velocity());
+  primary.angular_momentum += body.angular_impulse(state.angular_velocity());
   return BodyState(primary, constants);
 }
 
