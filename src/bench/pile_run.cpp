@@ -42,4 +42,10 @@ double ms_at_peak_contacts(const PileRun& run) {
   return median(std::move(near_peak));
 }
 
+StepTimeRatios step_time_ratios(const PileRun& first, const PileRun& second) {
+  return {.median_ms = median_step_ms(first) / median_step_ms(second),
+          .median_cpu_ms = median_step_cpu_ms(first) / median_step_cpu_ms(second),
+          .ms_at_peak_contacts = ms_at_peak_contacts(first) / ms_at_peak_contacts(second)};
+}
+
 }  // namespace tumble::bench

@@ -36,4 +36,13 @@ std::size_t peak_contact_step(const PileRun& run);
 // the steps near the peak do the same work.
 double ms_at_peak_contacts(const PileRun& run);
 
+// How many times `first`'s step time is `second`'s (tumble / bullet: above 1, tumble is slower),
+// by each of the three measures above. Infinite or NaN when `second` took no time.
+struct StepTimeRatios {
+  double median_ms = 0.0;
+  double median_cpu_ms = 0.0;
+  double ms_at_peak_contacts = 0.0;
+};
+StepTimeRatios step_time_ratios(const PileRun& first, const PileRun& second);
+
 }  // namespace tumble::bench
