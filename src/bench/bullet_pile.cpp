@@ -157,7 +157,7 @@ std::string bullet_engine_name() {
          (btIsDoublePrecision() ? " float64" : " float32");
 }
 
-PileRun run_pile_in_bullet(const Pile& pile) {
+PileRun run_pile_in_bullet(const Pile& pile, const StepObserver& observer) {
   const TumbleMaterialRule rule;
   auto bullet = std::make_unique<BulletWorld>();  // large: on the heap
   bullet->world.setGravity(to_bullet(pile.gravity));
@@ -185,6 +185,7 @@ PileRun run_pile_in_bullet(const Pile& pile) {
     run.depth_m.push_back(deepest);
     run.top_speed.push_back(top_speed(*bullet));
     run.largest_penetration_m = std::max(run.largest_penetration_m, deepest);
+    if (observer) observer(run);
   }
 
   run.largest_final_speed = top_speed(*bullet);

@@ -16,6 +16,7 @@ std::string bullet_engine_name();
 
 // Runs the whole pile in Bullet: pile.steps calls of stepSimulation(pile.dt, 0), one thread,
 // sleeping on (Bullet's default), materials combined by tumble's rule (physics::combine).
-PileRun run_pile_in_bullet(const Pile& pile);
+// `observer`, if any, is called after each step (pile_run.hpp).
+PileRun run_pile_in_bullet(const Pile& pile, const StepObserver& observer = {});
 
 }  // namespace tumble::bench

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@ struct PileRun {
   std::vector<physics::Vec3> final_positions;  // box centres after the last step (m, world)
   std::string engine;                          // e.g. "bullet 3.24 float64"
 };
+
+// Called after each step of a run with what has been measured so far (the step just done is the
+// last element of each per-step vector): progress, or passing the steps on as they come. Called
+// outside the timed part of the step.
+using StepObserver = std::function<void(const PileRun& so_far)>;
 
 // The median of the steps' wall times (ms); 0 for a run of no steps.
 double median_step_ms(const PileRun& run);

@@ -38,7 +38,11 @@ ContactCount count_contacts(const physics::WorldContacts& contacts,
 
 }  // namespace
 
-PileRun run_pile_in_tumble(const Pile& pile) {
+std::string tumble_engine_name() {
+  return "tumble (impulse, rk4)";
+}
+
+PileRun run_pile_in_tumble(const Pile& pile, const StepObserver& observer) {
   std::vector<physics::BodyModel> models;
   std::vector<physics::BodyState> states;
   for (const PileBox& box : pile.boxes) {
@@ -53,7 +57,7 @@ PileRun run_pile_in_tumble(const Pile& pile) {
   physics::WorldContacts contacts;
   const physics::ContactSettings settings;
   PileRun run;
-  run.engine = "tumble (impulse, rk4)";
+  run.engine = tumble_engine_name();
   for (int n = 0; n < pile.steps; ++n) {
     const std::clock_t cpu_start = std::clock();
     const auto wall_start = std::chrono::steady_clock::now();
@@ -71,6 +75,7 @@ PileRun run_pile_in_tumble(const Pile& pile) {
     double top = 0.0;
     for (const physics::BodyState& s : states) top = std::max(top, s.velocity().norm());
     run.top_speed.push_back(top);
+    if (observer) observer(run);
   }
   for (const physics::BodyState& s : states) {
     run.final_positions.push_back(s.position());

@@ -2,11 +2,17 @@
 // measured as bench/pile_run.hpp measures every engine.
 #pragma once
 
+#include <string>
+
 #include "bench/pile.hpp"
 #include "bench/pile_run.hpp"
 
 namespace tumble::bench {
 
-PileRun run_pile_in_tumble(const Pile& pile);
+// "tumble (impulse, rk4)": the engine as the pile's table names it.
+std::string tumble_engine_name();
+
+// `observer`, if any, is called after each step (pile_run.hpp).
+PileRun run_pile_in_tumble(const Pile& pile, const StepObserver& observer = {});
 
 }  // namespace tumble::bench

@@ -5,6 +5,8 @@
 #include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace tumble::bench {
 namespace {
 
@@ -58,6 +60,18 @@ TEST_F(BulletPile, TwoRunsGiveIdenticalPositions) {
     EXPECT_EQ(again.final_positions[n], run_->final_positions[n]) << "box " << n;
   }
   EXPECT_EQ(again.contacts, run_->contacts);
+}
+
+// The observer sees each step once, as it is done, with the figures the run returns.
+TEST_F(BulletPile, TheObserverSeesEveryStepAsItIsDone) {
+  std::vector<int> contacts_seen;
+  const PileRun again = run_pile_in_bullet(make_pile(60, 1, 4.0), [&](const PileRun& so_far) {
+    EXPECT_EQ(so_far.step_ms.size(), contacts_seen.size() + 1);
+    EXPECT_EQ(so_far.top_speed.size(), so_far.step_ms.size());
+    contacts_seen.push_back(so_far.contacts.back());
+  });
+  EXPECT_EQ(contacts_seen, again.contacts);
+  EXPECT_EQ(contacts_seen, run_->contacts);
 }
 
 // A 0.4 m cube sliding at 2 m/s on the floor stops after v²/(2 μ g) = 0.41 m with tumble's
