@@ -6,11 +6,12 @@
 
 namespace tumble::app {
 
-Progress::Progress(std::int64_t total, bool quiet, std::FILE* out)
+Progress::Progress(std::int64_t total, bool quiet, std::FILE* out, const char* unit)
     : total_(total),
       quiet_(quiet),
       terminal_(::isatty(::fileno(out)) != 0),
       out_(out),
+      unit_(unit),
       start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
@@ -31,15 +32,16 @@ void Progress::update(std::int64_t done) {
     const int filled = static_cast<int>(kWidth * done / total_);
     const std::string bar = std::string(static_cast<std::size_t>(filled), '#') +
                             std::string(static_cast<std::size_t>(kWidth - filled), '-');
-    std::fprintf(out_, "\r[%s] %lld/%lld frames  %.1f frames/s  %d:%02d left ", bar.c_str(),
-                 static_cast<long long>(done), static_cast<long long>(total_), rate,
+    std::fprintf(out_, "\r[%s] %lld/%lld %s  %.1f %s/s  %d:%02d left ", bar.c_str(),
+                 static_cast<long long>(done), static_cast<long long>(total_), unit_, rate, unit_,
                  static_cast<int>(left) / 60, static_cast<int>(left) % 60);
   } else {
     const int decile = static_cast<int>(10 * done / total_);
     if (decile <= last_decile_) return;
     last_decile_ = decile;
-    std::fprintf(out_, "%3d%%  %lld/%lld frames  %.1f frames/s  %.0f s left\n", 10 * decile,
-                 static_cast<long long>(done), static_cast<long long>(total_), rate, left);
+    std::fprintf(out_, "%3d%%  %lld/%lld %s  %.1f %s/s  %.0f s left\n", 10 * decile,
+                 static_cast<long long>(done), static_cast<long long>(total_), unit_, rate, unit_,
+                 left);
   }
   std::fflush(out_);
 }

@@ -10,7 +10,8 @@ namespace tumble::app {
 
 class Progress {
  public:
-  Progress(std::int64_t total, bool quiet, std::FILE* out);
+  // `unit` names what is counted, in the plural ("frames", "steps").
+  Progress(std::int64_t total, bool quiet, std::FILE* out, const char* unit = "frames");
   void update(std::int64_t done);  // call after each item
   void finish();                   // ends the bar's line
   double elapsed_seconds() const;
@@ -20,6 +21,7 @@ class Progress {
   bool quiet_;
   bool terminal_;
   std::FILE* out_;
+  const char* unit_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_;
   int last_decile_ = 0;
