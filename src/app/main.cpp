@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "app/bench_command.hpp"
+#include "app/bench_contact.hpp"
 #include "app/bench_pipeline.hpp"
 #include "app/check_command.hpp"
 #include "app/diff_command.hpp"
@@ -156,6 +157,27 @@ int main(int argc, char** argv) {
   bench_accuracy_command->add_flag("--quick", bench_accuracy.quick,
                                    "A reduced sweep (3 cases, 2 step sizes, 1 timing) for tests");
 
+  BenchContactOptions bench_contact;
+  CLI::App* bench_contact_command = bench_command->add_subcommand(
+      "contact",
+      "The pile of issue 12 in tumble and in Bullet 3.24 (through contact_bench), in one run");
+  bench_contact_command->add_option("--bodies", bench_contact.bodies, "Boxes in the pile")
+      ->check(whole_number_in(0, 100000, "from 0 to 100000"))
+      ->capture_default_str();
+  bench_contact_command
+      ->add_option("--seconds", bench_contact.seconds, "Simulated time (s), in steps of 1/60 s")
+      ->check(CLI::Range(0.0, 3600.0))
+      ->capture_default_str();
+  bench_contact_command
+      ->add_option("--seed", bench_contact.seed,
+                   "Seed of the boxes' sizes, orientations and velocities")
+      ->capture_default_str();
+  bench_contact_command
+      ->add_option("--out", bench_contact.out,
+                   "An existing folder for contact_bench.json and contact_bench.csv")
+      ->check(kNotEmpty);
+  bench_contact_command->add_flag("-q,--quiet", bench_contact.quiet, "No progress");
+
   CheckOptions check;
   CLI::App* check_command = app.add_subcommand(
       "check", "Validate a scene and warn about its step: exit 0 if valid, 2 if not");
@@ -176,6 +198,7 @@ int main(int argc, char** argv) {
     if (simulate_command->parsed()) return run_simulate(simulate, stderr);
     if (bench_pipeline_command->parsed()) return run_bench_pipeline(bench_pipeline, stdout, stderr);
     if (bench_accuracy_command->parsed()) return run_bench_accuracy(bench_accuracy, stdout, stderr);
+    if (bench_contact_command->parsed()) return run_bench_contact(bench_contact, stdout, stderr);
     if (check_command->parsed()) return run_check(check, stdout, stderr);
     if (diff_command->parsed()) return run_diff(diff, stdout, stderr);
     if (render_command->parsed()) {

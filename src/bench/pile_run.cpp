@@ -32,6 +32,10 @@ std::size_t peak_contact_step(const PileRun& run) {
   return peak == run.contacts.end() ? 0 : static_cast<std::size_t>(peak - run.contacts.begin());
 }
 
+double peak_contact_time(const PileRun& run, double dt) {
+  return static_cast<double>(peak_contact_step(run) + 1) * dt;
+}
+
 double ms_at_peak_contacts(const PileRun& run) {
   if (run.step_ms.empty()) return 0.0;
   const int peak = run.contacts.at(peak_contact_step(run));

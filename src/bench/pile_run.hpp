@@ -37,6 +37,8 @@ double median_step_ms(const PileRun& run);
 double median_step_cpu_ms(const PileRun& run);
 // The index of the first step with the most contacts (0 for a run of no steps).
 std::size_t peak_contact_step(const PileRun& run);
+// When the peak is reached (s): the end of peak_contact_step, with `dt` the pile's step (s).
+double peak_contact_time(const PileRun& run, double dt);
 // The cost when the most pairs touch (ms): the median wall time of the steps with at least 95% of
 // the peak contact count. One step's time alone is mostly scheduler noise on a shared machine;
 // the steps near the peak do the same work.

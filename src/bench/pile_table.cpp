@@ -35,7 +35,7 @@ const Row kRows[] = {
                                  : std::to_string(r.contacts[peak_contact_step(r)]);
      }},
     {"peak at t (s)",
-     [](const PileRun& r, double dt) { return fixed((peak_contact_step(r) + 1) * dt, 2); }},
+     [](const PileRun& r, double dt) { return fixed(peak_contact_time(r, dt), 2); }},
     {"contacts at end",
      [](const PileRun& r, double) {
        return r.contacts.empty() ? std::string("-") : std::to_string(r.contacts.back());

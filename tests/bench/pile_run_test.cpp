@@ -24,7 +24,8 @@ TEST(PileRun, PeakContactsIsTheFirstStepWithTheMost) {
   run.contacts = {0, 7, 9, 9, 4};
   run.step_ms = {1.0, 2.0, 3.0, 4.0, 5.0};
   EXPECT_EQ(peak_contact_step(run), 2u);
-  EXPECT_EQ(ms_at_peak_contacts(run), 3.5);  // the two steps of 9
+  EXPECT_EQ(peak_contact_time(run, 0.5), 1.5);  // s: the end of the third step
+  EXPECT_EQ(ms_at_peak_contacts(run), 3.5);     // the two steps of 9
 }
 
 // 96 and 95 are within 5% of 100, 94 is not: the median of 7, 8 and 30 ms.

@@ -53,10 +53,12 @@ class CommandTest : public ::testing::Test {
     return wait(start(arguments, prefix));
   }
 
-  // Starts `tumble ARGUMENTS` (as tumble() does) without waiting for it.
-  pid_t start(const std::string& arguments, const std::string& prefix = "exec ") const {
-    const std::string command = prefix + std::string(TUMBLE_EXECUTABLE) + " " + arguments + " >" +
-                                path("stdout") + " 2>" + path("stderr");
+  // Starts `tumble ARGUMENTS` (as tumble() does) without waiting for it. `executable` is the
+  // built tumble unless a test runs a copy of it elsewhere.
+  pid_t start(const std::string& arguments, const std::string& prefix = "exec ",
+              const std::string& executable = TUMBLE_EXECUTABLE) const {
+    const std::string command =
+        prefix + executable + " " + arguments + " >" + path("stdout") + " 2>" + path("stderr");
     const pid_t pid = ::fork();
     if (pid == 0) {
       ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));

@@ -1,0 +1,21 @@
+// Another program run by tumble, its standard output read line by line as it comes (`tumble bench
+// contact` runs contact_bench for Bullet's column this way, so that tumble never links Bullet).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tumble::app {
+
+// Runs the executable at `program` (a path; PATH is not searched) with `arguments`, and hands
+// each line of its standard output, without the '\n', to `on_line` as it arrives. Its standard
+// input and error are tumble's. When `on_line` returns false the program is stopped (SIGTERM)
+// and waited for; the caller knows why.
+//
+// Returns "" when the program ran and exited with status 0, else why not, naming `program`.
+std::string run_reading_lines(const std::string& program, const std::vector<std::string>& arguments,
+                              const std::function<bool(std::string_view line)>& on_line);
+
+}  // namespace tumble::app
