@@ -43,6 +43,7 @@ struct PairManifold {
   Vec3 normal = Vec3::Zero();  // unit, world frame, from A towards B
   int count = 0;
   std::array<PairPoint, kMaxManifoldPoints> points;
+  PatchImpulses friction;  // of the manifold as a whole (physics/contact_solver.hpp)
 };
 
 // Which of the 15 axes the separating-axis test chose.

@@ -12,20 +12,13 @@ constexpr int kProjectionIterations = 4;
 // the velocity left is then about 1e-7 of what gravity adds in a step, far below what shows.
 constexpr double kRestingTolerance = 1e-6;
 
-// A pose being projected, and what the projection needs of its mass.
-struct Pose {
-  PrimaryState primary;
-  double inverse_mass = 0.0;              // 1/kg
-  const Mat3* inverse_inertia = nullptr;  // world, at the end of the free step (1/(kg m²))
-};
-
-Vec3 arm(const Pose& pose, const Vec3& anchor) {
+Vec3 arm(const ProjectedPose& pose, const Vec3& anchor) {
   return pose.primary.orientation * anchor;
 }
 
 // Pushes a's and b's poses apart along the point's normal until its separation is zero, by a
 // position-level impulse through both bodies' masses; false when it was not inside.
-bool project(const PositionPoint& point, Pose& a, Pose* b) {
+bool project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
   const Vec3 arm_a = arm(a, point.anchor_a);
   double separation = point.base + point.normal.dot(a.primary.position + arm_a);
   Vec3 arm_b = Vec3::Zero();
@@ -53,6 +46,14 @@ bool project(const PositionPoint& point, Pose& a, Pose* b) {
 }
 
 }  // namespace
+
+bool project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions) {
+  bool moved = false;
+  for (const PositionPoint& point : positions) {
+    moved |= project(point, poses[point.a], point.b == kStatic ? nullptr : &poses[point.b]);
+  }
+  return moved;
+}
 
 Quat rotated(const Quat& q, const Vec3& angle) {
   const double squared = angle.squaredNorm();
@@ -97,9 +98,9 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
                   .warm_start = true});
   // Small islands (one body on the floor, a short stack) are the common case: no allocation.
   constexpr std::size_t kInline = 8;
-  Pose inline_poses[kInline];
-  std::vector<Pose> heap;
-  Pose* poses = inline_poses;
+  ProjectedPose inline_poses[kInline];
+  std::vector<ProjectedPose> heap;
+  ProjectedPose* poses = inline_poses;
   if (bodies.size() > kInline) {
     heap.resize(bodies.size());
     poses = heap.data();
@@ -118,11 +119,7 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
                 .inverse_inertia = &solved.inverse_inertia};
   }
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
-    bool moved = false;
-    for (const PositionPoint& point : positions) {
-      moved |= project(point, poses[point.a], point.b == kStatic ? nullptr : &poses[point.b]);
-    }
-    if (!moved) break;
+    if (!project_pass({poses, bodies.size()}, positions)) break;
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out[i] = BodyState(poses[i].primary, bodies[i].model->constants);

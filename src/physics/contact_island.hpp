@@ -48,6 +48,18 @@ struct PositionPoint {
   double base = 0.0;             // m
 };
 
+// A pose being projected, and what the projection needs of its mass.
+struct ProjectedPose {
+  PrimaryState primary;
+  double inverse_mass = 0.0;              // 1/kg
+  const Mat3* inverse_inertia = nullptr;  // world (1/(kg m²))
+};
+
+// One pass of the projection: pushes the poses apart along each point still inside until its
+// separation is zero, by a position-level impulse through both bodies' masses (non-linear
+// Gauss-Seidel: it moves no momentum). Returns whether any point was inside.
+bool project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions);
+
 // Solves the island's velocity constraints (warm-started from each point's source), then moves
 // each body's pose by weight × its velocity change and projects the positions out of every
 // PositionPoint still inside (non-linear Gauss-Seidel, Catto, Box2D 2.4 "solve position

@@ -146,7 +146,7 @@ double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint>
 
 // One pass driving each bouncing point's normal speed up to -e × its approach speed, adding to
 // (never taking from below zero) the impulse it already has.
-double bounce_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
+double bounce_pass(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
                    const std::vector<double>& bounce_impulse, std::vector<double>& accumulated) {
   double largest_change = 0.0;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -197,13 +197,98 @@ double largest_step_within(const EnergyInStep& e, double bound) {
   return std::clamp(s, 0.0, 1.0);
 }
 
+// The bounce of the points whose `bouncing` entry is not 0 (solve_contacts and bounce say when),
+// from the bodies' velocities now, then held to `energy_before` (J).
+void bounce_points(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
+                   const std::vector<double>& bouncing, int iterations, double energy_before) {
+  const std::vector<SolverBody> inelastic(bodies.begin(), bodies.end());
+  std::vector<double> accumulated(points.size(), 0.0);
+  // A bounce is solved to round-off whatever the settings say: it happens once per impact, and
+  // its velocities decide everything after it (an elastic exchange of velocities, say).
+  for (int pass = 0; pass < std::max(iterations, kBounceIterations); ++pass) {
+    const double change = bounce_pass(bodies, points, bouncing, accumulated);
+    double largest = 0.0;
+    for (const double a : accumulated) largest = std::max(largest, a);
+    if (change <= kBounceTolerance * largest) break;
+  }
+  if (total_kinetic_energy(bodies) <= energy_before) return;
+  // One scale for the whole group: energy a bounce moves from one body to another is kept.
+  EnergyInStep energy;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const EnergyInStep e = energy_in_step(inelastic[b], bodies[b]);
+    energy.c0 += e.c0;
+    energy.c1 += e.c1;
+    energy.c2 += e.c2;
+  }
+  const double s = largest_step_within(energy, energy_before);
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    SolverBody& body = bodies[b];
+    const SolverBody& from = inelastic[b];
+    body.velocity = from.velocity + s * (body.velocity - from.velocity);
+    body.angular_velocity =
+        from.angular_velocity + s * (body.angular_velocity - from.angular_velocity);
+  }
+}
+
+// The normal row of one point of a sub-step of h (s), apart by `separation` (m).
+void solve_substep_normal(std::span<SolverBody> bodies, ContactConstraint& c, double separation,
+                          double h) {
+  SolverBody& a = bodies[c.a];
+  SolverBody* b = second(bodies, c);
+  const double allowed = separation > 0.0 ? separation / h : 0.0;  // approach speed (m/s)
+  const double accumulated =
+      std::max(0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + allowed));
+  const double change = accumulated - c.normal_impulse;
+  c.normal_impulse = accumulated;
+  c.largest_impulse = std::max(c.largest_impulse, accumulated);
+  push(c.normal, a, b, change);
+}
+
+}  // namespace
+
 double total_kinetic_energy(std::span<const SolverBody> bodies) {
   double total = 0.0;
   for (const SolverBody& body : bodies) total += body.kinetic_energy();
   return total;
 }
 
-}  // namespace
+void warm_start(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
+                std::span<const FrictionPatch> patches) {
+  for (const ContactConstraint& c : points) {
+    push(c.normal, bodies[c.a], second(bodies, c), c.normal_impulse);
+  }
+  for (const FrictionPatch& f : patches) {
+    SolverBody& a = bodies[f.a];
+    SolverBody* b = f.b == kStatic ? nullptr : &bodies[f.b];
+    for (int k = 0; k < 2; ++k) push(f.tangent[k], a, b, f.tangent_impulse[k]);
+    push(f.twist, a, b, f.twist_impulse);
+  }
+}
+
+void substep_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
+                  std::span<const double> separations, std::span<FrictionPatch> patches,
+                  double h) {
+  for (FrictionPatch& f : patches) {
+    for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
+      solve_substep_normal(bodies, points[i], separations[i], h);
+    }
+    solve_friction(bodies, points, f);
+  }
+}
+
+void bounce(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
+            double threshold, double energy_bound) {
+  std::vector<double> bouncing(points.size(), 0.0);
+  bool any = false;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const ContactConstraint& c = points[i];
+    if (c.restitution > 0.0 && c.approach_speed < -threshold && c.largest_impulse > 0.0) {
+      bouncing[i] = 1.0;
+      any = true;
+    }
+  }
+  if (any) bounce_points(bodies, points, bouncing, kBounceIterations, energy_bound);
+}
 
 SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constants,
                             const Mat3& rotation) {
@@ -278,8 +363,8 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
   const auto may_bounce = [&](const ContactConstraint& c) {
     return c.restitution > 0.0 && c.approach_speed < -settings.restitution_threshold;
   };
-  const bool bounce = std::any_of(points.begin(), points.end(), may_bounce);
-  const double energy_before = bounce ? total_kinetic_energy(bodies) : 0.0;
+  const bool some_may_bounce = std::any_of(points.begin(), points.end(), may_bounce);
+  const double energy_before = some_may_bounce ? total_kinetic_energy(bodies) : 0.0;
 
   if (settings.warm_start) {
     for (ContactConstraint& c : points) {
@@ -315,7 +400,7 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
 
   // The bounce, from the velocities the inelastic solve left (Poisson-like: compression first,
   // then restitution), only where the point approached fast enough and was pushed.
-  if (!bounce) return;
+  if (!some_may_bounce) return;
   std::vector<double> bouncing(points.size(), 0.0);
   bool any = false;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -324,34 +409,7 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
       any = true;
     }
   }
-  if (!any) return;
-  const std::vector<SolverBody> inelastic(bodies.begin(), bodies.end());
-  std::vector<double> accumulated(points.size(), 0.0);
-  // A bounce is solved to round-off whatever the settings say: it happens once per impact, and
-  // its velocities decide everything after it (an elastic exchange of velocities, say).
-  for (int pass = 0; pass < std::max(settings.iterations, kBounceIterations); ++pass) {
-    const double change = bounce_pass(bodies, points, bouncing, accumulated);
-    double largest = 0.0;
-    for (const double a : accumulated) largest = std::max(largest, a);
-    if (change <= kBounceTolerance * largest) break;
-  }
-  if (total_kinetic_energy(bodies) <= energy_before) return;
-  // One scale for the whole group: energy a bounce moves from one body to another is kept.
-  EnergyInStep energy;
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const EnergyInStep e = energy_in_step(inelastic[b], bodies[b]);
-    energy.c0 += e.c0;
-    energy.c1 += e.c1;
-    energy.c2 += e.c2;
-  }
-  const double s = largest_step_within(energy, energy_before);
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    SolverBody& body = bodies[b];
-    const SolverBody& from = inelastic[b];
-    body.velocity = from.velocity + s * (body.velocity - from.velocity);
-    body.angular_velocity =
-        from.angular_velocity + s * (body.angular_velocity - from.angular_velocity);
-  }
+  if (any) bounce_points(bodies, points, bouncing, settings.iterations, energy_before);
 }
 
 }  // namespace tumble::physics

@@ -227,12 +227,16 @@ PlaneAdvance advance_among_planes(Integrator integrator, const BodyModel& model,
   return out;
 }
 
-void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
+namespace {
+
+// add_plane_points with the corners closer than `margin` (m) from contacts.separations.
+void add_plane_points_within(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
                       const SolverBody& solver_body, const std::vector<Plane>& planes,
-                      PlaneContacts& contacts, std::vector<ContactConstraint>& points,
-                      std::vector<FrictionPatch>& patches, std::vector<PositionPoint>& positions) {
-  find_constraints(model, body, rotation, solver_body, planes, contacts.separations,
-                   kTouchingDistance, contacts.found, points, patches);
+                      double margin, PlaneContacts& contacts,
+                      std::vector<ContactConstraint>& points, std::vector<FrictionPatch>& patches,
+                      std::vector<PositionPoint>& positions) {
+  find_constraints(model, body, rotation, solver_body, planes, contacts.separations, margin,
+                   contacts.found, points, patches);
   // Warm start from the last step's impulses of the same corners, and of the same plane's
   // friction.
   for (std::size_t p = 0; p < planes.size(); ++p) {
@@ -255,12 +259,36 @@ void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& ro
   contacts.manifolds.swap(contacts.found);
 }
 
-BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
-                           double t, double dt, const std::vector<Plane>& planes,
-                           const ContactSettings& settings, PlaneContacts& contacts) {
-  PlaneAdvance advance =
-      advance_among_planes(integrator, model, in, t, dt, planes, settings, contacts);
-  if (!advance.touching) return std::move(advance.end);
+}  // namespace
+
+void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
+                      const SolverBody& solver_body, const std::vector<Plane>& planes,
+                      PlaneContacts& contacts, std::vector<ContactConstraint>& points,
+                      std::vector<FrictionPatch>& patches, std::vector<PositionPoint>& positions) {
+  add_plane_points_within(model, body, rotation, solver_body, planes, kTouchingDistance, contacts,
+                          points, patches, positions);
+}
+
+void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
+                                  const BodyState& start, const Mat3& rotation, double margin,
+                                  const SolverBody& solver_body, const std::vector<Plane>& planes,
+                                  PlaneContacts& contacts, std::vector<ContactConstraint>& points,
+                                  std::vector<FrictionPatch>& patches,
+                                  std::vector<PositionPoint>& positions) {
+  contacts.manifolds.resize(planes.size());
+  if (!near_any(start.position(), model.half_size, planes, margin)) {
+    for (Manifold& m : contacts.manifolds) m.count = 0;
+    return;
+  }
+  corner_separations(rotation, start.position(), model.half_size, planes, margin,
+                     contacts.separations);
+  add_plane_points_within(model, body, rotation, solver_body, planes, margin, contacts, points,
+                          patches, positions);
+}
+
+BodyState rest_on_planes(Integrator integrator, const BodyModel& model,
+                         const PlaneAdvance& advance, const std::vector<Plane>& planes,
+                         const ContactSettings& settings, PlaneContacts& contacts) {
   const IslandBody body{.model = &model,
                         .end = advance.end,
                         .rotation = advance.rotation,
@@ -275,6 +303,15 @@ BodyState step_with_planes(Integrator integrator, const BodyModel& model, const 
   resolve_island({&body, 1}, solver, contacts.points, contacts.patches, contacts.positions,
                  settings, {&out, 1});
   return out;
+}
+
+BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
+                           double t, double dt, const std::vector<Plane>& planes,
+                           const ContactSettings& settings, PlaneContacts& contacts) {
+  PlaneAdvance advance =
+      advance_among_planes(integrator, model, in, t, dt, planes, settings, contacts);
+  if (!advance.touching) return std::move(advance.end);
+  return rest_on_planes(integrator, model, advance, planes, settings, contacts);
 }
 
 }  // namespace tumble::physics

@@ -66,6 +66,21 @@ void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& ro
                       PlaneContacts& contacts, std::vector<ContactConstraint>& points,
                       std::vector<FrictionPatch>& patches, std::vector<PositionPoint>& positions);
 
+// The same for the sub-stepped solve of an island (physics/substep_island.hpp): each plane's
+// manifold of the box at its start pose (`start`, whose rotation is `rotation`), its corners
+// closer than `margin` (m: as far as the box moves in the step) as speculative points.
+void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
+                                  const BodyState& start, const Mat3& rotation, double margin,
+                                  const SolverBody& solver_body, const std::vector<Plane>& planes,
+                                  PlaneContacts& contacts, std::vector<ContactConstraint>& points,
+                                  std::vector<FrictionPatch>& patches,
+                                  std::vector<PositionPoint>& positions);
+
+// Step 3 of step_with_planes for a body that touches planes at the end of `advance`.
+BodyState rest_on_planes(Integrator integrator, const BodyModel& model,
+                         const PlaneAdvance& advance, const std::vector<Plane>& planes,
+                         const ContactSettings& settings, PlaneContacts& contacts);
+
 // Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
 // 1. the free step; if no corner ends inside a plane, that is the step (a body that touches
 //    nothing runs the integrator alone);

@@ -11,6 +11,7 @@
 #include "physics/broad_phase.hpp"
 #include "physics/contact_island.hpp"
 #include "physics/plane_contact_step.hpp"
+#include "physics/substep_island.hpp"
 
 namespace tumble::physics {
 
@@ -18,6 +19,16 @@ namespace tumble::physics {
 struct PairContact {
   BodyPair bodies;        // (A, B), A < B: the manifold's A and B
   PairManifold manifold;  // its points' impulses warm-start the next step's
+};
+
+// A pair's place in an island's lists (world_step.cpp): its points in `slots` slots from
+// `first`, its friction patch, and how far its bodies can close on each other in the step.
+struct PairRows {
+  std::uint32_t pair = 0;   // index into WorldContacts::found
+  std::uint32_t first = 0;  // of its points (and positions)
+  std::uint32_t slots = 0;
+  std::uint32_t patch = 0;
+  double reach = 0.0;  // m
 };
 
 // What the world step keeps between steps (warm starting), and scratch space kept so that a
@@ -40,20 +51,26 @@ struct WorldContacts {
   std::vector<std::uint32_t> members, member_offsets;   // bodies by island
   std::vector<std::uint32_t> pair_order, pair_offsets;  // indices into `found` by island
   std::vector<IslandBody> island_bodies;
+  std::vector<BodyState> island_out;
+  std::vector<SubstepBody> substep_bodies;
   std::vector<SolverBody> solver;
   std::vector<ContactConstraint> points;
   std::vector<PositionPoint> positions;
   std::vector<FrictionPatch> patches;
-  std::vector<BodyState> island_out;
+  SubstepScratch substep;
+  std::vector<PairRows> rows;  // of the island's pairs found again at each sub-step
 };
 
 // Advances every body from `in` at t to t + dt (s) into `out`: the free steps, impacts with the
 // planes at their times (plane_contact_step.hpp), then every touching pair of bodies (found by
 // sweep and prune and the box-box narrow phase at the start of the step, with speculative points
 // as far as the pair moves in the step, so a fast body cannot pass through another) and every
-// resting contact with a plane, solved island by island (physics/contact_island.hpp). Bodies
-// collide when settings.collide_bodies and both models' `collides` say so. A world where nothing
-// touches gives exactly each body's free step.
+// resting contact with a plane, solved island by island: a body alone on planes as
+// step_with_planes does; a small, slow island (a tower, a pyramid) to convergence after the free
+// steps (physics/contact_island.hpp); a large or fast one (a pile, a pour, a strike) in sub-steps
+// from the start of the step (physics/substep_island.hpp), finding fast pairs' points again
+// before each. Bodies collide when settings.collide_bodies and both models' `collides` say so. A
+// world where nothing touches gives exactly each body's free step.
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t /* s */, double dt /* s */,
                 const std::vector<Plane>& planes, const ContactSettings& settings,

@@ -1,0 +1,137 @@
+#include "physics/substep_island.hpp"
+
+#include <algorithm>
+
+namespace tumble::physics {
+namespace {
+
+// Into `out`, each point's separation (m) at the bodies' poses: their states' positions and the
+// rotations in `rotations`.
+void measure(std::span<const SubstepBody> bodies, std::span<const Mat3> rotations,
+             std::span<const PositionPoint> positions, std::vector<double>& out) {
+  out.resize(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const PositionPoint& p = positions[i];
+    double s = p.base + p.normal.dot(bodies[p.a].state.position() + rotations[p.a] * p.anchor_a);
+    if (p.b != kStatic) {
+      s -= p.normal.dot(bodies[p.b].state.position() + rotations[p.b] * p.anchor_b);
+    }
+    out[i] = s;
+  }
+}
+
+// Scales every accumulated impulse of the points and patches by `factor`.
+void scale_impulses(std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
+                    double factor) {
+  for (ContactConstraint& c : points) c.normal_impulse *= factor;
+  for (FrictionPatch& f : patches) {
+    f.tangent_impulse[0] *= factor;
+    f.tangent_impulse[1] *= factor;
+    f.twist_impulse *= factor;
+  }
+}
+
+}  // namespace
+
+void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
+                    std::span<SolverBody> solver, std::span<ContactConstraint> points,
+                    std::span<const PositionPoint> positions, std::span<FrictionPatch> patches,
+                    double t, double dt, const ContactSettings& settings,
+                    SubstepScratch& scratch, const std::function<void(int)>& refresh) {
+  const double h = dt / kSubsteps;
+
+  // Warm start: a sub-step's share of the last step's impulses.
+  for (ContactConstraint& c : points) {
+    c.normal_impulse = c.source ? c.source->normal : 0.0;
+    c.largest_impulse = 0.0;
+  }
+  for (FrictionPatch& f : patches) {
+    if (!f.source) continue;
+    for (int k = 0; k < 2; ++k) f.tangent_impulse[k] = f.source->tangent.dot(f.tangent[k].linear);
+    f.twist_impulse = f.source->twist;
+  }
+  scale_impulses(points, patches, 1.0 / kSubsteps);
+
+  const bool may_bounce = std::any_of(points.begin(), points.end(), [&](const auto& c) {
+    return c.restitution > 0.0 && c.approach_speed < -settings.restitution_threshold;
+  });
+  double energy_bound = 0.0;  // the most kinetic energy an impact found (J)
+
+  const std::size_t n = bodies.size();
+  scratch.rotations.resize(n);
+  scratch.free_velocity.resize(n);
+  scratch.free_angular_velocity.resize(n);
+  scratch.free_angular_momentum.resize(n);
+  for (int substep = 0; substep < kSubsteps; ++substep) {
+    if (substep > 0 && refresh) refresh(substep);
+      // The forces over the sub-step, by the scene's integrator; its positions are not used: the
+    // poses move with the solved velocities below (symplectic Euler, as Box2D's sub-steps do), so
+    // a body held still by its contacts stays exactly where it is.
+    for (std::size_t i = 0; i < n; ++i) {
+      const BodyState free =
+          step(integrator, *bodies[i].model, bodies[i].state, t + substep * h, h);
+      scratch.free_velocity[i] = free.velocity();
+      scratch.free_angular_velocity[i] = free.angular_velocity();
+      scratch.free_angular_momentum[i] = free.primary().angular_momentum;
+      solver[i].velocity = free.velocity();
+      solver[i].angular_velocity = free.angular_velocity();
+      scratch.rotations[i] = bodies[i].state.rotation();
+    }
+    if (may_bounce) energy_bound = std::max(energy_bound, total_kinetic_energy(solver));
+    measure(bodies, scratch.rotations, positions, scratch.separations);
+    warm_start(solver, points, patches);
+    substep_pass(solver, points, scratch.separations, patches, h);
+
+    scratch.poses.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      PrimaryState primary = bodies[i].state.primary();
+      primary.position += h * solver[i].velocity;
+      primary.orientation = rotated(primary.orientation, h * solver[i].angular_velocity).normalized();
+      scratch.poses[i] = {.primary = primary,
+                          .inverse_mass = bodies[i].model->constants.inverse_mass,
+                          .inverse_inertia = &solver[i].inverse_inertia};
+    }
+    project_pass(scratch.poses, positions);
+    for (std::size_t i = 0; i < n; ++i) {
+      bodies[i].state = BodyState(scratch.poses[i].primary, bodies[i].model->constants);
+      scratch.rotations[i] = bodies[i].state.rotation();
+    }
+    measure(bodies, scratch.rotations, positions, scratch.separations);
+    substep_pass(solver, points, scratch.separations, patches, h);
+
+    for (std::size_t i = 0; i < n; ++i) {
+      PrimaryState primary = bodies[i].state.primary();
+      primary.momentum = solver[i].linear_impulse(Vec3::Zero());  // m v
+      primary.angular_momentum = scratch.free_angular_momentum[i] +
+                                 solver[i].angular_impulse(scratch.free_angular_velocity[i]);
+      bodies[i].state = BodyState(primary, bodies[i].model->constants);
+    }
+  }
+
+  if (may_bounce) {
+    for (std::size_t i = 0; i < n; ++i) {
+      scratch.free_velocity[i] = solver[i].velocity;
+      scratch.free_angular_velocity[i] = solver[i].angular_velocity;
+    }
+    bounce(solver, points, settings.restitution_threshold, energy_bound);
+    for (std::size_t i = 0; i < n; ++i) {
+      PrimaryState primary = bodies[i].state.primary();
+      primary.momentum += solver[i].linear_impulse(scratch.free_velocity[i]);
+      primary.angular_momentum += solver[i].angular_impulse(scratch.free_angular_velocity[i]);
+      bodies[i].state = BodyState(primary, bodies[i].model->constants);
+    }
+  }
+
+  scale_impulses(points, patches, kSubsteps);
+  for (const ContactConstraint& c : points) {
+    if (c.source) c.source->normal = c.normal_impulse;
+  }
+  for (const FrictionPatch& f : patches) {
+    if (!f.source) continue;
+    f.source->tangent =
+        f.tangent_impulse[0] * f.tangent[0].linear + f.tangent_impulse[1] * f.tangent[1].linear;
+    f.source->twist = f.twist_impulse;
+  }
+}
+
+}  // namespace tumble::physics

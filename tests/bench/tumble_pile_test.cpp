@@ -1,0 +1,34 @@
+// The pile in tumble's own world step: the sub-stepped solve of large, fast islands
+// (physics/substep_island.hpp) pours, settles and holds it.
+#include "bench/tumble_pile.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "bench/pile.hpp"
+
+namespace tumble::bench {
+namespace {
+
+// 300 boxes poured into the bin for 10 s: none leaves it, and once settled (the last second)
+// the pile is at most 2 mm inside itself or the floor and its fastest box below 0.05 m/s. (The
+// pour itself goes deeper for a step or two where a box lands on an edge: the README's figures.)
+TEST(TumblePile, ThreeHundredBoxesPourSettleAndHold) {
+  const Pile pile = make_pile(300, 1, 10.0);
+  const PileRun run = run_pile_in_tumble(pile);
+  ASSERT_EQ(run.depth_m.size(), static_cast<std::size_t>(pile.steps));
+  const std::size_t settled = run.depth_m.size() - 60;
+  const double depth = *std::max_element(run.depth_m.begin() + settled, run.depth_m.end());
+  const double speed = *std::max_element(run.top_speed.begin() + settled, run.top_speed.end());
+  std::printf("[ measured ] 300 boxes, last second: deepest %.2e m, fastest %.3f m/s; whole run "
+              "deepest %.3f m, %d out\n",
+              depth, speed, run.largest_penetration_m, run.escaped);
+  EXPECT_EQ(run.escaped, 0);
+  EXPECT_LT(depth, 2e-3);   // m
+  EXPECT_LT(speed, 0.05);   // m/s
+}
+
+}  // namespace
+}  // namespace tumble::bench
