@@ -266,8 +266,7 @@ void warm_start(std::span<SolverBody> bodies, std::span<const ContactConstraint>
 }
 
 void substep_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
-                  std::span<const double> separations, std::span<FrictionPatch> patches,
-                  double h) {
+                  std::span<const double> separations, std::span<FrictionPatch> patches, double h) {
   for (FrictionPatch& f : patches) {
     for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
       solve_substep_normal(bodies, points[i], separations[i], h);

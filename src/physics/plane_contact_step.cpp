@@ -231,10 +231,11 @@ namespace {
 
 // add_plane_points with the corners closer than `margin` (m) from contacts.separations.
 void add_plane_points_within(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
-                      const SolverBody& solver_body, const std::vector<Plane>& planes,
-                      double margin, PlaneContacts& contacts,
-                      std::vector<ContactConstraint>& points, std::vector<FrictionPatch>& patches,
-                      std::vector<PositionPoint>& positions) {
+                             const SolverBody& solver_body, const std::vector<Plane>& planes,
+                             double margin, PlaneContacts& contacts,
+                             std::vector<ContactConstraint>& points,
+                             std::vector<FrictionPatch>& patches,
+                             std::vector<PositionPoint>& positions) {
   find_constraints(model, body, rotation, solver_body, planes, contacts.separations, margin,
                    contacts.found, points, patches);
   // Warm start from the last step's impulses of the same corners, and of the same plane's
@@ -286,9 +287,9 @@ void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
                           patches, positions);
 }
 
-BodyState rest_on_planes(Integrator integrator, const BodyModel& model,
-                         const PlaneAdvance& advance, const std::vector<Plane>& planes,
-                         const ContactSettings& settings, PlaneContacts& contacts) {
+BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
+                         const std::vector<Plane>& planes, const ContactSettings& settings,
+                         PlaneContacts& contacts) {
   const IslandBody body{.model = &model,
                         .end = advance.end,
                         .rotation = advance.rotation,

@@ -77,9 +77,9 @@ void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
                                   std::vector<PositionPoint>& positions);
 
 // Step 3 of step_with_planes for a body that touches planes at the end of `advance`.
-BodyState rest_on_planes(Integrator integrator, const BodyModel& model,
-                         const PlaneAdvance& advance, const std::vector<Plane>& planes,
-                         const ContactSettings& settings, PlaneContacts& contacts);
+BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
+                         const std::vector<Plane>& planes, const ContactSettings& settings,
+                         PlaneContacts& contacts);
 
 // Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
 // 1. the free step; if no corner ends inside a plane, that is the step (a body that touches

@@ -36,8 +36,8 @@ void scale_impulses(std::span<ContactConstraint> points, std::span<FrictionPatch
 void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
                     std::span<SolverBody> solver, std::span<ContactConstraint> points,
                     std::span<const PositionPoint> positions, std::span<FrictionPatch> patches,
-                    double t, double dt, const ContactSettings& settings,
-                    SubstepScratch& scratch, const std::function<void(int)>& refresh) {
+                    double t, double dt, const ContactSettings& settings, SubstepScratch& scratch,
+                    const std::function<void(int)>& refresh) {
   const double h = dt / kSubsteps;
 
   // Warm start: a sub-step's share of the last step's impulses.
@@ -64,7 +64,7 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
   scratch.free_angular_momentum.resize(n);
   for (int substep = 0; substep < kSubsteps; ++substep) {
     if (substep > 0 && refresh) refresh(substep);
-      // The forces over the sub-step, by the scene's integrator; its positions are not used: the
+    // The forces over the sub-step, by the scene's integrator; its positions are not used: the
     // poses move with the solved velocities below (symplectic Euler, as Box2D's sub-steps do), so
     // a body held still by its contacts stays exactly where it is.
     for (std::size_t i = 0; i < n; ++i) {
@@ -86,7 +86,8 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
     for (std::size_t i = 0; i < n; ++i) {
       PrimaryState primary = bodies[i].state.primary();
       primary.position += h * solver[i].velocity;
-      primary.orientation = rotated(primary.orientation, h * solver[i].angular_velocity).normalized();
+      primary.orientation =
+          rotated(primary.orientation, h * solver[i].angular_velocity).normalized();
       scratch.poses[i] = {.primary = primary,
                           .inverse_mass = bodies[i].model->constants.inverse_mass,
                           .inverse_inertia = &solver[i].inverse_inertia};

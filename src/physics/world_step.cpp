@@ -13,12 +13,11 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 // bring the end back near the start) plus its corners' swing (its fastest turn times its half
 // diagonal).
 double reach(const BodyState& start, const BodyState& end, const Vec3& half_size, double h) {
-  const double travel =
-      std::max((end.position() - start.position()).norm(),
-               h * std::max(start.velocity().norm(), end.velocity().norm()));
-  const double swing =
-      h * std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
-      half_size.norm();
+  const double travel = std::max((end.position() - start.position()).norm(),
+                                 h * std::max(start.velocity().norm(), end.velocity().norm()));
+  const double swing = h *
+                       std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
+                       half_size.norm();
   return travel + swing;
 }
 
@@ -171,15 +170,14 @@ constexpr double kRefindReach = 0.02;
 void clear_slot(std::uint32_t a, std::uint32_t b, ContactConstraint& point,
                 PositionPoint& position) {
   const Vec3 zero = Vec3::Zero();
-  point = ContactConstraint{
-      .a = a,
-      .b = b,
-      .normal = {.linear = zero,
-                 .moment_a = zero,
-                 .turn_a = zero,
-                 .moment_b = zero,
-                 .turn_b = zero,
-                 .mass = 0.0}};
+  point = ContactConstraint{.a = a,
+                            .b = b,
+                            .normal = {.linear = zero,
+                                       .moment_a = zero,
+                                       .turn_a = zero,
+                                       .moment_b = zero,
+                                       .turn_b = zero,
+                                       .mass = 0.0}};
   position = {.a = a, .b = b, .base = std::numeric_limits<double>::infinity()};
 }
 
@@ -222,10 +220,9 @@ void write_pair_rows(const PairRows& rows, std::span<const BodyModel> models,
   }
   const PatchShape shape_b = patch_shape({arms_b, count}, n);
   const PatchShape shape_a = patch_shape({arms_a, count}, n);
-  contacts.patches[rows.patch] =
-      make_patch(first, contacts.solver[first], shape_b.centre_arm, second,
-                 &contacts.solver[second], shape_a.centre_arm, n, material.friction,
-                 shape_b.twist_arm, rows.first, count);
+  contacts.patches[rows.patch] = make_patch(
+      first, contacts.solver[first], shape_b.centre_arm, second, &contacts.solver[second],
+      shape_a.centre_arm, n, material.friction, shape_b.twist_arm, rows.first, count);
   contacts.patches[rows.patch].source = &pair.manifold.friction;
 }
 
@@ -239,10 +236,9 @@ void refind_pair(const PairRows& rows, std::span<const BodyModel> models, double
   const BodyState& a_state = contacts.substep_bodies[contacts.local[a]].state;
   const BodyState& b_state = contacts.substep_bodies[contacts.local[b]].state;
   const Mat3 a_rotation = a_state.rotation(), b_rotation = b_state.rotation();
-  PairManifold found =
-      box_box_manifold(pose_of(a_state, a_rotation, models[a].half_size),
-                       pose_of(b_state, b_rotation, models[b].half_size),
-                       kTouchingDistance + left * rows.reach);
+  PairManifold found = box_box_manifold(pose_of(a_state, a_rotation, models[a].half_size),
+                                        pose_of(b_state, b_rotation, models[b].half_size),
+                                        kTouchingDistance + left * rows.reach);
   // A point found again keeps its impulse, and what the bounce needs: the speed it approached at
   // before it pushed, and whether it pushed. A new one takes the pair's fastest approach and its
   // largest push: the features found after an impact differ from the speculative ones before it.
@@ -252,7 +248,8 @@ void refind_pair(const PairRows& rows, std::span<const BodyModel> models, double
     pair_approach = std::min(pair_approach, c.approach_speed);
     pair_largest = std::max(pair_largest, c.largest_impulse);
   }
-  double impulse[kMaxManifoldPoints] = {}, largest[kMaxManifoldPoints], approach[kMaxManifoldPoints];
+  double impulse[kMaxManifoldPoints] = {}, largest[kMaxManifoldPoints],
+         approach[kMaxManifoldPoints];
   std::fill(std::begin(largest), std::end(largest), pair_largest);
   std::fill(std::begin(approach), std::end(approach), pair_approach);
   for (int k = 0; k < found.count; ++k) {
@@ -279,8 +276,20 @@ void refind_pair(const PairRows& rows, std::span<const BodyModel> models, double
     speed = std::min(speed, approach[k]);
   }
   FrictionPatch& patch = contacts.patches[rows.patch];
-  for (int k = 0; k < 2; ++k) patch.tangent_impulse[k] = tangent_impulse.dot(patch.tangent[k].linear);
+  for (int k = 0; k < 2; ++k)
+    patch.tangent_impulse[k] = tangent_impulse.dot(patch.tangent[k].linear);
   patch.twist_impulse = twist_impulse;
+}
+
+// The island's bodies, with the lists its solve fills emptied.
+std::span<const std::uint32_t> start_island(std::uint32_t island, WorldContacts& contacts) {
+  contacts.solver.clear();
+  contacts.points.clear();
+  contacts.patches.clear();
+  contacts.positions.clear();
+  contacts.local.resize(contacts.island_of.size());
+  return {contacts.members.data() + contacts.member_offsets[island],
+          contacts.member_offsets[island + 1] - contacts.member_offsets[island]};
 }
 
 // A small island (a tower, a pyramid, a few boxes knocking): every body's free step, then one
@@ -290,15 +299,8 @@ void solve_converged(Integrator integrator, std::span<const BodyModel> models,
                      std::span<const BodyState> in, double dt, std::uint32_t island,
                      const std::vector<Plane>& planes, const ContactSettings& settings,
                      WorldContacts& contacts, std::span<BodyState> out) {
-  const std::span<const std::uint32_t> members(
-      contacts.members.data() + contacts.member_offsets[island],
-      contacts.member_offsets[island + 1] - contacts.member_offsets[island]);
+  const std::span<const std::uint32_t> members = start_island(island, contacts);
   contacts.island_bodies.clear();
-  contacts.solver.clear();
-  contacts.points.clear();
-  contacts.patches.clear();
-  contacts.positions.clear();
-  contacts.local.resize(contacts.island_of.size());
   for (const std::uint32_t i : members) {
     const PlaneAdvance& advance = contacts.advances[i];
     const Mat3 rotation = advance.touching ? advance.rotation : advance.end.rotation();
@@ -372,18 +374,11 @@ void solve_converged(Integrator integrator, std::span<const BodyModel> models,
 // A large island (a pile): the sub-stepped solve from the start of the step
 // (physics/substep_island.hpp), with every point found at the start pose.
 void solve_substepped(Integrator integrator, std::span<const BodyModel> models,
-                  std::span<const BodyState> in, double t, double dt, std::uint32_t island,
-                  const std::vector<Plane>& planes, const ContactSettings& settings,
-                  WorldContacts& contacts, std::span<BodyState> out) {
-  const std::span<const std::uint32_t> members(
-      contacts.members.data() + contacts.member_offsets[island],
-      contacts.member_offsets[island + 1] - contacts.member_offsets[island]);
+                      std::span<const BodyState> in, double t, double dt, std::uint32_t island,
+                      const std::vector<Plane>& planes, const ContactSettings& settings,
+                      WorldContacts& contacts, std::span<BodyState> out) {
+  const std::span<const std::uint32_t> members = start_island(island, contacts);
   contacts.substep_bodies.clear();
-  contacts.solver.clear();
-  contacts.points.clear();
-  contacts.patches.clear();
-  contacts.positions.clear();
-  contacts.local.resize(contacts.island_of.size());
   for (const std::uint32_t i : members) {
     contacts.local[i] = static_cast<std::uint32_t>(contacts.substep_bodies.size());
     contacts.substep_bodies.push_back({.model = &models[i], .state = in[i]});
@@ -412,8 +407,9 @@ void solve_substepped(Integrator integrator, std::span<const BodyModel> models,
                   .patch = static_cast<std::uint32_t>(contacts.patches.size()),
                   .reach = reach(in[a], a_end, models[a].half_size, dt) +
                            reach(in[b], b_end, models[b].half_size, dt)};
-    rows.slots = rows.reach > kRefindReach ? kMaxManifoldPoints
-                                           : static_cast<std::uint32_t>(contacts.found[p].manifold.count);
+    rows.slots = rows.reach > kRefindReach
+                     ? kMaxManifoldPoints
+                     : static_cast<std::uint32_t>(contacts.found[p].manifold.count);
     contacts.points.resize(contacts.points.size() + rows.slots);
     contacts.positions.resize(contacts.positions.size() + rows.slots);
     contacts.patches.emplace_back();

@@ -22,12 +22,13 @@ TEST(TumblePile, ThreeHundredBoxesPourSettleAndHold) {
   const std::size_t settled = run.depth_m.size() - 60;
   const double depth = *std::max_element(run.depth_m.begin() + settled, run.depth_m.end());
   const double speed = *std::max_element(run.top_speed.begin() + settled, run.top_speed.end());
-  std::printf("[ measured ] 300 boxes, last second: deepest %.2e m, fastest %.3f m/s; whole run "
-              "deepest %.3f m, %d out\n",
-              depth, speed, run.largest_penetration_m, run.escaped);
+  std::printf(
+      "[ measured ] 300 boxes, last second: deepest %.2e m, fastest %.3f m/s; whole run "
+      "deepest %.3f m, %d out\n",
+      depth, speed, run.largest_penetration_m, run.escaped);
   EXPECT_EQ(run.escaped, 0);
-  EXPECT_LT(depth, 2e-3);   // m
-  EXPECT_LT(speed, 0.05);   // m/s
+  EXPECT_LT(depth, 2e-3);  // m
+  EXPECT_LT(speed, 0.05);  // m/s
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // The example scenes shipped in scenes/: each must load, build and run.
-#include <cstdio>
 #include <gtest/gtest.h>
+#include <cstdio>
 
 #include <algorithm>
 #include <cmath>
