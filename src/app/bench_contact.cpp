@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <string_view>
 #include <system_error>
-#include <type_traits>
 #include <vector>
 
 #include "app/child_process.hpp"
@@ -71,21 +70,6 @@ PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, co
     column.error = peer.string() + " ended before its run was whole";
   }
   return column;
-}
-
-// A JSON array of one engine's per-step values.
-template <typename Value>
-std::string json_array(const std::vector<Value>& values) {
-  std::string text = "[";
-  for (std::size_t n = 0; n < values.size(); ++n) {
-    if (n) text += ", ";
-    if constexpr (std::is_same_v<Value, int>) {
-      text += std::to_string(values[n]);
-    } else {
-      text += json_number(values[n]);
-    }
-  }
-  return text + "]";
 }
 
 std::string engine_json(const PileRun& run, double dt) {

@@ -70,20 +70,6 @@ std::size_t count_of(const std::string& text, const std::string& part) {
   return count;
 }
 
-template <typename Value>
-std::string json_array(const std::vector<Value>& values) {
-  std::string text = "[";
-  for (std::size_t n = 0; n < values.size(); ++n) {
-    if (n) text += ", ";
-    if constexpr (std::is_same_v<Value, int>) {
-      text += std::to_string(values[n]);
-    } else {
-      text += tumble::app::json_number(values[n]);
-    }
-  }
-  return text + "]";
-}
-
 // The text of the JSON object `"name": {...}` at the top level of `json` (the engines' objects
 // hold no braces of their own).
 std::string object_named(const std::string& json, const std::string& name) {
@@ -109,12 +95,15 @@ TEST_F(BenchContactCommand, TumblesColumnIsTheRunOfTheSamePileBitForBit) {
   const std::string json = read_file(dir_ / "out" / "contact_bench.json");
   EXPECT_EQ(count_of(json, "\"steps\": 30"), 3u) << json;  // the pile's, and each engine's
   const std::string tumble = object_named(json, "tumble");
-  EXPECT_NE(tumble.find("\"contacts\": " + json_array(expected.contacts) + ","), std::string::npos)
-      << tumble;
-  EXPECT_NE(tumble.find("\"depth_m\": " + json_array(expected.depth_m) + ","), std::string::npos)
-      << tumble;
-  EXPECT_NE(tumble.find("\"top_speed_m_per_s\": " + json_array(expected.top_speed) + "\n"),
+  EXPECT_NE(tumble.find("\"contacts\": " + tumble::app::json_array(expected.contacts) + ","),
             std::string::npos)
+      << tumble;
+  EXPECT_NE(tumble.find("\"depth_m\": " + tumble::app::json_array(expected.depth_m) + ","),
+            std::string::npos)
+      << tumble;
+  EXPECT_NE(
+      tumble.find("\"top_speed_m_per_s\": " + tumble::app::json_array(expected.top_speed) + "\n"),
+      std::string::npos)
       << tumble;
   EXPECT_NE(tumble.find("\"largest_penetration_m\": " +
                         tumble::app::json_number(expected.largest_penetration_m) + ","),

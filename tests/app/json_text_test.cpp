@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace tumble::app {
 namespace {
@@ -28,6 +29,12 @@ TEST(JsonText, NumbersReadBackExactlyAndNonFiniteIsNull) {
   EXPECT_EQ(json_number(0.5), "0.5");
   EXPECT_EQ(json_number(std::numeric_limits<double>::infinity()), "null");
   EXPECT_EQ(json_number(std::nan("")), "null");
+}
+
+TEST(JsonText, ArraysOfIntegersAndOfDoubles) {
+  EXPECT_EQ(json_array(std::vector<int>{}), "[]");
+  EXPECT_EQ(json_array(std::vector<int>{3, -1, 40}), "[3, -1, 40]");
+  EXPECT_EQ(json_array(std::vector<double>{0.5, std::nan("")}), "[0.5, null]");
 }
 
 }  // namespace
