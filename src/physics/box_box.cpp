@@ -26,22 +26,6 @@ constexpr std::uint32_t kFaceAKind = 0;
 constexpr std::uint32_t kFaceBKind = 1;
 constexpr std::uint32_t kEdgeKind = 2;
 
-// Half the length of the box's projection on a unit axis: Σ h_k |L·u_k| (Gottschalk, Lin &
-// Manocha 1996, "OBBTree", §4).
-double projected_radius(const BoxPose& box, const Vec3& axis) {
-  return box.half_size.x() * std::abs(axis.dot(box.rotation.col(0))) +
-         box.half_size.y() * std::abs(axis.dot(box.rotation.col(1))) +
-         box.half_size.z() * std::abs(axis.dot(box.rotation.col(2)));
-}
-
-// The separation of the projections on a unit axis, with the axis turned to point from A to B.
-// The radii are summed before subtracting so that (A, B) and (B, A) give the same bits.
-void test_axis(const BoxPose& a, const BoxPose& b, const Vec3& axis, BoxAxis& out) {
-  const double offset = axis.dot(b.position - a.position);
-  out.normal = offset < 0.0 ? Vec3(-axis) : axis;
-  out.separation = std::abs(offset) - (projected_radius(a, axis) + projected_radius(b, axis));
-}
-
 // The best face axis (A's unless B's is clearly better) and the best edge pair, kept apart so
 // that a face contact that clips to nothing can fall back on the edges.
 struct AxisSearch {
@@ -51,33 +35,56 @@ struct AxisSearch {
   double largest_separation = 0.0;  // over every axis tested: a bound on the gap (m)
 };
 
-AxisSearch search_axes(const BoxPose& a, const BoxPose& b) {
+// The separating-axis test (Gottschalk, Lin & Manocha 1996, "OBBTree", §4) with the projections
+// of both boxes read off the cosines C_ij = a_i · b_j of their axes, found once: on A's face axis
+// a_i a box B projects to Σ_j h_j |C_ij|, on an edge axis a_i × b_j each box projects through the
+// two cosines of its other axes. Every value that reaches a separation is formed so that
+// swapping A and B gives the same bits (products and sums of the same terms in the same order,
+// the offset a dot product of the same two vectors negated), as the manifold promises. Stops at
+// the first axis whose gap is `stop` or more: the boxes are then that far apart.
+AxisSearch search_axes(const BoxPose& a, const BoxPose& b, double stop = INFINITY) {
   AxisSearch search;
+  const Vec3 d = b.position - a.position;
+  double cosine[3][3];  // |a_i · b_j|
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) cosine[i][j] = std::abs(a.rotation.col(i).dot(b.rotation.col(j)));
+  }
+  const Vec3& ha = a.half_size;
+  const Vec3& hb = b.half_size;
+  const auto face = [&](BoxAxisKind kind, int i, int j, const Vec3& axis, double radius) {
+    const double offset = axis.dot(d);
+    return BoxAxis{kind, i, j, offset < 0.0 ? Vec3(-axis) : axis, std::abs(offset) - radius};
+  };
   BoxAxis best_a{.separation = -INFINITY};
   BoxAxis best_b{.kind = BoxAxisKind::face_b, .separation = -INFINITY};
-  BoxAxis candidate;
-  for (int axis = 0; axis < 3; ++axis) {  // strict > keeps the lowest index on exact ties
-    test_axis(a, b, a.rotation.col(axis), candidate);
-    if (candidate.separation > best_a.separation) {
-      best_a = {BoxAxisKind::face_a, axis, 0, candidate.normal, candidate.separation};
-    }
-    test_axis(a, b, b.rotation.col(axis), candidate);
-    if (candidate.separation > best_b.separation) {
-      best_b = {BoxAxisKind::face_b, 0, axis, candidate.normal, candidate.separation};
-    }
+  for (int k = 0; k < 3; ++k) {  // strict > keeps the lowest index on exact ties
+    const double radius_b = hb.x() * cosine[k][0] + hb.y() * cosine[k][1] + hb.z() * cosine[k][2];
+    const BoxAxis on_a = face(BoxAxisKind::face_a, k, 0, a.rotation.col(k), ha[k] + radius_b);
+    if (on_a.separation > best_a.separation) best_a = on_a;
+    const double radius_a = ha.x() * cosine[0][k] + ha.y() * cosine[1][k] + ha.z() * cosine[2][k];
+    const BoxAxis on_b = face(BoxAxisKind::face_b, 0, k, b.rotation.col(k), radius_a + hb[k]);
+    if (on_b.separation > best_b.separation) best_b = on_b;
   }
   const bool b_wins = best_b.separation > best_a.separation + box_axis_bias(best_a.separation);
   search.face = b_wins ? best_b : best_a;
   search.largest_separation = std::max(best_a.separation, best_b.separation);
+  if (!(search.largest_separation < stop)) return search;
   search.edge.separation = -INFINITY;
   for (int i = 0; i < 3; ++i) {
+    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
+      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
       const Vec3 cross = a.rotation.col(i).cross(b.rotation.col(j));
       const double sine = cross.norm();  // both axes are unit
       if (sine < kParallelEdgeSine) continue;
-      test_axis(a, b, cross / sine, candidate);
-      if (candidate.separation > search.edge.separation) {
-        search.edge = {BoxAxisKind::edge_pair, i, j, candidate.normal, candidate.separation};
+      // |(a_i × b_j) · a_i1| = |C_i2j| and |(a_i × b_j) · a_i2| = |C_i1j|; likewise for B.
+      const double radius_a = ha[i1] * cosine[i2][j] + ha[i2] * cosine[i1][j];
+      const double radius_b = hb[j1] * cosine[i][j2] + hb[j2] * cosine[i][j1];
+      const double offset = cross.dot(d);
+      const double separation = (std::abs(offset) - (radius_a + radius_b)) / sine;
+      if (separation > search.edge.separation) {
+        const Vec3 axis = cross / sine;
+        search.edge = {BoxAxisKind::edge_pair, i, j, offset < 0.0 ? Vec3(-axis) : axis, separation};
         search.has_edge = true;
       }
     }
@@ -427,7 +434,7 @@ BoxAxis box_box_axis(const BoxPose& a, const BoxPose& b) {
 }
 
 PairManifold box_box_manifold(const BoxPose& a, const BoxPose& b, double margin) {
-  const AxisSearch search = search_axes(a, b);
+  const AxisSearch search = search_axes(a, b, margin);
   // Any axis with a gap of at least margin separates the boxes by at least margin.
   if (!(search.largest_separation < margin)) return PairManifold{};
   if (edge_wins(search)) return edge_contact(a, b, search.edge, margin);
