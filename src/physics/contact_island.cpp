@@ -17,8 +17,9 @@ Vec3 arm(const ProjectedPose& pose, const Vec3& anchor) {
 }
 
 // Pushes a's and b's poses apart along the point's normal until its separation is zero, by a
-// position-level impulse through both bodies' masses; false when it was not inside.
-bool project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
+// position-level impulse through both bodies' masses; returns the separation it had (m), or 0
+// when it was not inside.
+double project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
   const Vec3 arm_a = arm(a, point.anchor_a);
   double separation = point.base + point.normal.dot(a.primary.position + arm_a);
   Vec3 arm_b = Vec3::Zero();
@@ -26,7 +27,7 @@ bool project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
     arm_b = arm(*b, point.anchor_b);
     separation -= point.normal.dot(b->primary.position + arm_b);
   }
-  if (separation >= 0.0) return false;
+  if (separation >= 0.0) return 0.0;
   const Vec3& n = point.normal;
   const Vec3 turn_a = *a.inverse_inertia * arm_a.cross(n);
   double inverse_mass = a.inverse_mass + arm_a.cross(n).dot(turn_a);
@@ -42,17 +43,18 @@ bool project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
     b->primary.position -= (push * b->inverse_mass) * n;
     b->primary.orientation = rotated(b->primary.orientation, -push * turn_b).normalized();
   }
-  return true;
+  return separation;
 }
 
 }  // namespace
 
-bool project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions) {
-  bool moved = false;
+double project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions) {
+  double deepest = 0.0;
   for (const PositionPoint& point : positions) {
-    moved |= project(point, poses[point.a], point.b == kStatic ? nullptr : &poses[point.b]);
+    deepest = std::min(
+        deepest, project(point, poses[point.a], point.b == kStatic ? nullptr : &poses[point.b]));
   }
-  return moved;
+  return deepest;
 }
 
 Quat rotated(const Quat& q, const Vec3& angle) {
@@ -119,7 +121,7 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
                 .inverse_inertia = &solved.inverse_inertia};
   }
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
-    if (!project_pass({poses, bodies.size()}, positions)) break;
+    if (project_pass({poses, bodies.size()}, positions) == 0.0) break;
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out[i] = BodyState(poses[i].primary, bodies[i].model->constants);

@@ -57,8 +57,9 @@ struct ProjectedPose {
 
 // One pass of the projection: pushes the poses apart along each point still inside until its
 // separation is zero, by a position-level impulse through both bodies' masses (non-linear
-// Gauss-Seidel: it moves no momentum). Returns whether any point was inside.
-bool project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions);
+// Gauss-Seidel: it moves no momentum). Returns the deepest separation a point had when the pass
+// reached it (m): negative when any point was inside, else 0.
+double project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions);
 
 // Solves the island's velocity constraints (warm-started from each point's source), then moves
 // each body's pose by weight × its velocity change and projects the positions out of every

@@ -1,21 +1,35 @@
 #include "physics/substep_island.hpp"
 
 #include <algorithm>
+#include <variant>
 
 namespace tumble::physics {
 namespace {
 
-// Into `out`, each point's separation (m) at the bodies' poses: their states' positions and the
-// rotations in `rotations`.
-void measure(std::span<const SubstepBody> bodies, std::span<const Mat3> rotations,
+// The projection of a sub-step passes again while a point was deeper than the tolerance when a
+// pass reached it, up to the most passes: a settled pile, 0.6 mm inside, takes one; a box landing
+// at 20 m/s drives the one it hits centimetres into the next within a sub-step, and a pass moves
+// that push one contact along (m).
+constexpr double kProjectionTolerance = 0.002;
+constexpr int kMostProjectionPasses = 8;
+
+// Into `out`, each point's separation (m) at the bodies' poses: their centres and the rotations
+// in `rotations`.
+const Vec3& centre(const SubstepBody& body) {
+  return body.state.position();
+}
+const Vec3& centre(const ProjectedPose& pose) {
+  return pose.primary.position;
+}
+
+template <class Body>
+void measure(std::span<const Body> bodies, std::span<const Mat3> rotations,
              std::span<const PositionPoint> positions, std::vector<double>& out) {
   out.resize(positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const PositionPoint& p = positions[i];
-    double s = p.base + p.normal.dot(bodies[p.a].state.position() + rotations[p.a] * p.anchor_a);
-    if (p.b != kStatic) {
-      s -= p.normal.dot(bodies[p.b].state.position() + rotations[p.b] * p.anchor_b);
-    }
+    double s = p.base + p.normal.dot(centre(bodies[p.a]) + rotations[p.a] * p.anchor_a);
+    if (p.b != kStatic) s -= p.normal.dot(centre(bodies[p.b]) + rotations[p.b] * p.anchor_b);
     out[i] = s;
   }
 }
@@ -29,6 +43,19 @@ void scale_impulses(std::span<ContactConstraint> points, std::span<FrictionPatch
     f.tangent_impulse[1] *= factor;
     f.twist_impulse *= factor;
   }
+}
+
+// Whether the body's only forces are gravity, with their sum into `g` (m/s²): its free
+// momentum over a sub-step of h is then p + m g h and its angular momentum stays, exactly what
+// every integrator gives for a constant force through the centre, without running one.
+bool gravity_only(const BodyModel& model, Vec3& g) {
+  g = Vec3::Zero();
+  for (const ForceLaw& law : model.forces) {
+    const auto* gravity = std::get_if<Gravity>(&law);
+    if (!gravity) return false;
+    g += gravity->acceleration;
+  }
+  return true;
 }
 
 }  // namespace
@@ -62,23 +89,35 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
   scratch.free_velocity.resize(n);
   scratch.free_angular_velocity.resize(n);
   scratch.free_angular_momentum.resize(n);
+  scratch.gravity.resize(n);
+  scratch.falls_freely.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    scratch.falls_freely[i] = gravity_only(*bodies[i].model, scratch.gravity[i]);
+  }
   for (int substep = 0; substep < kSubsteps; ++substep) {
     if (substep > 0 && refresh) refresh(substep);
-    // The forces over the sub-step, by the scene's integrator; its positions are not used: the
-    // poses move with the solved velocities below (symplectic Euler, as Box2D's sub-steps do), so
-    // a body held still by its contacts stays exactly where it is.
+    // The forces over the sub-step, by the scene's integrator (or exactly, for gravity alone);
+    // its positions are not used: the poses move with the solved velocities below (symplectic
+    // Euler, as Box2D's sub-steps do), so a body held still by its contacts stays exactly where
+    // it is.
     for (std::size_t i = 0; i < n; ++i) {
-      const BodyState free =
-          step(integrator, *bodies[i].model, bodies[i].state, t + substep * h, h);
-      scratch.free_velocity[i] = free.velocity();
-      scratch.free_angular_velocity[i] = free.angular_velocity();
-      scratch.free_angular_momentum[i] = free.primary().angular_momentum;
-      solver[i].velocity = free.velocity();
-      solver[i].angular_velocity = free.angular_velocity();
-      scratch.rotations[i] = bodies[i].state.rotation();
+      const BodyState& now = bodies[i].state;
+      if (scratch.falls_freely[i]) {
+        scratch.free_velocity[i] = now.velocity() + h * scratch.gravity[i];
+        scratch.free_angular_velocity[i] = now.angular_velocity();
+        scratch.free_angular_momentum[i] = now.angular_momentum();
+      } else {
+        const BodyState free = step(integrator, *bodies[i].model, now, t + substep * h, h);
+        scratch.free_velocity[i] = free.velocity();
+        scratch.free_angular_velocity[i] = free.angular_velocity();
+        scratch.free_angular_momentum[i] = free.primary().angular_momentum;
+      }
+      solver[i].velocity = scratch.free_velocity[i];
+      solver[i].angular_velocity = scratch.free_angular_velocity[i];
+      scratch.rotations[i] = now.orientation().toRotationMatrix();
     }
     if (may_bounce) energy_bound = std::max(energy_bound, total_kinetic_energy(solver));
-    measure(bodies, scratch.rotations, positions, scratch.separations);
+    measure<SubstepBody>(bodies, scratch.rotations, positions, scratch.separations);
     warm_start(solver, points, patches);
     substep_pass(solver, points, scratch.separations, patches, h);
 
@@ -92,16 +131,17 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
                           .inverse_mass = bodies[i].model->constants.inverse_mass,
                           .inverse_inertia = &solver[i].inverse_inertia};
     }
-    project_pass(scratch.poses, positions);
-    for (std::size_t i = 0; i < n; ++i) {
-      bodies[i].state = BodyState(scratch.poses[i].primary, bodies[i].model->constants);
-      scratch.rotations[i] = bodies[i].state.rotation();
+    for (int pass = 0; pass < kMostProjectionPasses; ++pass) {
+      if (project_pass(scratch.poses, positions) > -kProjectionTolerance) break;
     }
-    measure(bodies, scratch.rotations, positions, scratch.separations);
+    for (std::size_t i = 0; i < n; ++i) {
+      scratch.rotations[i] = scratch.poses[i].primary.orientation.toRotationMatrix();
+    }
+    measure<ProjectedPose>(scratch.poses, scratch.rotations, positions, scratch.separations);
     substep_pass(solver, points, scratch.separations, patches, h);
 
     for (std::size_t i = 0; i < n; ++i) {
-      PrimaryState primary = bodies[i].state.primary();
+      PrimaryState& primary = scratch.poses[i].primary;
       primary.momentum = solver[i].linear_impulse(Vec3::Zero());  // m v
       primary.angular_momentum = scratch.free_angular_momentum[i] +
                                  solver[i].angular_impulse(scratch.free_angular_velocity[i]);

@@ -1,7 +1,8 @@
 // The solve of a large island of bodies (a pile), in kSubsteps sub-steps of the physics step,
 // after Box2D v3's "soft step" (Catto, "Solver2D", 2024; the Box2D v3 release notes), with rigid
 // rows and a position projection in place of its soft ones. Each sub-step integrates the bodies'
-// velocities with the scene's integrator (their forces), warm-starts and solves the contacts
+// velocities with the scene's integrator (their forces; a body under gravity alone exactly, as
+// every integrator would, without running one), warm-starts and solves the contacts
 // once, moves the poses with the solved velocities, projects them out of what is still inside
 // (one non-linear Gauss-Seidel pass: it moves no momentum), and solves once more at the moved
 // poses (the relax pass). The bounce comes once, after the sub-steps.
@@ -45,6 +46,8 @@ struct SubstepScratch {
   std::vector<Mat3> rotations;       // per body, of the pose being measured
   std::vector<ProjectedPose> poses;  // per body
   std::vector<Vec3> free_velocity, free_angular_velocity, free_angular_momentum;  // per body
+  std::vector<Vec3> gravity;       // per body: its gravity, when that is all that acts on it
+  std::vector<char> falls_freely;  // per body: whether gravity is all that acts on it
 };
 
 // Advances the island's bodies from t to t + dt (s). `solver` holds a SolverBody per body made

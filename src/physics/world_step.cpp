@@ -57,7 +57,7 @@ void advance_bodies(Integrator integrator, std::span<const BodyModel> models,
 
 // Into contacts.found: the touching pairs of colliding bodies, with their manifolds at the start
 // of the step and the last step's impulses of the same features.
-void find_pairs(std::span<const BodyModel> models, std::span<const BodyState> in, double dt,
+void find_pairs(std::span<const BodyModel> models, std::span<const BodyState> in,
                 WorldContacts& contacts) {
   contacts.found.clear();
   contacts.colliders.clear();
@@ -81,11 +81,8 @@ void find_pairs(std::span<const BodyModel> models, std::span<const BodyState> in
   for (const BodyPair& candidate : contacts.candidates) {
     const std::uint32_t a = contacts.colliders[candidate.first];
     const std::uint32_t b = contacts.colliders[candidate.second];
-    const BodyState& a_end = contacts.advances[a].end;
-    const BodyState& b_end = contacts.advances[b].end;
     // Speculative points as far as the two can close on each other in the step.
-    const double margin = kTouchingDistance + reach(in[a], a_end, models[a].half_size, dt) +
-                          reach(in[b], b_end, models[b].half_size, dt);
+    const double margin = kTouchingDistance + contacts.reaches[a] + contacts.reaches[b];
     PairManifold manifold =
         box_box_manifold(pose_of(in[a], contacts.start_rotations[a], models[a].half_size),
                          pose_of(in[b], contacts.start_rotations[b], models[b].half_size), margin);
@@ -387,8 +384,7 @@ void solve_substepped(Integrator integrator, std::span<const BodyModel> models,
   }
   if (!planes.empty()) {
     for (const std::uint32_t i : members) {
-      const BodyState& end = contacts.advances[i].end;
-      const double margin = kTouchingDistance + reach(in[i], end, models[i].half_size, dt);
+      const double margin = kTouchingDistance + contacts.reaches[i];
       const std::uint32_t local = contacts.local[i];
       add_speculative_plane_points(models[i], local, in[i], contacts.start_rotations[i], margin,
                                    contacts.solver[local], planes, contacts.planes[i],
@@ -400,13 +396,10 @@ void solve_substepped(Integrator integrator, std::span<const BodyModel> models,
        ++k) {
     const std::uint32_t p = contacts.pair_order[k];
     const auto [a, b] = contacts.found[p].bodies;
-    const BodyState& a_end = contacts.advances[a].end;
-    const BodyState& b_end = contacts.advances[b].end;
     PairRows rows{.pair = p,
                   .first = static_cast<std::uint32_t>(contacts.points.size()),
                   .patch = static_cast<std::uint32_t>(contacts.patches.size()),
-                  .reach = reach(in[a], a_end, models[a].half_size, dt) +
-                           reach(in[b], b_end, models[b].half_size, dt)};
+                  .reach = contacts.reaches[a] + contacts.reaches[b]};
     rows.slots = rows.reach > kRefindReach
                      ? kMaxManifoldPoints
                      : static_cast<std::uint32_t>(contacts.found[p].manifold.count);
@@ -438,18 +431,13 @@ void solve_substepped(Integrator integrator, std::span<const BodyModel> models,
 // than kRefindReach in the step, for only the sub-steps find fast pairs' points again. Its points
 // are counted as its pairs' and four for each body touching a plane.
 constexpr int kConvergedPasses = 100;
-bool converges(std::span<const BodyModel> models, std::span<const BodyState> in,
-               std::uint32_t island, const WorldContacts& contacts, double dt) {
+bool converges(std::uint32_t island, const WorldContacts& contacts) {
   std::size_t points = 0;
   for (std::uint32_t k = contacts.pair_offsets[island]; k < contacts.pair_offsets[island + 1];
        ++k) {
     const PairContact& pair = contacts.found[contacts.pair_order[k]];
     const auto [a, b] = pair.bodies;
-    if (reach(in[a], contacts.advances[a].end, models[a].half_size, dt) +
-            reach(in[b], contacts.advances[b].end, models[b].half_size, dt) >
-        kRefindReach) {
-      return false;
-    }
+    if (contacts.reaches[a] + contacts.reaches[b] > kRefindReach) return false;
     points += static_cast<std::size_t>(pair.manifold.count);
   }
   for (std::uint32_t k = contacts.member_offsets[island]; k < contacts.member_offsets[island + 1];
@@ -466,8 +454,12 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
                 const std::vector<Plane>& planes, const ContactSettings& settings,
                 WorldContacts& contacts, std::span<BodyState> out) {
   advance_bodies(integrator, models, in, t, dt, planes, settings, contacts);
+  contacts.reaches.resize(in.size());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    contacts.reaches[i] = reach(in[i], contacts.advances[i].end, models[i].half_size, dt);
+  }
   contacts.found.clear();
-  if (settings.collide_bodies) find_pairs(models, in, dt, contacts);
+  if (settings.collide_bodies) find_pairs(models, in, contacts);
   const int islands = group_islands(in.size(), contacts);
   for (std::size_t i = 0; i < in.size(); ++i) {
     if (contacts.island_of[i] == kNone) out[i] = std::move(contacts.advances[i].end);
@@ -480,7 +472,7 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
       const std::uint32_t i = contacts.members[contacts.member_offsets[k]];
       out[i] = rest_on_planes(integrator, models[i], contacts.advances[i], planes, settings,
                               contacts.planes[i]);
-    } else if (converges(models, in, k, contacts, dt)) {
+    } else if (converges(k, contacts)) {
       solve_converged(integrator, models, in, dt, k, planes, settings, contacts, out);
     } else {
       solve_substepped(integrator, models, in, t, dt, k, planes, settings, contacts, out);

@@ -38,6 +38,7 @@ struct WorldContacts {
   std::vector<PairContact> pairs;     // of the last step, sorted by bodies
   // Scratch.
   std::vector<PlaneAdvance> advances;  // per body
+  std::vector<double> reaches;         // per body: how far it can move towards anything (m)
   std::vector<Mat3> start_rotations;   // per body
   std::vector<std::uint32_t> colliders;
   std::vector<Bounds> bounds;
