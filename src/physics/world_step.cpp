@@ -55,6 +55,47 @@ void advance_bodies(Integrator integrator, std::span<const BodyModel> models,
   }
 }
 
+// Notes in pair.stamp where its bodies stand as its manifold is found with `margin` (m).
+void stamp(const BodyState& a, const Mat3& a_rotation, const BodyState& b, double margin,
+           PairContact& pair) {
+  PairStamp& out = pair.stamp;
+  out.valid = true;
+  out.offset = a_rotation.transpose() * (b.position() - a.position());
+  out.turn = a.orientation().conjugate() * b.orientation();
+  out.normal = a_rotation.transpose() * pair.manifold.normal;
+  out.margin = margin;
+  for (int k = 0; k < pair.manifold.count; ++k) {
+    out.separation[static_cast<std::size_t>(k)] =
+        pair.manifold.points[static_cast<std::size_t>(k)].separation;
+  }
+}
+
+// Whether the pair `before` keeps its manifold at the bodies' poses now, needing `margin` (m);
+// if so, `pair` gets it, with its normal turned with A and its separations measured now.
+bool reuse(const PairContact& before, const BodyState& a, const Mat3& a_rotation,
+           const BodyState& b, const Mat3& b_rotation, const Vec3& b_half_size, double margin,
+           PairContact& pair) {
+  const PairStamp& then = before.stamp;
+  if (!then.valid) return false;
+  const Vec3 moved = a_rotation.transpose() * (b.position() - a.position()) - then.offset;
+  const Quat turned = then.turn.conjugate() * (a.orientation().conjugate() * b.orientation());
+  const double angle = 2.0 * std::asin(std::min(1.0, turned.vec().norm()));  // rad
+  const double distance = moved.norm() + angle * b_half_size.norm();
+  if (!(distance + margin <= then.margin && distance < kReuseDistance)) return false;
+  pair.manifold = before.manifold;
+  pair.stamp = then;
+  const Vec3 n = a_rotation * then.normal;
+  pair.manifold.normal = n;
+  for (int k = 0; k < pair.manifold.count; ++k) {
+    PairPoint& point = pair.manifold.points[static_cast<std::size_t>(k)];
+    // The two anchors were one point when the manifold was found.
+    const Vec3 apart =
+        world_point(b, b_rotation, point.point_b) - world_point(a, a_rotation, point.point_a);
+    point.separation = then.separation[static_cast<std::size_t>(k)] + n.dot(apart);
+  }
+  return true;
+}
+
 // Into contacts.found: the touching pairs of colliding bodies, with their manifolds at the start
 // of the step and the last step's impulses of the same features.
 void find_pairs(std::span<const BodyModel> models, std::span<const BodyState> in,
@@ -81,28 +122,39 @@ void find_pairs(std::span<const BodyModel> models, std::span<const BodyState> in
   for (const BodyPair& candidate : contacts.candidates) {
     const std::uint32_t a = contacts.colliders[candidate.first];
     const std::uint32_t b = contacts.colliders[candidate.second];
-    // Speculative points as far as the two can close on each other in the step.
-    const double margin = kTouchingDistance + contacts.reaches[a] + contacts.reaches[b];
-    PairManifold manifold =
-        box_box_manifold(pose_of(in[a], contacts.start_rotations[a], models[a].half_size),
-                         pose_of(in[b], contacts.start_rotations[b], models[b].half_size), margin);
-    if (manifold.count == 0) continue;
     const BodyPair bodies{a, b};
     while (previous < contacts.pairs.size() && contacts.pairs[previous].bodies < bodies) {
       ++previous;
     }
-    if (previous < contacts.pairs.size() && contacts.pairs[previous].bodies == bodies) {
-      const PairManifold& before = contacts.pairs[previous].manifold;
-      manifold.friction = before.friction;
-      for (int k = 0; k < manifold.count; ++k) {
-        PairPoint& now = manifold.points[static_cast<std::size_t>(k)];
-        for (int j = 0; j < before.count; ++j) {
-          const PairPoint& then = before.points[static_cast<std::size_t>(j)];
+    const PairContact* before =
+        previous < contacts.pairs.size() && contacts.pairs[previous].bodies == bodies
+            ? &contacts.pairs[previous]
+            : nullptr;
+    // Speculative points as far as the two can close on each other in the step.
+    const double margin = kTouchingDistance + contacts.reaches[a] + contacts.reaches[b];
+    PairContact pair;
+    pair.bodies = bodies;
+    if (before && reuse(*before, in[a], contacts.start_rotations[a], in[b],
+                        contacts.start_rotations[b], models[b].half_size, margin, pair)) {
+      contacts.found.push_back(pair);
+      continue;
+    }
+    pair.manifold = box_box_manifold(
+        pose_of(in[a], contacts.start_rotations[a], models[a].half_size),
+        pose_of(in[b], contacts.start_rotations[b], models[b].half_size), margin + kReuseDistance);
+    if (pair.manifold.count == 0) continue;
+    stamp(in[a], contacts.start_rotations[a], in[b], margin + kReuseDistance, pair);
+    if (before) {
+      pair.manifold.friction = before->manifold.friction;
+      for (int k = 0; k < pair.manifold.count; ++k) {
+        PairPoint& now = pair.manifold.points[static_cast<std::size_t>(k)];
+        for (int j = 0; j < before->manifold.count; ++j) {
+          const PairPoint& then = before->manifold.points[static_cast<std::size_t>(j)];
           if (then.feature == now.feature) now.impulses = then.impulses;
         }
       }
     }
-    contacts.found.push_back({bodies, manifold});
+    contacts.found.push_back(pair);
   }
 }
 
@@ -265,6 +317,7 @@ void refind_pair(const PairRows& rows, std::span<const BodyModel> models, double
   const double twist_impulse = before.twist_impulse;
   found.friction = pair.manifold.friction;
   pair.manifold = found;
+  pair.stamp.valid = false;  // found at a sub-step's poses: not the start's
   write_pair_rows(rows, models, a_rotation, b_rotation, a_state, b_state, contacts);
   for (std::uint32_t k = 0; k < rows.slots; ++k) {
     contacts.points[rows.first + k].normal_impulse = impulse[k];

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -70,6 +71,58 @@ sim::Simulation stack(int count, Integrator integrator = Integrator::rk4) {
   for (int k = 0; k < count; ++k) start.push_back(at_rest(cube, Vec3(0.0, 0.5 + k, 0.0)));
   return sim::Simulation(models, start, integrator, kStep,
                          {Plane{.material = {.restitution = 0.0, .friction = 0.5}}});
+}
+
+// A cube sliding slowly on another, 5e-7 m above it (no gravity, no friction: nothing pushes):
+// its pair keeps the narrow phase's points while the cube has moved less than kReuseDistance
+// since they were found, their separations measured anew, then gets fresh ones. Each step's
+// manifold is checked against the narrow phase's at the step's start.
+TEST(WorldStep, APairThatBarelyMovedKeepsItsPointsAndMeasuresThemAnew) {
+  const BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 0.0, .friction = 0.0}, false);
+  const double speed = 1e-3;  // m/s along x: 1.67e-5 m a step
+  const double gap = 5e-7;    // m: within the bounds' kTouchingDistance
+  std::vector<BodyState> states = {at_rest(cube, Vec3::Zero()),
+                                   at_rest(cube, Vec3(0.0, 1.0 + gap, 0.0), Vec3(speed, 0, 0))};
+  const std::vector<BodyModel> models = {cube, cube};
+  std::vector<BodyState> next(2);
+  WorldContacts contacts;
+  const ContactSettings settings;
+  Vec3 found_at = states[1].position();  // where the kept points were found
+  std::array<Vec3, 4> found;             // their A-frame positions
+  int kept = 0, refreshed = 0;
+  for (int n = 0; n < 20; ++n) {
+    const std::vector<BodyState> start = states;
+    step_world(Integrator::rk4, models, states, n * kStep, kStep, {}, settings, contacts, next);
+    states.swap(next);
+    ASSERT_EQ(contacts.pairs.size(), 1u);
+    const PairManifold& used = contacts.pairs[0].manifold;
+    const auto pose = [&](const BodyState& s) {
+      return BoxPose{
+          .position = s.position(), .rotation = s.rotation(), .half_size = cube.half_size};
+    };
+    const PairManifold fresh = box_box_manifold(pose(start[0]), pose(start[1]), 1e-3);
+    ASSERT_EQ(used.count, 4);
+    ASSERT_EQ(fresh.count, 4);
+    EXPECT_LT((used.normal - fresh.normal).norm(), 1e-15);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(used.points[k].separation, gap, 1e-15);
+    // The fresh clip follows the sliding face; kept points stay where they were found.
+    const bool keeps = n > 0 && (start[1].position() - found_at).norm() < kReuseDistance;
+    if (keeps) {
+      ++kept;
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(used.points[k].point_a, found[k]) << "step " << n;
+      EXPECT_NE(used.points[0].point_a, fresh.points[0].point_a) << "step " << n;
+    } else {
+      ++refreshed;
+      found_at = start[1].position();
+      for (int k = 0; k < 4; ++k) {
+        EXPECT_EQ(used.points[k].point_a, fresh.points[k].point_a) << "step " << n;
+        found[k] = used.points[k].point_a;
+      }
+    }
+  }
+  std::printf("[ measured ] 20 steps: %d kept the points, %d found them anew\n", kept, refreshed);
+  EXPECT_GT(kept, 10);
+  EXPECT_GE(refreshed, 3);
 }
 
 TEST(WorldStep, TowerOfTenCubesStandsForAMinute) {
