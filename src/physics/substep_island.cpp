@@ -1,6 +1,7 @@
 #include "physics/substep_island.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <variant>
 
 namespace tumble::physics {
@@ -60,12 +61,18 @@ bool gravity_only(const BodyModel& model, Vec3& g) {
 
 }  // namespace
 
+int substeps_for(double reach) {
+  const double wanted = std::ceil(reach / kSubstepReach);
+  return static_cast<int>(
+      std::clamp(wanted, static_cast<double>(kSubsteps), static_cast<double>(kMostSubsteps)));
+}
+
 void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
                     std::span<SolverBody> solver, std::span<ContactConstraint> points,
                     std::span<const PositionPoint> positions, std::span<FrictionPatch> patches,
-                    double t, double dt, const ContactSettings& settings, SubstepScratch& scratch,
-                    const std::function<void(int)>& refresh) {
-  const double h = dt / kSubsteps;
+                    double t, double dt, int substeps, const ContactSettings& settings,
+                    SubstepScratch& scratch, const std::function<void(int)>& refresh) {
+  const double h = dt / substeps;
 
   // Warm start: a sub-step's share of the last step's impulses.
   for (ContactConstraint& c : points) {
@@ -77,7 +84,7 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
     for (int k = 0; k < 2; ++k) f.tangent_impulse[k] = f.source->tangent.dot(f.tangent[k].linear);
     f.twist_impulse = f.source->twist;
   }
-  scale_impulses(points, patches, 1.0 / kSubsteps);
+  scale_impulses(points, patches, 1.0 / substeps);
 
   const bool may_bounce = std::any_of(points.begin(), points.end(), [&](const auto& c) {
     return c.restitution > 0.0 && c.approach_speed < -settings.restitution_threshold;
@@ -94,7 +101,7 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
   for (std::size_t i = 0; i < n; ++i) {
     scratch.falls_freely[i] = gravity_only(*bodies[i].model, scratch.gravity[i]);
   }
-  for (int substep = 0; substep < kSubsteps; ++substep) {
+  for (int substep = 0; substep < substeps; ++substep) {
     if (substep > 0 && refresh) refresh(substep);
     // The forces over the sub-step, by the scene's integrator (or exactly, for gravity alone);
     // its positions are not used: the poses move with the solved velocities below (symplectic
@@ -163,7 +170,7 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
     }
   }
 
-  scale_impulses(points, patches, kSubsteps);
+  scale_impulses(points, patches, substeps);
   for (const ContactConstraint& c : points) {
     if (c.source) c.source->normal = c.normal_impulse;
   }

@@ -461,14 +461,19 @@ void solve_substepped(Integrator integrator, std::span<const BodyModel> models,
     contacts.patches.emplace_back();
     write_pair_rows(rows, models, contacts.start_rotations[a], contacts.start_rotations[b], in[a],
                     in[b], contacts);
-    if (rows.slots == kMaxManifoldPoints) contacts.rows.push_back(rows);
+    if (rows.reach > kRefindReach) contacts.rows.push_back(rows);
   }
+  // The fastest closing: of a pair, or of a body on the planes.
+  double fastest = 0.0;
+  for (const PairRows& rows : contacts.rows) fastest = std::max(fastest, rows.reach);
+  for (const std::uint32_t i : members) fastest = std::max(fastest, contacts.reaches[i]);
+  const int substeps = substeps_for(fastest);
   const auto refind = [&](int substep) {
-    const double left = static_cast<double>(kSubsteps - substep) / kSubsteps;
+    const double left = static_cast<double>(substeps - substep) / substeps;
     for (const PairRows& rows : contacts.rows) refind_pair(rows, models, left, contacts);
   };
   substep_island(integrator, contacts.substep_bodies, contacts.solver, contacts.points,
-                 contacts.positions, contacts.patches, t, dt, settings, contacts.substep,
+                 contacts.positions, contacts.patches, t, dt, substeps, settings, contacts.substep,
                  contacts.rows.empty() ? std::function<void(int)>{} : refind);
   for (std::size_t k = 0; k < members.size(); ++k) {
     out[members[k]] = std::move(contacts.substep_bodies[k].state);

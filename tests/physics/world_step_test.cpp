@@ -125,6 +125,16 @@ TEST(WorldStep, APairThatBarelyMovedKeepsItsPointsAndMeasuresThemAnew) {
   EXPECT_GE(refreshed, 3);
 }
 
+// The sub-steps of an island: Box2D's four while nothing closes fast, one per kSubstepReach of
+// the fastest closing beyond that, at most kMostSubsteps.
+TEST(WorldStep, SubstepsFollowTheFastestClosing) {
+  EXPECT_EQ(substeps_for(0.0), kSubsteps);
+  EXPECT_EQ(substeps_for(kSubsteps * kSubstepReach), kSubsteps);
+  EXPECT_EQ(substeps_for(kSubsteps * kSubstepReach * 1.01), kSubsteps + 1);
+  EXPECT_EQ(substeps_for(10.0 * kSubstepReach), 10);
+  EXPECT_EQ(substeps_for(1.0), kMostSubsteps);  // 60 m/s
+}
+
 TEST(WorldStep, TowerOfTenCubesStandsForAMinute) {
   sim::Simulation world = stack(10);
   const Vec3 top_start = world.current().back().position();
