@@ -55,6 +55,15 @@ struct PairRows {
   double reach = 0.0;  // m
 };
 
+// A body's place against one plane in a fast island's lists (world_step.cpp): kMaxManifoldPoints
+// slots from `first`, and its friction patch, found again at each sub-step.
+struct PlaneRows {
+  std::uint32_t body = 0;   // the body's index in the world
+  std::uint32_t plane = 0;  // index into the planes
+  std::uint32_t first = 0;  // of its points (and positions)
+  std::uint32_t patch = 0;
+};
+
 // What the world step keeps between steps (warm starting), and scratch space kept so that a
 // warm step allocates little.
 struct WorldContacts {
@@ -83,7 +92,8 @@ struct WorldContacts {
   std::vector<PositionPoint> positions;
   std::vector<FrictionPatch> patches;
   SubstepScratch substep;
-  std::vector<PairRows> rows;  // of the island's pairs found again at each sub-step
+  std::vector<PairRows> rows;         // of the island's pairs found again at each sub-step
+  std::vector<PlaneRows> plane_rows;  // of a fast island's bodies near planes, likewise
 };
 
 // Advances every body from `in` at t to t + dt (s) into `out`: the free steps, impacts with the

@@ -12,9 +12,10 @@
 namespace tumble::bench {
 namespace {
 
-// 300 boxes poured into the bin for 10 s: none leaves it, and once settled (the last second)
-// the pile is at most 2 mm inside itself or the floor and its fastest box below 0.05 m/s. (The
-// pour itself goes deeper for a step or two where a box lands on an edge: the README's figures.)
+// 300 boxes poured into the bin for 10 s: none leaves it, no box goes 1 cm into another or a
+// plane at any step (the bound; measured 7 mm), and once settled (the last second) the
+// pile is at most 2 mm inside itself or the floor and its fastest box below 0.05 m/s. (The
+// 1000-box pour goes deeper for a step where a box lands at 10 m/s: the README's figures.)
 TEST(TumblePile, ThreeHundredBoxesPourSettleAndHold) {
   const Pile pile = make_pile(300, 1, 10.0);
   const PileRun run = run_pile_in_tumble(pile);
@@ -27,8 +28,9 @@ TEST(TumblePile, ThreeHundredBoxesPourSettleAndHold) {
       "deepest %.3f m, %d out\n",
       depth, speed, run.largest_penetration_m, run.escaped);
   EXPECT_EQ(run.escaped, 0);
-  EXPECT_LT(depth, 2e-3);  // m
-  EXPECT_LT(speed, 0.05);  // m/s
+  EXPECT_LT(run.largest_penetration_m, 1e-2);  // m
+  EXPECT_LT(depth, 2e-3);                      // m
+  EXPECT_LT(speed, 0.05);                      // m/s
 }
 
 }  // namespace
