@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "render/box_batch.hpp"
+#include "render/edge_filter.hpp"
 #include "render/geometry.hpp"
 #include "render/gl.hpp"
 #include "render/offscreen_context.hpp"
@@ -404,10 +405,14 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
 
 void Renderer::Resources::read_pixels(io::Image& out) const {
   // RGBA, top row first (the context stores it so) to RGB.
+  const std::uint8_t* rgba = context->pixels();
+  if (settings.msaa == kEdgeFilter) {
+    filter_edges(rgba, settings.width, settings.height, out);
+    return;
+  }
   if (out.width != settings.width || out.height != settings.height) {
     out = io::Image(settings.width, settings.height);
   }
-  const std::uint8_t* rgba = context->pixels();
   const std::size_t pixel_count = static_cast<std::size_t>(settings.width) * settings.height;
   for (std::size_t i = 0; i < pixel_count; ++i) {
     out.rgb[3 * i + 0] = rgba[4 * i + 0];

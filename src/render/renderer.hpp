@@ -1,6 +1,7 @@
 // Draws a FrameView into an image: shadow pass from the key light, then the boxes (one instanced
 // draw), the ground, the quads seen from their front and last the quads seen from their back
-// (translucent) into a multisampled framebuffer, resolved into the off-screen context's buffer.
+// (translucent); into a multisampled framebuffer resolved into the off-screen context's buffer
+// when the settings ask for samples, else into that buffer, read back through the edge filter.
 #pragma once
 
 #include <memory>
