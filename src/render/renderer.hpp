@@ -1,7 +1,9 @@
-// Draws a FrameView into an image: shadow pass from the key light, then the boxes (one instanced
-// draw), the ground, the quads seen from their front and last the quads seen from their back
-// (translucent); into a multisampled framebuffer resolved into the off-screen context's buffer
-// when the settings ask for samples, else into that buffer, read back through the edge filter.
+// Draws a FrameView into an image: shadow pass from the key light, then the ground without
+// shadows (a kept copy while the camera stays, ground_cache.hpp), the boxes (one instanced draw),
+// the ground's shadows, the quads seen from their front and last the quads seen from their back
+// (translucent). All into a framebuffer of the renderer's own (multisampled when the settings
+// ask for samples), copied into the off-screen context's buffer and read back (through the edge
+// filter by default).
 #pragma once
 
 #include <memory>

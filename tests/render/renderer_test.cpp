@@ -260,6 +260,33 @@ TEST(Renderer, DrawingTwiceIsByteIdentical) {
   EXPECT_EQ(draw(small_settings(), view).rgb, first.rgb);
 }
 
+// The ground is kept while the camera stays and drawn again when it moves (ground_cache.hpp):
+// either way a frame has the bytes a fresh renderer draws for it, with the edge filter and with
+// multisampling, so a render's frames do not depend on the frame it started from.
+TEST(Renderer, KeptGroundGivesTheBytesOfAFreshDrawing) {
+  for (const int msaa : {kEdgeFilter, 4}) {
+    RenderSettings settings = small_settings();
+    settings.msaa = msaa;
+    FrameView still = cube_view(Quat(Eigen::AngleAxisd(0.3, Vec3(0, 1, 1).normalized())));
+    FrameView turned = still;  // the same camera, the cube turned further: the ground is kept
+    turned.boxes[0].orientation = Quat(Eigen::AngleAxisd(0.9, Vec3(1, 1, 0).normalized()));
+    FrameView moved = still;  // the camera elsewhere: the ground is drawn again
+    moved.camera.position = Vec3(-3.0, 2.5, 2.0);
+    std::string error;
+    const auto renderer = Renderer::create(settings, kShaders, error);
+    ASSERT_TRUE(renderer) << error;
+    io::Image first, kept, after_move, back;
+    renderer->draw(still, first);
+    renderer->draw(turned, kept);
+    renderer->draw(moved, after_move);
+    renderer->draw(still, back);
+    EXPECT_EQ(kept.rgb, draw(settings, turned).rgb) << "msaa " << msaa;
+    EXPECT_EQ(after_move.rgb, draw(settings, moved).rgb) << "msaa " << msaa;
+    EXPECT_EQ(back.rgb, first.rgb) << "msaa " << msaa;
+    EXPECT_NE(after_move.rgb, first.rgb) << "msaa " << msaa;
+  }
+}
+
 // The image is upright and the background and ground are where they belong: the top row is the
 // background colour (sRGB as given, no ground reaches it), the bottom row is ground.
 TEST(Renderer, ImageIsUprightWithBackgroundAboveAndGroundBelow) {
