@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string_view>
+#include <vector>
 
 #include "render/box_batch.hpp"
 #include "render/edge_filter.hpp"
@@ -107,7 +109,9 @@ struct Renderer::Resources {
   ShaderProgram box_shadow_program;       // boxes, instanced
   ShaderProgram plane_program;            // quads
   BoxBatch boxes;                         // every box of the frame, one instanced draw per pass
-  Framebuffer target;                     // what a frame is drawn into, then copied out of
+  Framebuffer target;                     // what a frame is drawn into
+  Framebuffer resolved;                   // one sample per pixel of a multisampled target
+  std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
   GroundCache ground;                     // the ground without shadows, while the camera stays
   GLuint ground_vao = 0, ground_vbo = 0;
   GLuint quad_vao = 0, quad_vbo = 0;
@@ -135,7 +139,7 @@ struct Renderer::Resources {
   void start_frame(const FrameView& view, const FrameSetup& frame, GLuint target);
   void draw_ground_shadows(const FrameView& view, const FrameSetup& frame);
   void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
-  void read_pixels(io::Image& out) const;
+  void read_pixels(io::Image& out);
 };
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
@@ -219,6 +223,22 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
   const int samples = std::max(settings.msaa, 1);
   target = Framebuffer::create(settings.width, settings.height, samples, error);
   if (!error.empty()) return error;
+  if (samples > 1) {
+    resolved = Framebuffer::create(settings.width, settings.height, 1, error);
+    if (!error.empty()) return error;
+  }
+  // Frames are read top row first, as images are stored, by Mesa's pack-invert: no copy to flip.
+  bool pack_invert = false;
+  GLint extension_count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &extension_count);
+  for (GLint i = 0; i < extension_count; ++i) {
+    const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
+    pack_invert = pack_invert ||
+                  std::string_view(reinterpret_cast<const char*>(name)) == "GL_MESA_pack_invert";
+  }
+  if (!pack_invert) return "this OpenGL lacks GL_MESA_pack_invert (Mesa has it)";
+  glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
+  rgba.resize(static_cast<std::size_t>(settings.width) * settings.height * 4);
   if (settings.ground.enabled) {
     ground = GroundCache::create(settings.width, settings.height, samples, error);
     if (!error.empty()) return error;
@@ -436,11 +456,15 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
   }
 }
 
-void Renderer::Resources::read_pixels(io::Image& out) const {
-  // RGBA, top row first (the context stores it so) to RGB.
-  const std::uint8_t* rgba = context->pixels();
+void Renderer::Resources::read_pixels(io::Image& out) {
+  // Straight from the frame's own framebuffer (glReadPixels waits for the drawing): copying it
+  // into the context's buffer first, with glBlitFramebuffer, costs llvmpipe more than the read.
+  const Framebuffer& source = settings.msaa > 1 ? resolved : target;
+  if (settings.msaa > 1) target.copy_to(resolved.id(), GL_COLOR_BUFFER_BIT);  // resolves
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, source.id());
+  glReadPixels(0, 0, settings.width, settings.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (settings.msaa == kEdgeFilter) {
-    filter_edges(rgba, settings.width, settings.height, out);
+    filter_edges(rgba.data(), settings.width, settings.height, out);
     return;
   }
   if (out.width != settings.width || out.height != settings.height) {
@@ -479,8 +503,6 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
 
-  r.target.copy_to(0, GL_COLOR_BUFFER_BIT);  // resolving the samples, if any
-  glFinish();
   r.read_pixels(out);
 }
 
