@@ -2,8 +2,7 @@
 // shadows (a kept copy while the camera stays, ground_cache.hpp), the boxes (one instanced draw),
 // the ground's shadows, the quads seen from their front and last the quads seen from their back
 // (translucent). All into a framebuffer of the renderer's own (multisampled when the settings
-// ask for samples), copied into the off-screen context's buffer and read back (through the edge
-// filter by default).
+// ask for samples), read back from it (through the edge filter by default).
 #pragma once
 
 #include <memory>
