@@ -1,37 +1,38 @@
-// A box face: its colour tinted per face and framed by dark edges, so the rotation reads.
+// A box face: its colour tinted per face (body.vert) and framed by dark edges, so the rotation
+// reads. Per pixel only the frame, the shadow and the highlight remain.
 in vec3 v_world_position;
-in vec3 v_world_normal;
-in vec3 v_local_position;
-in vec3 v_local_normal;
+in vec2 v_face_position;
 in vec4 v_light_clip;
-flat in vec3 v_size;    // edge lengths (m)
-flat in vec3 v_albedo;  // linear
+flat in vec3 v_world_normal;
+flat in vec2 v_face_half_size;
+flat in float v_frame_width;
+flat in vec3 v_ambient;
+flat in vec3 v_diffuse;
+flat in vec3 v_specular;
 
 out vec4 out_color;
 
-// Per-face tints (+x, -x, +y, -y, +z, -z), mixed into the body colour.
-const vec3 kFaceTints[6] = vec3[6](vec3(1.00, 0.90, 0.80), vec3(0.80, 0.90, 1.00),
-                                   vec3(1.00, 1.00, 0.85), vec3(0.85, 0.80, 0.95),
-                                   vec3(0.90, 1.00, 0.90), vec3(1.00, 0.85, 0.90));
+// x^48 (Blinn-Phong shininess 48) by squaring: five products instead of pow's exp2(48 log2 x).
+float power_48(float x) {
+  float x2 = x * x;
+  float x4 = x2 * x2;
+  float x8 = x4 * x4;
+  float x16 = x8 * x8;
+  return x16 * x16 * x16;
+}
 
 void main() {
-  vec3 n = v_local_normal;
-  vec3 a = abs(n);
-  int axis = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-  int face = axis * 2 + (n[axis] > 0.0 ? 0 : 1);
-  vec3 albedo = v_albedo * kFaceTints[face];
-
-  // Distance (m) to the nearest edge of this face, from the two in-face coordinates.
-  vec3 to_edge = 0.5 * v_size - abs(v_local_position);
-  to_edge[axis] = 1e9;
-  float d = min(to_edge.x, min(to_edge.y, to_edge.z));
-  float width = 0.025 * min(v_size.x, min(v_size.y, v_size.z));
+  // Distance (m) to the nearest edge of this face.
+  vec2 to_edge = v_face_half_size - abs(v_face_position);
+  float d = min(to_edge.x, to_edge.y);
   float blur = fwidth(d);
-  float edge = 1.0 - smoothstep(width - blur, width + blur, d);
-  albedo = mix(albedo, albedo * 0.18, edge);
+  float edge = 1.0 - smoothstep(v_frame_width - blur, v_frame_width + blur, d);
+  float frame = mix(1.0, 0.18, edge);  // the albedo darkened on the frame
 
-  vec3 normal = normalize(v_world_normal);
-  float visibility = key_light_visibility(v_light_clip, normal);
-  vec3 color = shade(albedo, v_world_position, normal, visibility, 48.0, 0.25);
+  float visibility = key_light_visibility(v_light_clip, v_world_normal);
+  vec3 to_eye = normalize(u_camera_position - v_world_position);
+  vec3 halfway = normalize(to_eye - u_light_direction);
+  float highlight = power_48(max(dot(v_world_normal, halfway), 0.0));
+  vec3 color = frame * v_ambient + visibility * (frame * v_diffuse + highlight * v_specular);
   out_color = vec4(encode_srgb(color), 1.0);
 }

@@ -1,6 +1,8 @@
 #version 330 core
 // A box: the unit cube's vertices scaled to the box's size, then posed. One instance per box
-// (render/box_instances.hpp), all boxes in one draw.
+// (render/box_instances.hpp), all boxes in one draw. A face is flat, so all of its lighting but
+// the highlight and the shadow is the same over the whole face: worked out here, once per
+// vertex, and handed on flat (lighting.glsl's shade() for this face's normal).
 layout(location = 0) in vec3 in_position;  // unit cube, [-0.5, 0.5]^3
 layout(location = 1) in vec3 in_normal;    // face normal, body frame
 layout(location = 2) in mat4 in_model;     // body to world, including the scale to the box's size
@@ -10,23 +12,47 @@ layout(location = 10) in vec3 in_albedo;   // linear
 
 uniform mat4 u_view_projection;
 uniform mat4 u_light_view_projection;
+uniform vec3 u_light_direction;  // the way the light travels, world frame, unit
+uniform vec3 u_light_color;      // linear
+uniform float u_ambient;         // fraction of the key light
 
 out vec3 v_world_position;
-out vec3 v_world_normal;
-out vec3 v_local_position;  // body frame (m)
-out vec3 v_local_normal;
+out vec2 v_face_position;  // body frame, along the face's two edges from its centre (m)
 out vec4 v_light_clip;
-flat out vec3 v_size;
-flat out vec3 v_albedo;
+flat out vec3 v_world_normal;    // unit
+flat out vec2 v_face_half_size;  // half the face's two edges (m)
+flat out float v_frame_width;    // of the dark frame along the edges (m)
+flat out vec3 v_ambient;         // linear: the ambient light the face sends back
+flat out vec3 v_diffuse;         // linear: the key light it sends back where lit
+flat out vec3 v_specular;        // linear: the highlight's colour; 0 on a face turned away
+
+// Per-face tints (+x, -x, +y, -y, +z, -z), mixed into the body colour.
+const vec3 kFaceTints[6] = vec3[6](vec3(1.00, 0.90, 0.80), vec3(0.80, 0.90, 1.00),
+                                   vec3(1.00, 1.00, 0.85), vec3(0.85, 0.80, 0.95),
+                                   vec3(0.90, 1.00, 0.90), vec3(1.00, 0.85, 0.90));
 
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
   v_world_position = world.xyz;
-  v_world_normal = normalize(in_rotation * in_normal);
-  v_local_position = in_position * in_size;
-  v_local_normal = in_normal;
   v_light_clip = u_light_view_projection * world;
-  v_size = in_size;
-  v_albedo = in_albedo;
   gl_Position = u_view_projection * world;
+
+  vec3 a = abs(in_normal);
+  int axis = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+  int face = axis * 2 + (in_normal[axis] > 0.0 ? 0 : 1);
+  int first = axis == 0 ? 1 : 0;   // the face's two edge directions
+  int second = axis == 2 ? 1 : 2;
+  vec3 local = in_position * in_size;
+  v_face_position = vec2(local[first], local[second]);
+  v_face_half_size = 0.5 * vec2(in_size[first], in_size[second]);
+  v_frame_width = 0.025 * min(in_size.x, min(in_size.y, in_size.z));
+
+  vec3 normal = normalize(in_rotation * in_normal);
+  v_world_normal = normal;
+  vec3 albedo = in_albedo * kFaceTints[face];
+  float diffuse = max(dot(normal, -u_light_direction), 0.0);
+  float hemisphere = mix(0.55, 1.0, normal.y * 0.5 + 0.5);  // sky above, a darker bounce below
+  v_ambient = u_ambient * hemisphere * u_light_color * albedo;
+  v_diffuse = diffuse * u_light_color * albedo;
+  v_specular = diffuse > 0.0 ? 0.25 * u_light_color : vec3(0.0);  // highlight strength 0.25
 }

@@ -67,7 +67,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   scene::Scene scene = std::get<scene::Scene>(loaded);
   scene.render.width = options.width;
   scene.render.height = options.height;
-  scene.render.msaa = options.msaa;
+  if (options.msaa != 0) scene.render.msaa = options.msaa;
   scene.duration = static_cast<double>(options.frames) / scene.fps;
 
   // The frames and videos, written only to be timed, go to a hidden scratch folder beside the
@@ -148,7 +148,8 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   const double pipelined_fps = frames / results[1].seconds;
   std::ostringstream table;
   table << "Pipeline benchmark: " << options.frames << " frames at " << options.width << "x"
-        << options.height << ", MSAA " << options.msaa << ", " << cores << " cores\n\n"
+        << options.height << ", antialiasing: " << antialiasing_name(scene.render.msaa) << ", "
+        << cores << " cores\n\n"
         << "| path | frames/s | seconds | pipelined is × faster | CPU efficiency | what |\n"
         << "| --- | ---: | ---: | ---: | ---: | --- |\n";
   for (const PathResult& r : results) {

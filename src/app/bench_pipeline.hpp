@@ -13,7 +13,7 @@ struct BenchPipelineOptions {
   int width = 1280;
   int height = 720;
   std::int64_t frames = 300;
-  int msaa = 1;
+  int msaa = 0;  // samples per pixel; 0 = as the scene says, as `tumble render` draws it
   std::string out = "output/bench";  // pipeline.md goes here; frames are written and removed
 };
 

@@ -140,9 +140,10 @@ int main(int argc, char** argv) {
   bench_pipeline_command->add_option("--frames", bench_pipeline.frames, "Frames per path")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{100000}))
       ->capture_default_str();
-  bench_pipeline_command->add_option("--msaa", bench_pipeline.msaa, "Samples per pixel")
-      ->check(CLI::IsMember({1, 2, 4, 8, 16}))
-      ->capture_default_str();
+  bench_pipeline_command
+      ->add_option("--msaa", bench_pipeline.msaa,
+                   "Samples per pixel (default: the scene's [render] msaa, as tumble render)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
   bench_pipeline_command->add_option("--out", bench_pipeline.out, "Folder for pipeline.md")
       ->check(kNotEmpty)
       ->capture_default_str();

@@ -52,6 +52,7 @@ std::string report_json(const scene::Scene& scene, const RenderPlan& plan,
       << ",\n  \"scene_file\": " << json_string(scene.source_path)
       << ",\n  \"width\": " << scene.render.width << ",\n  \"height\": " << scene.render.height
       << ",\n  \"fps\": " << scene.fps << ",\n  \"msaa\": " << scene.render.msaa
+      << ",\n  \"antialiasing\": " << json_string(antialiasing_name(scene.render.msaa))
       << ",\n  \"dt\": " << scene.physics.dt << ",\n  \"integrator\": "
       << json_string(std::string(physics::integrator_name(scene.physics.integrator)))
       << ",\n  \"frames\": {\"first\": " << plan.first << ", \"end\": " << plan.end

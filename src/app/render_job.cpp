@@ -42,6 +42,11 @@ std::string find_shader_directory() {
   return {};
 }
 
+std::string antialiasing_name(int msaa) {
+  if (msaa == render::kEdgeFilter) return "edge filter";
+  return msaa == 1 ? "none" : "MSAA " + std::to_string(msaa);
+}
+
 std::int64_t peak_memory_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);

@@ -45,6 +45,10 @@ RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan);
 // TUMBLE_SHADER_DIR overrides both. "" if none is found.
 std::string find_shader_directory();
 
+// How a render with [render] msaa = `msaa` smooths its edges, for reports: "edge filter" (the
+// default), "none" (msaa = 1) or "MSAA 4".
+std::string antialiasing_name(int msaa);
+
 // Peak resident memory of this process so far (bytes).
 std::int64_t peak_memory_bytes();
 

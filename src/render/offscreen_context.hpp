@@ -2,7 +2,6 @@
 // (OSMesa today; EGL surfaceless once Mesa drops OSMesa) is known only to its .cpp file.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -12,9 +11,6 @@ class OffscreenContext {
  public:
   virtual ~OffscreenContext() = default;
 
-  // The default framebuffer's colour, RGBA8, top row first, width * height * 4 bytes. Valid
-  // after glFinish().
-  virtual const std::uint8_t* pixels() const = 0;
   virtual int width() const = 0;
   virtual int height() const = 0;
   // GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa".

@@ -1,6 +1,7 @@
 // The OSMesa (Mesa's software off-screen) implementation of OffscreenContext.
 #include <GL/osmesa.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "render/gl.hpp"
@@ -22,14 +23,9 @@ class OsmesaContext final : public OffscreenContext {
   }
 
   bool make_current() {
-    if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_)) {
-      return false;
-    }
-    OSMesaPixelStore(OSMESA_Y_UP, 0);  // top row first in buffer_, as images are stored
-    return true;
+    return OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_);
   }
 
-  const std::uint8_t* pixels() const override { return buffer_.data(); }
   int width() const override { return width_; }
   int height() const override { return height_; }
   std::string description() const override {
@@ -44,6 +40,8 @@ class OsmesaContext final : public OffscreenContext {
   OSMesaContext context_;
   int width_;
   int height_;
+  // The default framebuffer OSMesa needs to make the context current; frames are drawn into
+  // the renderer's own framebuffers and read from those.
   std::vector<std::uint8_t> buffer_;
 };
 

@@ -4,10 +4,15 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string_view>
+#include <vector>
 
 #include "render/box_batch.hpp"
+#include "render/edge_filter.hpp"
+#include "render/framebuffer.hpp"
 #include "render/geometry.hpp"
 #include "render/gl.hpp"
+#include "render/ground_cache.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/shader_program.hpp"
 
@@ -104,10 +109,13 @@ struct Renderer::Resources {
   ShaderProgram box_shadow_program;       // boxes, instanced
   ShaderProgram plane_program;            // quads
   BoxBatch boxes;                         // every box of the frame, one instanced draw per pass
+  Framebuffer target;                     // what a frame is drawn into
+  Framebuffer resolved;                   // one sample per pixel of a multisampled target
+  std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
+  GroundCache ground;                     // the ground without shadows, while the camera stays
   GLuint ground_vao = 0, ground_vbo = 0;
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
-  GLuint msaa_fbo = 0, msaa_color = 0, msaa_depth = 0;
 
   ~Resources() {
     if (!context) return;
@@ -116,10 +124,7 @@ struct Renderer::Resources {
     const GLuint buffers[] = {ground_vbo, quad_vbo};
     glDeleteBuffers(2, buffers);
     glDeleteFramebuffers(1, &shadow_fbo);
-    glDeleteFramebuffers(1, &msaa_fbo);
     glDeleteTextures(1, &shadow_texture);
-    const GLuint renderbuffers[] = {msaa_color, msaa_depth};
-    glDeleteRenderbuffers(2, renderbuffers);
   }
 
   std::string create(const std::string& shader_directory);
@@ -127,9 +132,14 @@ struct Renderer::Resources {
   void draw_shadow_map(const FrameView& view, const FrameSetup& frame);
   // Binds `program` with the uniforms every lit shader shares.
   void use(const ShaderProgram& program, const FrameSetup& frame, const Camera& camera);
-  void draw_ground(const FrameView& view, const FrameSetup& frame);
+  GroundKey ground_key(const FrameView& view, const FrameSetup& frame) const;
+  void draw_ground_with(const ShaderProgram& program, const FrameView& view,
+                        const FrameSetup& frame);
+  // Binds `target` and fills it with the background and the ground without shadows.
+  void start_frame(const FrameView& view, const FrameSetup& frame, GLuint target);
+  void draw_ground_shadows(const FrameView& view, const FrameSetup& frame);
   void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
-  void read_pixels(io::Image& out) const;
+  void read_pixels(io::Image& out);
 };
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
@@ -209,21 +219,29 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
              " is more than this OpenGL allows: set it to " + std::to_string(max_samples) +
              " or less";
     }
-    glGenFramebuffers(1, &msaa_fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
-    glGenRenderbuffers(1, &msaa_color);
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_color);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings.msaa, GL_RGBA8, settings.width,
-                                     settings.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color);
-    glGenRenderbuffers(1, &msaa_depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, settings.msaa, GL_DEPTH_COMPONENT24,
-                                     settings.width, settings.height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      return "multisampled framebuffer (" + std::to_string(settings.msaa) + "x) is incomplete";
-    }
+  }
+  const int samples = std::max(settings.msaa, 1);
+  target = Framebuffer::create(settings.width, settings.height, samples, error);
+  if (!error.empty()) return error;
+  if (samples > 1) {
+    resolved = Framebuffer::create(settings.width, settings.height, 1, error);
+    if (!error.empty()) return error;
+  }
+  // Frames are read top row first, as images are stored, by Mesa's pack-invert: no copy to flip.
+  bool pack_invert = false;
+  GLint extension_count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &extension_count);
+  for (GLint i = 0; i < extension_count; ++i) {
+    const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
+    pack_invert = pack_invert ||
+                  std::string_view(reinterpret_cast<const char*>(name)) == "GL_MESA_pack_invert";
+  }
+  if (!pack_invert) return "this OpenGL lacks GL_MESA_pack_invert (Mesa has it)";
+  glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
+  rgba.resize(static_cast<std::size_t>(settings.width) * settings.height * 4);
+  if (settings.ground.enabled) {
+    ground = GroundCache::create(settings.width, settings.height, samples, error);
+    if (!error.empty()) return error;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (glGetError() != GL_NO_ERROR) return "OpenGL error while setting up the renderer";
@@ -327,40 +345,76 @@ void Renderer::Resources::use(const ShaderProgram& program, const FrameSetup& fr
   glUniform1i(program.uniform("u_shadow_map"), 0);
 }
 
-void Renderer::Resources::draw_ground(const FrameView& view, const FrameSetup& frame) {
+GroundKey Renderer::Resources::ground_key(const FrameView& view, const FrameSetup& frame) const {
+  GroundKey key;
+  Eigen::Map<Eigen::Matrix4f>(key.view_projection.data()) = frame.view_projection.cast<float>();
+  key.center = {static_cast<float>(view.camera.look_at.x()),
+                static_cast<float>(settings.ground.height),
+                static_cast<float>(view.camera.look_at.z())};
+  key.half_extent =
+      static_cast<float>(std::max(30.0, 8.0 * (frame.camera_distance + frame.radius)));
+  return key;
+}
+
+void Renderer::Resources::draw_ground_with(const ShaderProgram& program, const FrameView& view,
+                                           const FrameSetup& frame) {
   const RenderSettings& s = settings;
-  const auto draw_with = [&](const ShaderProgram& program) {
-    use(program, frame, view.camera);
-    const Vec3 center(view.camera.look_at.x(), s.ground.height, view.camera.look_at.z());
-    const double half_extent = std::max(30.0, 8.0 * (frame.camera_distance + frame.radius));
-    set_vector(program.uniform("u_center"), center.cast<float>());
-    glUniform1f(program.uniform("u_half_extent"), static_cast<float>(half_extent));
-    // lighting.glsl's shade() for the normal (0, 1, 0) without specular (the hemisphere
-    // term is 1 there).
-    const Eigen::Vector3f albedo = linear_from_srgb(s.ground.color);
-    const Eigen::Vector3f key = linear_from_srgb(s.light.color);
-    const float ambient = static_cast<float>(s.light.ambient);
-    const float diffuse = static_cast<float>(std::max(-frame.light_direction.y(), 0.0));
-    set_vector(program.uniform("u_lit_color"), albedo.cwiseProduct(key) * (ambient + diffuse));
-    set_vector(program.uniform("u_shadow_color"), albedo.cwiseProduct(key) * ambient);
-    set_vector(program.uniform("u_background"), linear_from_srgb(s.background));
-    glUniform1f(program.uniform("u_grid_spacing"), static_cast<float>(s.ground.grid_spacing));
-    glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
-    glBindVertexArray(ground_vao);
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-    glEnable(GL_CULL_FACE);
-  };
-  // With shadows inside the screen rectangle that holds every box's shadow on the ground, then
-  // without them everywhere: the same triangles give the same depths, so GL_LESS keeps the
-  // second pass off the rectangle, and (depth tested before shading) unshaded there.
-  const auto region = shadow_region(view, s, frame.view_projection, frame.light_direction);
-  if (s.shadows && region) {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
-    draw_with(shadowed_ground_program);
-    glDisable(GL_SCISSOR_TEST);
+  const GroundKey key = ground_key(view, frame);
+  use(program, frame, view.camera);
+  glUniform3fv(program.uniform("u_center"), 1, key.center.data());
+  glUniform1f(program.uniform("u_half_extent"), key.half_extent);
+  // lighting.glsl's shade() for the normal (0, 1, 0) without specular (the hemisphere
+  // term is 1 there).
+  const Eigen::Vector3f albedo = linear_from_srgb(s.ground.color);
+  const Eigen::Vector3f key_light = linear_from_srgb(s.light.color);
+  const float ambient = static_cast<float>(s.light.ambient);
+  const float diffuse = static_cast<float>(std::max(-frame.light_direction.y(), 0.0));
+  set_vector(program.uniform("u_lit_color"), albedo.cwiseProduct(key_light) * (ambient + diffuse));
+  set_vector(program.uniform("u_shadow_color"), albedo.cwiseProduct(key_light) * ambient);
+  set_vector(program.uniform("u_background"), linear_from_srgb(s.background));
+  glUniform1f(program.uniform("u_grid_spacing"), static_cast<float>(s.ground.grid_spacing));
+  glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
+  glBindVertexArray(ground_vao);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glEnable(GL_CULL_FACE);
+}
+
+void Renderer::Resources::start_frame(const FrameView& view, const FrameSetup& frame,
+                                      GLuint target) {
+  // The shaders encode to sRGB themselves, so the clear colour is given encoded too.
+  glClearColor(static_cast<float>(settings.background.x()),
+               static_cast<float>(settings.background.y()),
+               static_cast<float>(settings.background.z()), 1.0f);
+  glViewport(0, 0, settings.width, settings.height);
+  if (!settings.ground.enabled) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    return;
   }
-  draw_with(ground_program);
+  // Every frame is the kept ground copied, whether it was kept or drawn just now: the same
+  // bytes either way, so a render's frames do not depend on where it started.
+  const GroundKey key = ground_key(view, frame);
+  if (!ground.holds(key)) {
+    ground.begin_drawing(key);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    draw_ground_with(ground_program, view, frame);
+  }
+  ground.copy_to(target);
+}
+
+void Renderer::Resources::draw_ground_shadows(const FrameView& view, const FrameSetup& frame) {
+  // Again with shadows inside the screen rectangle that holds every box's shadow on the ground:
+  // the same triangles give the same depths (ground.vert's gl_Position is invariant), so
+  // GL_LEQUAL passes where the kept ground shows and fails where a box is nearer, before
+  // shading.
+  const auto region = shadow_region(view, settings, frame.view_projection, frame.light_direction);
+  if (!region) return;
+  glEnable(GL_SCISSOR_TEST);
+  glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
+  glDepthFunc(GL_LEQUAL);
+  draw_ground_with(shadowed_ground_program, view, frame);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& frame,
@@ -402,12 +456,20 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
   }
 }
 
-void Renderer::Resources::read_pixels(io::Image& out) const {
-  // RGBA, top row first (the context stores it so) to RGB.
+void Renderer::Resources::read_pixels(io::Image& out) {
+  // Straight from the frame's own framebuffer (glReadPixels waits for the drawing): copying it
+  // into the context's buffer first, with glBlitFramebuffer, costs llvmpipe more than the read.
+  const Framebuffer& source = settings.msaa > 1 ? resolved : target;
+  if (settings.msaa > 1) target.copy_to(resolved.id(), GL_COLOR_BUFFER_BIT);  // resolves
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, source.id());
+  glReadPixels(0, 0, settings.width, settings.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  if (settings.msaa == kEdgeFilter) {
+    filter_edges(rgba.data(), settings.width, settings.height, out);
+    return;
+  }
   if (out.width != settings.width || out.height != settings.height) {
     out = io::Image(settings.width, settings.height);
   }
-  const std::uint8_t* rgba = context->pixels();
   const std::size_t pixel_count = static_cast<std::size_t>(settings.width) * settings.height;
   for (std::size_t i = 0; i < pixel_count; ++i) {
     out.rgb[3 * i + 0] = rgba[4 * i + 0];
@@ -426,33 +488,21 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, s.msaa > 1 ? r.msaa_fbo : 0);
-  glViewport(0, 0, s.width, s.height);
-  // The shaders encode to sRGB themselves, so the clear colour is given encoded too.
-  glClearColor(static_cast<float>(s.background.x()), static_cast<float>(s.background.y()),
-               static_cast<float>(s.background.z()), 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  r.start_frame(view, frame, r.target.id());
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
 
-  // The opaque surfaces in any order give the same picture (GL_LESS keeps the nearest): the
-  // boxes first, so that the ground and the quads behind them fail the depth test before they
-  // are shaded. A quad seen from its front has the camera on the same side as every box (boxes
-  // stay outside planes), so it can hide none of them: opaque too. Those seen from their back
-  // are blended over everything, last.
+  // The opaque surfaces in any order give the same picture (GL_LESS keeps the nearest) but
+  // where two are at exactly the same depth. The ground is there first (the kept copy), then the
+  // boxes, then the ground's shadows where a box does not hide it. A quad seen from its front
+  // has the camera on the same side as every box (boxes stay outside planes), so it can hide
+  // none of them: opaque too. Those seen from their back are blended over everything, last.
   r.use(r.body_program, frame, view.camera);
   r.boxes.draw();
-  if (s.ground.enabled) r.draw_ground(view, frame);
+  if (s.ground.enabled && s.shadows) r.draw_ground_shadows(view, frame);
   r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
 
-  if (s.msaa > 1) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, r.msaa_fbo);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, s.width, s.height, 0, 0, s.width, s.height, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
-  }
-  glFinish();
   r.read_pixels(out);
 }
 

@@ -1,6 +1,8 @@
-// Draws a FrameView into an image: shadow pass from the key light, then the boxes (one instanced
-// draw), the ground, the quads seen from their front and last the quads seen from their back
-// (translucent) into a multisampled framebuffer, resolved into the off-screen context's buffer.
+// Draws a FrameView into an image: shadow pass from the key light, then the ground without
+// shadows (a kept copy while the camera stays, ground_cache.hpp), the boxes (one instanced draw),
+// the ground's shadows, the quads seen from their front and last the quads seen from their back
+// (translucent). All into a framebuffer of the renderer's own (multisampled when the settings
+// ask for samples), read back from it (through the edge filter by default).
 #pragma once
 
 #include <memory>

@@ -25,10 +25,12 @@ const std::string kGoldens = std::string(TUMBLE_SOURCE_DIR) + "/tests/render/gol
 // differently: a pixel may differ by up to 8 of 255 per channel, and up to 1% of pixels by more.
 constexpr io::DiffOptions kGoldenTolerance{.threshold = 8, .max_pixels = 160 * 120 / 100};
 
+// 4 samples per pixel, as the goldens were drawn before the edge filter became the default.
 RenderSettings small_settings() {
   RenderSettings settings;
   settings.width = 160;
   settings.height = 120;
+  settings.msaa = 4;
   settings.ground.height = -1.0;
   return settings;
 }
@@ -181,6 +183,17 @@ TEST(Renderer, ThousandBoxesMatchTheGoldenOfOneDrawPerBox) {
   expect_matches_golden(draw(settings, thousand_boxes_view()), "thousand_boxes");
 }
 
+// The default antialiasing (one sample per pixel, then the edge filter) on the same boxes: the
+// golden shows smoothed edges, the shadows and no artefacts next to thousand_boxes.png's MSAA.
+TEST(Renderer, ThousandBoxesWithTheEdgeFilterMatchGolden) {
+  RenderSettings settings = small_settings();
+  settings.width = 320;
+  settings.height = 180;
+  settings.msaa = kEdgeFilter;
+  settings.ground.height = -6.0;
+  expect_matches_golden(draw(settings, thousand_boxes_view()), "thousand_boxes_defaults");
+}
+
 // 1000 boxes in a 40 × 25 wall facing the camera, each red, green or blue so that no two side by
 // side or one above the other share a colour, of mixed sizes and turns: the pixel where each
 // box's centre projects shows that box's colour. A record read with the wrong stride, offset or
@@ -245,6 +258,33 @@ TEST(Renderer, DrawingTwiceIsByteIdentical) {
   EXPECT_EQ(first.rgb, second.rgb);
   // And a fresh renderer draws the same bytes.
   EXPECT_EQ(draw(small_settings(), view).rgb, first.rgb);
+}
+
+// The ground is kept while the camera stays and drawn again when it moves (ground_cache.hpp):
+// either way a frame has the bytes a fresh renderer draws for it, with the edge filter and with
+// multisampling, so a render's frames do not depend on the frame it started from.
+TEST(Renderer, KeptGroundGivesTheBytesOfAFreshDrawing) {
+  for (const int msaa : {kEdgeFilter, 4}) {
+    RenderSettings settings = small_settings();
+    settings.msaa = msaa;
+    FrameView still = cube_view(Quat(Eigen::AngleAxisd(0.3, Vec3(0, 1, 1).normalized())));
+    FrameView turned = still;  // the same camera, the cube turned further: the ground is kept
+    turned.boxes[0].orientation = Quat(Eigen::AngleAxisd(0.9, Vec3(1, 1, 0).normalized()));
+    FrameView moved = still;  // the camera elsewhere: the ground is drawn again
+    moved.camera.position = Vec3(-3.0, 2.5, 2.0);
+    std::string error;
+    const auto renderer = Renderer::create(settings, kShaders, error);
+    ASSERT_TRUE(renderer) << error;
+    io::Image first, kept, after_move, back;
+    renderer->draw(still, first);
+    renderer->draw(turned, kept);
+    renderer->draw(moved, after_move);
+    renderer->draw(still, back);
+    EXPECT_EQ(kept.rgb, draw(settings, turned).rgb) << "msaa " << msaa;
+    EXPECT_EQ(after_move.rgb, draw(settings, moved).rgb) << "msaa " << msaa;
+    EXPECT_EQ(back.rgb, first.rgb) << "msaa " << msaa;
+    EXPECT_NE(after_move.rgb, first.rgb) << "msaa " << msaa;
+  }
 }
 
 // The image is upright and the background and ground are where they belong: the top row is the

@@ -342,7 +342,7 @@ position = [2.0, 0.0, 0.0]
   EXPECT_EQ(scene.render.width, 1280);
   EXPECT_EQ(scene.render.height, 720);
   EXPECT_EQ(scene.fps, 60);
-  EXPECT_EQ(scene.render.msaa, 4);
+  EXPECT_EQ(scene.render.msaa, render::kEdgeFilter);  // no msaa given: one sample, filtered
   EXPECT_TRUE(scene.render.shadows);
 
   // Left out, the camera is placed later to frame the whole motion.
