@@ -68,9 +68,10 @@ TEST_F(DroppedCube, LastFrameMatchesItsGolden) {
                           << diff.max_channel_difference;
 }
 
-// The first 2.5 s of scenes/pile.toml, 600 boxes, while the column lands (every island sub-stepped
-// and fast pairs found again within steps): the CSV of two runs, and the frames of a pipelined
-// and a serial render, are the same bytes.
+// The first 1.5 s of scenes/pile.toml, 600 boxes, while the column lands (every island sub-stepped,
+// up to 32 times a step, fast pairs' points and bodies' corners near planes found again within
+// steps): the CSV of two runs, and the frames of a pipelined and a serial render, are the same
+// bytes. (1.5 s, not more: the sanitizer build takes about 25 s a simulated second here.)
 class PilePour : public tumble::testing::CommandTest {
  protected:
   std::string pour() const {
@@ -78,7 +79,7 @@ class PilePour : public tumble::testing::CommandTest {
     const std::string duration = "duration = 20.0";
     const std::size_t at = text.find(duration);
     EXPECT_NE(at, std::string::npos);
-    text.replace(at, duration.size(), "duration = 2.5");
+    text.replace(at, duration.size(), "duration = 1.5");
     const std::string file = path("pour.toml");
     std::ofstream(file) << text;
     return file;
@@ -90,12 +91,12 @@ TEST_F(PilePour, SimulateAndRenderGiveTheSameBytesEveryWay) {
   ASSERT_EQ(tumble("simulate " + scene + " --every 30 --out " + path("a.csv")).exit_code, 0);
   ASSERT_EQ(tumble("simulate " + scene + " --every 30 --out " + path("b.csv")).exit_code, 0);
   const std::string csv = read_file(path("a.csv"));
-  EXPECT_GT(csv.size(), 100000u);  // 600 bodies, 6 rows of each
+  EXPECT_GT(csv.size(), 100000u);  // 600 bodies, 4 rows of each
   EXPECT_EQ(csv, read_file(path("b.csv")));
-  const std::string frames = " -q --frames 70:75 --width 96 --height 54 --no-video ";
+  const std::string frames = " -q --frames 60:65 --width 96 --height 54 --no-video ";
   ASSERT_EQ(tumble("render" + frames + scene + " -o " + path("piped")).exit_code, 0);
   ASSERT_EQ(tumble("render --serial" + frames + scene + " -o " + path("serial")).exit_code, 0);
-  for (int k = 70; k < 75; ++k) {
+  for (int k = 60; k < 65; ++k) {
     const std::string name = "pile/frames/frame_000" + std::to_string(k) + ".png";
     const std::string piped = read_file(path("piped") + "/" + name);
     EXPECT_FALSE(piped.empty()) << name;
