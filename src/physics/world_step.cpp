@@ -589,10 +589,11 @@ void solve_substepped(Integrator integrator, std::span<const BodyModel> models,
 
 // Whether the island suits solve_converged: small, and slow. Small: its pass budget
 // (contact_island.hpp) still gives it kConvergedPasses. A pyramid of 55 cubes (400 points, 100
-// passes) stands within 3 mm for 30 s so, and a tower of ten cubes within 3 mm for 60 s, where
-// the sub-steps let the tower rock 14 cm; but with 30 passes the pyramid moved 1.1 cm, and a pile
-// of 1000 boxes solved so went 39 cm into itself, where with the sub-steps it goes 10 cm deep
-// while the boxes land and 0.6 mm once it settles (contact_bench). Slow: no pair can close by more
+// passes) stands within 3 mm for 30 s so (0.33 mm with kept manifolds), and a tower of ten cubes
+// within 3 mm for 60 s (1.3 mm), where the sub-steps let the tower rock 14 cm; but with 30 passes
+// the pyramid moved 1.1 cm, and a pile of 1000 boxes solved so went 39 cm into itself, where the
+// sub-steps (as many as it closes fast) keep it within 0.84 cm while the boxes land and 1.6 mm
+// once it settles (contact_bench). Slow: no pair can close by more
 // than kRefindReach in the step, for only the sub-steps find fast pairs' points again. Its points
 // are counted as its pairs' and four for each body touching a plane.
 constexpr int kConvergedPasses = 100;
