@@ -34,9 +34,8 @@ class CommandTest : public ::testing::Test {
   void SetUp() override {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
     // The process id keeps two test runs on one machine (two checkouts) out of each other's way.
-    dir_ = fs::path(::testing::TempDir()) /
-           ("tumble_" + std::string(test->test_suite_name()) + "_" + test->name() + "_" +
-            std::to_string(::getpid()));
+    dir_ = fs::path(::testing::TempDir()) / ("tumble_" + std::string(test->test_suite_name()) +
+                                             "_" + test->name() + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
