@@ -10,6 +10,7 @@
 
 #include "physics/integrators.hpp"
 #include "physics/plane_contact_step.hpp"
+#include "physics/world_step.hpp"
 #include "sim/simulation.hpp"
 
 namespace {
@@ -141,6 +142,32 @@ void StepBoxSlidingOnPlane(benchmark::State& state) {
   step_with_floor_repeatedly(state, 0.5, 3.0);
 }
 
+// The resting unit cube through the world step, as a scene steps it, each step from the last
+// one's end: range(1) = 0 awake (sleep = false), 1 with sleeping on (the default), which the
+// cube has fallen into during the 10 s it settles before it is timed.
+void StepWorldBoxRestingOnPlane(benchmark::State& state) {
+  const BodyModel model = box_under_gravity(0);
+  const Integrator integrator = integrator_at(state.range(0));
+  const std::vector<BodyModel> models = {model};
+  const std::vector<Plane> floor = {Plane{}};
+  const ContactSettings settings{.sleep = state.range(1) != 0};
+  WorldContacts contacts;
+  std::vector<BodyState> states = {box_at(model, 0.5)}, next(1);
+  double t = 0.0;
+  const auto step_once = [&] {
+    step_world(integrator, models, states, t, kDt, floor, settings, contacts, next);
+    states.swap(next);
+    t += kDt;
+  };
+  for (int n = 0; n < 600; ++n) step_once();
+  for (auto _ : state) {
+    step_once();
+    benchmark::DoNotOptimize(states);
+  }
+  state.SetLabel(std::string(integrator_name(integrator)) +
+                 (contacts.asleep[0] ? " asleep" : " awake"));
+}
+
 void StepBoxAbovePlane(benchmark::State& state) {
   step_with_floor_repeatedly(state, 10.0);
 }
@@ -162,6 +189,9 @@ BENCHMARK(StepBoxSlidingOnPlane)
 BENCHMARK(StepBoxRestingOnPenaltyPlane)
     ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
     ->ArgNames({"integrator", "shape"});
+BENCHMARK(StepWorldBoxRestingOnPlane)
+    ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
+    ->ArgNames({"integrator", "sleep"});
 BENCHMARK(StepBoxAbovePlane)
     ->ArgsProduct({benchmark::CreateDenseRange(0, kLastIntegrator, 1), {0, 1}})
     ->ArgNames({"integrator", "shape"});

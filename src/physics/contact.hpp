@@ -37,6 +37,10 @@ struct ContactSettings {
   // Bodies collide with each other (each body's BodyModel::collides too); false: they only
   // touch planes, as before contact between bodies existed.
   bool collide_bodies = true;
+  // Impulse only. An island of touching bodies that has stayed still for a while falls asleep:
+  // its steps cost nothing, and it keeps its pose exactly, until a body that is awake touches it
+  // (physics/world_step.hpp says when). false: every body is stepped at every step.
+  bool sleep = true;
 };
 
 // The methods in the order they are listed to users.

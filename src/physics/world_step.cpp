@@ -46,7 +46,11 @@ void advance_bodies(Integrator integrator, std::span<const BodyModel> models,
   contacts.advances.resize(in.size());
   contacts.planes.resize(in.size());
   for (std::size_t i = 0; i < in.size(); ++i) {
-    if (planes.empty()) {
+    if (contacts.asleep[i]) {
+      // Unmoved, and still in its island: its manifolds keep the impulses it fell asleep with.
+      contacts.advances[i] = {
+          .end = in[i], .rotation = in[i].rotation(), .remaining = dt, .touching = true};
+    } else if (planes.empty()) {
       contacts.advances[i] = {.end = step(integrator, models[i], in[i], t, dt), .remaining = dt};
     } else {
       contacts.advances[i] = advance_among_planes(integrator, models[i], in[i], t, dt, planes,
@@ -184,16 +188,17 @@ int group_islands(std::size_t body_count, WorldContacts& contacts) {
     contacts.island_of[i] = number_of_root[r];
   }
   // Bodies and pairs by island, each in its own order (a counting sort, which is stable).
-  const auto bucket = [islands](std::size_t count, auto island_of_item,
-                                std::vector<std::uint32_t>& offsets,
-                                std::vector<std::uint32_t>& items) {
+  std::vector<std::uint32_t>& next = contacts.next_slot;
+  const auto bucket = [islands, &next](std::size_t count, auto island_of_item,
+                                       std::vector<std::uint32_t>& offsets,
+                                       std::vector<std::uint32_t>& items) {
     offsets.assign(static_cast<std::size_t>(islands) + 1, 0);
     for (std::uint32_t k = 0; k < count; ++k) {
       if (const std::uint32_t i = island_of_item(k); i != kNone) ++offsets[i + 1];
     }
     for (int i = 0; i < islands; ++i) offsets[i + 1] += offsets[i];
     items.resize(offsets.back());
-    std::vector<std::uint32_t> next(offsets.begin(), offsets.end() - 1);
+    next.assign(offsets.begin(), offsets.end() - 1);
     for (std::uint32_t k = 0; k < count; ++k) {
       if (const std::uint32_t i = island_of_item(k); i != kNone) items[next[i]++] = k;
     }
@@ -397,6 +402,12 @@ void write_plane_rows(const PlaneRows& rows, const BodyModel& model, const BodyS
   patch.twist_impulse = twist_impulse;
 }
 
+// The members of an island.
+std::span<const std::uint32_t> members_of(std::uint32_t island, const WorldContacts& contacts) {
+  return {contacts.members.data() + contacts.member_offsets[island],
+          contacts.member_offsets[island + 1] - contacts.member_offsets[island]};
+}
+
 // The island's bodies, with the lists its solve fills emptied.
 std::span<const std::uint32_t> start_island(std::uint32_t island, WorldContacts& contacts) {
   contacts.solver.clear();
@@ -404,8 +415,7 @@ std::span<const std::uint32_t> start_island(std::uint32_t island, WorldContacts&
   contacts.patches.clear();
   contacts.positions.clear();
   contacts.local.resize(contacts.island_of.size());
-  return {contacts.members.data() + contacts.member_offsets[island],
-          contacts.member_offsets[island + 1] - contacts.member_offsets[island]};
+  return members_of(island, contacts);
 }
 
 // A small island (a tower, a pyramid, a few boxes knocking): every body's free step, then one
@@ -613,26 +623,113 @@ bool converges(std::uint32_t island, const WorldContacts& contacts) {
   return solver_passes(points) >= kConvergedPasses;
 }
 
+// Whether nothing but the body's state and the planes decides its laws: no law that switches
+// on or off or moves in time, which a sleeping body would miss.
+bool can_sleep(const BodyModel& model) {
+  constexpr double kForever = std::numeric_limits<double>::infinity();
+  return std::none_of(model.forces.begin(), model.forces.end(), [](const ForceLaw& law) {
+    if (const auto* push = std::get_if<ForceAtPoint>(&law)) {
+      return push->start != -kForever || push->end != kForever;
+    }
+    if (const auto* spring = std::get_if<Spring>(&law)) {
+      return spring->start != -kForever || spring->end != kForever ||
+             spring->anchor_keys.size() > 1;
+    }
+    return false;
+  });
+}
+
+bool island_asleep(std::uint32_t island, const WorldContacts& contacts) {
+  const auto members = members_of(island, contacts);
+  return std::all_of(members.begin(), members.end(),
+                     [&](std::uint32_t i) { return contacts.asleep[i] != 0; });
+}
+
+// Wakes the sleeping bodies of every island that has a body awake in it, each with its free step
+// and its reach now; returns whether any woke.
+bool wake_touched(Integrator integrator, std::span<const BodyModel> models,
+                  std::span<const BodyState> in, double t, double dt,
+                  const std::vector<Plane>& planes, const ContactSettings& settings, int islands,
+                  WorldContacts& contacts) {
+  bool woke = false;
+  for (std::uint32_t island = 0; island < static_cast<std::uint32_t>(islands); ++island) {
+    const auto members = members_of(island, contacts);
+    const bool some_awake = std::any_of(members.begin(), members.end(),
+                                        [&](std::uint32_t i) { return !contacts.asleep[i]; });
+    if (!some_awake || island_asleep(island, contacts)) continue;
+    for (const std::uint32_t i : members) {
+      if (!contacts.asleep[i]) continue;
+      contacts.asleep[i] = 0;
+      contacts.still_for[i] = 0.0;
+      contacts.advances[i] = advance_among_planes(integrator, models[i], in[i], t, dt, planes,
+                                                  settings, contacts.planes[i]);
+      contacts.reaches[i] = reach(in[i], contacts.advances[i].end, models[i].half_size, dt);
+      woke = true;
+    }
+  }
+  return woke;
+}
+
+// How fast the body's fastest point can move (m/s): a bound, |v| + |ω| × its half diagonal.
+double point_speed_bound(const BodyState& state, const Vec3& half_size) {
+  return state.velocity().norm() + state.angular_velocity().norm() * half_size.norm();
+}
+
+// After the islands' solves: each awake body's time still, and an island whose bodies have all
+// been still for kTimeToSleep (and may sleep) put to sleep at rest where it stands.
+void settle(std::span<const BodyModel> models, double dt, int islands, WorldContacts& contacts,
+            std::span<BodyState> out) {
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (contacts.island_of[i] == kNone) contacts.still_for[i] = 0.0;
+  }
+  for (std::uint32_t island = 0; island < static_cast<std::uint32_t>(islands); ++island) {
+    if (island_asleep(island, contacts)) continue;
+    const auto members = members_of(island, contacts);
+    bool sleeps = true;
+    for (const std::uint32_t i : members) {
+      const bool still = point_speed_bound(out[i], models[i].half_size) < kSleepSpeed;
+      contacts.still_for[i] = still ? contacts.still_for[i] + dt : 0.0;
+      sleeps = sleeps && contacts.still_for[i] >= kTimeToSleep && can_sleep(models[i]);
+    }
+    if (!sleeps) continue;
+    for (const std::uint32_t i : members) {
+      PrimaryState rest = out[i].primary();
+      rest.momentum.setZero();
+      rest.angular_momentum.setZero();
+      out[i] = BodyState(rest, models[i].constants);
+      contacts.asleep[i] = 1;
+    }
+  }
+}
+
 }  // namespace
 
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t, double dt,
                 const std::vector<Plane>& planes, const ContactSettings& settings,
                 WorldContacts& contacts, std::span<BodyState> out) {
+  contacts.asleep.resize(in.size(), 0);
+  contacts.still_for.resize(in.size(), 0.0);
   advance_bodies(integrator, models, in, t, dt, planes, settings, contacts);
   contacts.reaches.resize(in.size());
   for (std::size_t i = 0; i < in.size(); ++i) {
     contacts.reaches[i] = reach(in[i], contacts.advances[i].end, models[i].half_size, dt);
   }
-  contacts.found.clear();
-  if (settings.collide_bodies) find_pairs(models, in, contacts);
-  const int islands = group_islands(in.size(), contacts);
+  int islands = 0;
+  do {  // again while bodies woke: what they touch now may be asleep too
+    contacts.found.clear();
+    if (settings.collide_bodies) find_pairs(models, in, contacts);
+    islands = group_islands(in.size(), contacts);
+  } while (settings.sleep &&
+           wake_touched(integrator, models, in, t, dt, planes, settings, islands, contacts));
   for (std::size_t i = 0; i < in.size(); ++i) {
     if (contacts.island_of[i] == kNone) out[i] = std::move(contacts.advances[i].end);
   }
   for (int island = 0; island < islands; ++island) {
     const auto k = static_cast<std::uint32_t>(island);
-    if (contacts.pair_offsets[k] == contacts.pair_offsets[k + 1]) {
+    if (island_asleep(k, contacts)) {
+      for (const std::uint32_t i : members_of(k, contacts)) out[i] = in[i];
+    } else if (contacts.pair_offsets[k] == contacts.pair_offsets[k + 1]) {
       // One body touching planes alone: its impacts were at their times; it rests as it would
       // with no other body in the world.
       const std::uint32_t i = contacts.members[contacts.member_offsets[k]];
@@ -644,6 +741,7 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
       solve_substepped(integrator, models, in, t, dt, k, planes, settings, contacts, out);
     }
   }
+  if (settings.sleep) settle(models, dt, islands, contacts, out);
   contacts.pairs.swap(contacts.found);
 }
 

@@ -26,6 +26,20 @@ namespace tumble::physics {
 // and 1e-3 m as fast, but its boxes settled worse (0.11 and 0.044 m/s at 20 s, against 0.032).
 inline constexpr double kReuseDistance = 1e-4;
 
+// Sleeping (ContactSettings::sleep), as Box2D and Bullet sleep islands: an island of touching
+// bodies all of whose points have moved slower than kSleepSpeed at the end of every step for
+// kTimeToSleep falls asleep. Its bodies' momenta are set to zero there, and from then on each
+// step gives each body its pose unchanged, with no free step and no solve, until a body that is
+// awake touches one of them: then the whole island wakes within that step, and steps as before.
+// A body with a force law that switches on or off or moves in time (a push with start or end
+// times, a spring with them or with anchor keys) never sleeps, for nothing else would wake it.
+// A still body moves less than kSleepSpeed × kTimeToSleep = 2.5 mm while it waits, and a box
+// decelerated by friction (μ g = 4.9 m/s² at μ = 0.5) passes from kSleepSpeed to rest in 1 ms:
+// sleeping takes nothing from what a video shows. A box tipping from balance on an edge would be
+// put to sleep only if it stayed within 5 mm/s for half a second, that is balanced to ~1e-4 rad.
+inline constexpr double kSleepSpeed = 5e-3;  // m/s: |v| + |ω| × half diagonal
+inline constexpr double kTimeToSleep = 0.5;  // s
+
 // Where a pair's bodies stood when its manifold was found by the narrow phase, and what with: a
 // later step whose bodies have moved less than kReuseDistance relative to each other since keeps
 // its points (world_step.cpp).
@@ -84,6 +98,7 @@ struct WorldContacts {
   std::vector<char> paired;                             // per body: whether it touches another
   std::vector<std::uint32_t> members, member_offsets;   // bodies by island
   std::vector<std::uint32_t> pair_order, pair_offsets;  // indices into `found` by island
+  std::vector<std::uint32_t> next_slot;                 // per island, while bucketing
   std::vector<IslandBody> island_bodies;
   std::vector<BodyState> island_out;
   std::vector<SubstepBody> substep_bodies;
@@ -94,6 +109,9 @@ struct WorldContacts {
   SubstepScratch substep;
   std::vector<PairRows> rows;         // of the island's pairs found again at each sub-step
   std::vector<PlaneRows> plane_rows;  // of a fast island's bodies near planes, likewise
+  // Sleeping, per body: how long it has been still in an island (s), and whether it sleeps.
+  std::vector<double> still_for;
+  std::vector<char> asleep;
 };
 
 // Advances every body from `in` at t to t + dt (s) into `out`: the free steps, impacts with the
@@ -104,8 +122,9 @@ struct WorldContacts {
 // step_with_planes does; a small, slow island (a tower, a pyramid) to convergence after the free
 // steps (physics/contact_island.hpp); a large or fast one (a pile, a pour, a strike) in sub-steps
 // from the start of the step (physics/substep_island.hpp), finding fast pairs' points again
-// before each. Bodies collide when settings.collide_bodies and both models' `collides` say so. A
-// world where nothing touches gives exactly each body's free step.
+// before each. Bodies collide when settings.collide_bodies and both models' `collides` say so.
+// With settings.sleep, still islands sleep (kSleepSpeed). A world where nothing touches gives
+// exactly each body's free step.
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t /* s */, double dt /* s */,
                 const std::vector<Plane>& planes, const ContactSettings& settings,

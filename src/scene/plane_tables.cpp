@@ -119,6 +119,7 @@ physics::ContactSettings read_contact_settings(TableReader& in) {
   only_with("contact_stiffness", physics::ContactMethod::penalty);
   only_with("contact_damping", physics::ContactMethod::penalty);
   only_with("restitution_threshold", physics::ContactMethod::impulse);
+  only_with("sleep", physics::ContactMethod::impulse);
   out.stiffness = in.optional_number("contact_stiffness", out.stiffness);
   require_positive(in, "contact_stiffness", out.stiffness);
   out.damping = in.optional_number("contact_damping", out.damping);
@@ -127,6 +128,7 @@ physics::ContactSettings read_contact_settings(TableReader& in) {
       in.optional_number("restitution_threshold", out.restitution_threshold);
   require_non_negative(in, "restitution_threshold", out.restitution_threshold);
   out.collide_bodies = in.optional_bool("collide_bodies", out.collide_bodies);
+  out.sleep = in.optional_bool("sleep", out.sleep);
   return out;
 }
 

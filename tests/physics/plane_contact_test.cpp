@@ -27,6 +27,7 @@ struct DropSetup {
   bool gravity = true;
   Integrator integrator = Integrator::rk4;
   double dt = kStep;
+  bool sleep = true;  // ContactSettings::sleep
 };
 
 sim::Simulation simulation(const DropSetup& s) {
@@ -37,7 +38,7 @@ sim::Simulation simulation(const DropSetup& s) {
   if (s.gravity) model.forces.push_back(Gravity{.acceleration = Vec3(0.0, -kG, 0.0)});
   const BodyState start =
       make_state(model.constants, s.position, s.velocity, s.orientation, s.angular_velocity);
-  return sim::Simulation({model}, {start}, s.integrator, s.dt, s.planes);
+  return sim::Simulation({model}, {start}, s.integrator, s.dt, s.planes, {.sleep = s.sleep});
 }
 
 // Kinetic plus potential energy m g y (J).
@@ -201,8 +202,12 @@ TEST(PlaneContact, CubeOnASlopeSlidesWithTheClosedFormAcceleration) {
   EXPECT_NEAR(acceleration, expected, 0.01 * expected);
 }
 
-TEST(PlaneContact, TumblingCubeComesToRestOnAFaceAndStaysStill) {
+// The solver alone (sleep = false) must bring the cube to rest and hold it without jitter or
+// creep; with sleeping (the default) the cube falls asleep on the way and stays exactly still.
+void expect_tumbling_cube_to_rest(bool sleep) {
+  SCOPED_TRACE(sleep ? "sleep on" : "sleep off");
   DropSetup s;
+  s.sleep = sleep;
   s.position = Vec3(0.0, 2.0, 0.0);
   // A corner first: rotated 45° about z, then about x by atan(1/√2), spinning.
   s.orientation = Quat(Eigen::AngleAxisd(std::atan(1.0 / std::sqrt(2.0)), Vec3::UnitX())) *
@@ -221,8 +226,10 @@ TEST(PlaneContact, TumblingCubeComesToRestOnAFaceAndStaysStill) {
   }
   const double penetration = -closest_corner_separation(rest, Vec3::Constant(0.5), s.planes[0]);
   std::printf(
-      "[ measured ] at 10 s: |v| %.3g m/s, |w| %.3g rad/s, face %.3g rad, penetration %.3g m\n",
-      rest.velocity().norm(), rest.angular_velocity().norm(), face_angle, penetration);
+      "[ measured ] sleep %s, at 10 s: |v| %.3g m/s, |w| %.3g rad/s, face %.3g rad, penetration "
+      "%.3g m\n",
+      sleep ? "on" : "off", rest.velocity().norm(), rest.angular_velocity().norm(), face_angle,
+      penetration);
   EXPECT_LT(rest.velocity().norm(), 1e-3);
   EXPECT_LT(rest.angular_velocity().norm(), 1e-3);
   EXPECT_LT(face_angle, 1e-3);
@@ -239,8 +246,14 @@ TEST(PlaneContact, TumblingCubeComesToRestOnAFaceAndStaysStill) {
     }
     previous = now;
   }
-  std::printf("[ measured ] 10-60 s: largest corner move in a step %.3g m\n", largest_move);
+  std::printf("[ measured ] sleep %s, 10-60 s: largest corner move in a step %.3g m\n",
+              sleep ? "on" : "off", largest_move);
   EXPECT_LT(largest_move, 1e-5);
+}
+
+TEST(PlaneContact, TumblingCubeComesToRestOnAFaceAndStaysStill) {
+  expect_tumbling_cube_to_rest(false);
+  expect_tumbling_cube_to_rest(true);
 }
 
 TEST(PlaneContact, ElasticCubeBetweenTwoWallsKeepsItsEnergy) {

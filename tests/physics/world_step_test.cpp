@@ -63,6 +63,10 @@ TEST(WorldStep, ElasticHeadOnCollisionOfEqualCubesExchangesTheirVelocities) {
   EXPECT_GE(b.position().x() - a.position().x(), 1.0 - 1e-9);
 }
 
+// The stacks below measure the solver itself: they run awake, for a sleeping stack holds still
+// whatever the solver would do.
+constexpr ContactSettings kAwake{.sleep = false};
+
 // A stack of unit cubes on a floor, each resting on the one below (faces touching at the start).
 sim::Simulation stack(int count, Integrator integrator = Integrator::rk4) {
   const BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 0.0, .friction = 0.5}, true);
@@ -70,7 +74,7 @@ sim::Simulation stack(int count, Integrator integrator = Integrator::rk4) {
   std::vector<BodyState> start;
   for (int k = 0; k < count; ++k) start.push_back(at_rest(cube, Vec3(0.0, 0.5 + k, 0.0)));
   return sim::Simulation(models, start, integrator, kStep,
-                         {Plane{.material = {.restitution = 0.0, .friction = 0.5}}});
+                         {Plane{.material = {.restitution = 0.0, .friction = 0.5}}}, kAwake);
 }
 
 // A cube sliding slowly on another, 5e-7 m above it (no gravity, no friction: nothing pushes):
@@ -171,7 +175,7 @@ TEST(WorldStep, PyramidOfFiftyFiveCubesStandsForHalfAMinute) {
     }
   }
   sim::Simulation world(models, start, Integrator::rk4, kStep,
-                        {Plane{.material = {.restitution = 0.0, .friction = 0.5}}});
+                        {Plane{.material = {.restitution = 0.0, .friction = 0.5}}}, kAwake);
   double worst = 0.0;  // the largest distance of any box from its start (m)
   while (world.time() < 30.0) {
     world.step();
@@ -290,6 +294,110 @@ TEST(WorldStep, CollisionsConserveMomentumAndRepeatBitForBit) {
     EXPECT_EQ(first[i].orientation().coeffs(), second[i].orientation().coeffs());
     EXPECT_EQ(first[i].momentum(), second[i].momentum());
   }
+}
+
+// A world stepped by hand, so that its sleeping can be read.
+struct World {
+  std::vector<BodyModel> models;
+  std::vector<BodyState> states;
+  std::vector<Plane> planes = {Plane{.material = {.restitution = 0.0, .friction = 0.5}}};
+  ContactSettings settings;
+  WorldContacts contacts;
+  double time = 0.0;  // s
+  void step() {
+    std::vector<BodyState> next(states.size());
+    step_world(Integrator::rk4, models, states, time, kStep, planes, settings, contacts, next);
+    states.swap(next);
+    time += kStep;
+  }
+  bool asleep(std::size_t body) const {
+    return body < contacts.asleep.size() && contacts.asleep[body] != 0;
+  }
+};
+
+// A cube set down on the floor falls asleep once still for kTimeToSleep, at rest: from then its
+// state does not change by a bit. A second cube dropped on it wakes it, and the two end stacked
+// where the same world ends without sleeping, to well within what a frame shows.
+TEST(WorldStep, AStillBoxSleepsAndABoxLandingOnItWakesIt) {
+  const BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 0.0, .friction = 0.5}, true);
+  const auto run = [&](bool sleep) {
+    World world;
+    world.models = {cube, cube};
+    world.states = {at_rest(cube, Vec3(0.0, 0.5, 0.0)), at_rest(cube, Vec3(0.1, 3.0, 0.0))};
+    world.settings.sleep = sleep;
+    // The lower cube first settles in a world of its own, until it sleeps.
+    World alone;
+    alone.models = {cube};
+    alone.states = {world.states[0]};
+    alone.settings = world.settings;
+    double slept_at = -1.0;  // s
+    while (alone.time < 2.0) {
+      alone.step();
+      if (slept_at < 0.0 && alone.asleep(0)) slept_at = alone.time;
+    }
+    if (sleep) {
+      std::printf("[ measured ] the resting cube fell asleep at %.3f s\n", slept_at);
+      EXPECT_GT(slept_at, kTimeToSleep);
+      EXPECT_LT(slept_at, kTimeToSleep + 0.1);
+      EXPECT_EQ(alone.states[0].momentum(), Vec3::Zero());
+      EXPECT_EQ(alone.states[0].angular_momentum(), Vec3::Zero());
+      const BodyState before = alone.states[0];
+      for (int n = 0; n < 60; ++n) alone.step();
+      EXPECT_EQ(alone.states[0].position(), before.position());
+      EXPECT_EQ(alone.states[0].orientation().coeffs(), before.orientation().coeffs());
+    } else {
+      EXPECT_LT(slept_at, 0.0);
+    }
+    // Now the same cube, as it stands, with the other one above it falling.
+    world.states[0] = alone.states[0];
+    world.contacts.asleep = alone.contacts.asleep;
+    world.contacts.asleep.resize(2, 0);
+    world.contacts.still_for = alone.contacts.still_for;
+    world.contacts.still_for.resize(2, 0.0);
+    world.contacts.planes = alone.contacts.planes;
+    double woke_at = -1.0;                             // s
+    const double landing = std::sqrt(2.0 * 1.5 / kG);  // s: the 1.5 m fall to the lower's top
+    while (world.time < 4.0) {
+      world.step();
+      if (woke_at < 0.0 && sleep && !world.asleep(0)) woke_at = world.time;
+    }
+    if (sleep) {
+      std::printf("[ measured ] it woke %.3f s into the other's fall of %.3f s\n", woke_at,
+                  landing);
+      EXPECT_GT(woke_at, landing - 3.0 * kStep);
+      EXPECT_LT(woke_at, landing + kStep);
+    }
+    return world.states;
+  };
+  const std::vector<BodyState> awake = run(false), sleeping = run(true);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double apart = (awake[i].position() - sleeping[i].position()).norm();
+    std::printf("[ measured ] cube %zu ends %.2e m from where it ends awake\n", i, apart);
+    EXPECT_LT(apart, 1e-3);
+  }
+  EXPECT_NEAR(sleeping[1].position().y(), 1.5, 1e-3);  // stacked
+}
+
+// A body with a law that switches on in time never sleeps, for nothing else would wake it when
+// the push comes: its run is the same to the bit with sleeping on or off.
+TEST(WorldStep, ATimedPushKeepsItsBodyAwake) {
+  BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 0.0, .friction = 0.5}, true);
+  cube.forces.push_back(ForceAtPoint{.force = Vec3(20.0, 0.0, 0.0), .start = 2.0, .end = 2.5});
+  const auto run = [&](bool sleep) {
+    World world;
+    world.models = {cube};
+    world.states = {at_rest(cube, Vec3(0.0, 0.5, 0.0))};
+    world.settings.sleep = sleep;
+    while (world.time < 4.0) {
+      world.step();
+      EXPECT_FALSE(world.asleep(0));
+    }
+    return world.states[0];
+  };
+  const BodyState awake = run(false), sleeping = run(true);
+  EXPECT_GT(sleeping.position().x(), 0.1);  // the push moved it
+  EXPECT_EQ(sleeping.position(), awake.position());
+  EXPECT_EQ(sleeping.orientation().coeffs(), awake.orientation().coeffs());
 }
 
 }  // namespace

@@ -463,6 +463,14 @@ position = [0.5, 0.0, 0.0]
       std::holds_alternative<SceneError>(parse_scene("duration = 1.0\n" + two_cubes, "t.toml")));
 }
 
+// Still islands sleep unless the scene says sleep = false.
+TEST(SceneLoader, SleepIsOnUnlessTheSceneTurnsItOff) {
+  const std::string cube = "[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\n";
+  EXPECT_TRUE(parse_valid("duration = 1.0\n" + cube).physics.contact.sleep);
+  EXPECT_FALSE(
+      parse_valid("duration = 1.0\n[physics]\nsleep = false\n" + cube).physics.contact.sleep);
+}
+
 TEST(SceneLoader, LargeIntegersAreReadAsTheNearestDouble) {
   const SceneOrError result = parse_scene(R"(duration = 1.0
 [[bodies]]
