@@ -1,7 +1,11 @@
-// H.264 in MP4 from a sequence of Images: RGB is converted to BT.709 limited-range yuv420p by
-// libswscale, encoded by libx264 through libavcodec and muxed by libavformat. The file is written
-// under a temporary name beside the target and renamed into place by finish(), so the final path
-// holds a whole video or nothing. FFmpeg stays out of this header.
+// A video from a sequence of Images, in one of three formats:
+// - MP4: RGB converted to BT.709 limited-range yuv420p by libswscale, H.264 by libx264 through
+//   libavcodec, muxed by libavformat;
+// - WebM: the same yuv420p, VP9 by libvpx through libavcodec, in libavformat's WebM muxer;
+// - GIF: one palette for the whole video from libavfilter's palettegen over every frame, each
+//   frame mapped onto it by paletteuse, FFmpeg's GIF encoder and muxer.
+// The file is written under a temporary name beside the target and renamed into place by
+// finish(), so the final path holds a whole video or nothing. FFmpeg stays out of this header.
 #pragma once
 
 #include <memory>
@@ -11,11 +15,30 @@
 
 namespace tumble::io {
 
+enum class VideoFormat { mp4, webm, gif };
+
+// "mp4", "webm", "gif": the name in scenes and on the command line, and the file extension.
+const char* video_format_name(VideoFormat format);
+inline constexpr VideoFormat kAllVideoFormats[] = {VideoFormat::mp4, VideoFormat::webm,
+                                                   VideoFormat::gif};
+
+// GIF times frames in whole centiseconds, and browsers show delays under 2 cs as 10 cs. So a GIF
+// runs at 100/n frames per second, n = max(2, ceil(100 / fps)): every frame at 50, 25, 20 fps
+// and below 100/n; from 60 fps 50 (n = 2), from 30 fps 25 (n = 4), from 24 fps 20 (n = 5). GIF
+// frame j, at exactly j n / 100 s, shows the video frame nearest that time: each is then within
+// half a video frame of its time, and the GIF's length is the video's.
+int gif_delay_centiseconds(int fps);
+
 struct VideoSettings {
+  VideoFormat format = VideoFormat::mp4;
   int width = 0;   // pixels; must be even (yuv420p keeps one chroma sample per 2x2 pixels)
   int height = 0;  // pixels; must be even
   int fps = 0;     // frames per second; frame k is shown at t = k / fps (s), constant frame rate
-  int crf = 18;    // x264 constant rate factor, 0 (lossless) .. 51 (worst); 18 looks transparent
+  int crf = 18;  // MP4: x264 constant rate factor, 0 (lossless) .. 51 (worst); 18 looks transparent
+  // WebM: libvpx's constant quality, 0 (best) .. 63 (worst), at no bitrate cap. 30 is what
+  // Google's VP9 guide suggests for 720p and looks about as clean as x264's 18.
+  int vp9_crf = 30;
+  bool loop = true;                 // GIF: play forever (else once)
   std::string preset = "veryfast";  // x264 speed/size trade-off, "ultrafast" .. "placebo"
   // Encoder threads: a fixed count, never "auto", so the bytes do not depend on the machine. One
   // by default because only that gave byte-identical files run after run: with 2, x264 (core 164)
@@ -26,8 +49,8 @@ struct VideoSettings {
 
 class VideoEncoder {
  public:
-  // Creates "<path>.partial-<pid>.mp4" and sets up the encoder. Returns nullptr and sets `error`
-  // (naming the path and the failing call) if the settings are invalid or FFmpeg refuses.
+  // Creates "<path>.partial-<pid>.<format>" and sets up the encoder. Returns nullptr and sets
+  // `error` (naming the path and the failing call) if the settings are invalid or FFmpeg refuses.
   static std::unique_ptr<VideoEncoder> open(const std::string& path, const VideoSettings& settings,
                                             std::string& error);
 
@@ -39,8 +62,9 @@ class VideoEncoder {
   // be settings.width x settings.height. Returns "" on success, else the error.
   std::string add_frame(const Image& image);
 
-  // Drains the encoder, writes the MP4 index at the front of the file, then renames the file onto
-  // the final path. Returns "" on success; on failure nothing is left at either name.
+  // Drains the encoder (MP4: writes the index at the front of the file; GIF: maps and encodes
+  // every frame now that the palette is known), then renames the file onto the final path.
+  // Returns "" on success; on failure nothing is left at either name.
   std::string finish();
 
   int frames_added() const;

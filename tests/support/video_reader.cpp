@@ -26,6 +26,8 @@ double mean_plane(const AVFrame& frame, int plane, int width, int height) {
   return sum / (static_cast<double>(width) * height);
 }
 
+// A picture that is not yuv420p (a GIF's, decoded to RGB with its palette) is converted as it
+// is, with no colour matrix.
 DecodedVideo::Picture take_picture(const AVFrame& frame, AVRational time_base,
                                    SwsContext* yuv_to_rgb) {
   DecodedVideo::Picture picture;
@@ -35,12 +37,20 @@ DecodedVideo::Picture take_picture(const AVFrame& frame, AVRational time_base,
   picture.transfer = frame.color_trc;
   picture.space = frame.colorspace;
   picture.range = frame.color_range;
-  picture.mean_yuv = {mean_plane(frame, 0, frame.width, frame.height),
-                      mean_plane(frame, 1, frame.width / 2, frame.height / 2),
-                      mean_plane(frame, 2, frame.width / 2, frame.height / 2)};
   picture.rgb = Image(frame.width, frame.height);
   std::uint8_t* const destination[] = {picture.rgb.rgb.data()};
   const int destination_stride[] = {static_cast<int>(picture.rgb.row_bytes())};
+  if (frame.format != AV_PIX_FMT_YUV420P) {
+    io::av::Scaler as_is(sws_getContext(frame.width, frame.height, picture.pixel_format,
+                                        frame.width, frame.height, AV_PIX_FMT_RGB24, SWS_POINT,
+                                        nullptr, nullptr, nullptr));
+    sws_scale(as_is.get(), frame.data, frame.linesize, 0, frame.height, destination,
+              destination_stride);
+    return picture;
+  }
+  picture.mean_yuv = {mean_plane(frame, 0, frame.width, frame.height),
+                      mean_plane(frame, 1, frame.width / 2, frame.height / 2),
+                      mean_plane(frame, 2, frame.width / 2, frame.height / 2)};
   sws_scale(yuv_to_rgb, frame.data, frame.linesize, 0, frame.height, destination,
             destination_stride);
   return picture;
