@@ -1,0 +1,64 @@
+// What in a frame depends on the machine: llvmpipe's SIMD width (LP_NATIVE_VECTOR_WIDTH=128 is
+// what a machine without AVX gets) and its rasterizer threads (LP_NUM_THREADS). The same frames
+// rendered under each must be the default run's, byte for byte, for a golden drawn on one machine
+// to hold on another with the same Mesa (README, "Goldens across machines").
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "support/command_test.hpp"
+
+namespace tumble::testing {
+namespace {
+
+class LlvmpipeSettings : public CommandTest {};
+
+// scenes/cube_in_a_box.toml cut to its first second: a shadowed cube, a gridded floor and four
+// walls, two of them seen from the back (translucent); with the default edge filter or 4 samples.
+std::string cube_in_a_box(bool multisampled) {
+  std::string scene = read_file(std::string(TUMBLE_SOURCE_DIR) + "/scenes/cube_in_a_box.toml");
+  const std::string duration = "duration = 5.0";
+  scene.replace(scene.find(duration), duration.size(), "duration = 1.0");
+  if (multisampled) scene += "\n[render]\nmsaa = 4\n";
+  return scene;
+}
+
+TEST_F(LlvmpipeSettings, GiveTheDefaultRunsFramesByteForByte) {
+  const std::vector<std::string> settings = {"LP_NATIVE_VECTOR_WIDTH=128", "LP_NUM_THREADS=1",
+                                             "LP_NUM_THREADS=2", "LP_NUM_THREADS=4"};
+  for (const bool multisampled : {false, true}) {
+    SCOPED_TRACE(multisampled ? "msaa 4" : "edge filter");
+    write("scene.toml", cube_in_a_box(multisampled));
+    const auto render = [&](const std::string& folder, const std::string& environment) {
+      const Outcome outcome = tumble("render " + path("scene.toml") + " -o " + path(folder) +
+                                         " --width 320 --height 180 --frames 20:23 --no-video",
+                                     "exec env " + environment + " ");
+      EXPECT_EQ(outcome.exit_code, 0) << environment << ": " << outcome.err;
+      std::vector<std::string> frames;
+      for (int k = 20; k < 23; ++k) {
+        frames.push_back(read_file(fs::path(path(folder)) / "cube_in_a_box" / "frames" /
+                                   ("frame_000" + std::to_string(k) + ".png")));
+      }
+      return frames;
+    };
+    const std::vector<std::string> reference = render("default", "TUMBLE_UNUSED=1");
+    for (const std::string& frame : reference) ASSERT_GT(frame.size(), 1000u);
+    for (const std::string& environment : settings) {
+      const std::vector<std::string> frames = render(environment, environment);
+      // The setting took: report.json names the renderer, with its SIMD width.
+      const std::string report =
+          read_file(fs::path(path(environment)) / "cube_in_a_box" / "report.json");
+      if (environment == "LP_NATIVE_VECTOR_WIDTH=128") {
+        EXPECT_NE(report.find("llvmpipe (LLVM"), std::string::npos) << report;
+        EXPECT_NE(report.find("128 bits"), std::string::npos) << report;
+      }
+      for (std::size_t k = 0; k < frames.size(); ++k) {
+        EXPECT_TRUE(frames[k] == reference[k]) << environment << ", frame " << 20 + k;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tumble::testing
