@@ -5,6 +5,8 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "render/offscreen_context.hpp"
+
 namespace tumble::render {
 
 using Vec3 = Eigen::Vector3d;
@@ -72,6 +74,7 @@ struct RenderSettings {
   DirectionalLight light;
   Ground ground;
   bool shadows = true;
+  Backend backend = Backend::automatic;  // which off-screen OpenGL draws (offscreen_context.hpp)
 };
 
 // Changes every frame.

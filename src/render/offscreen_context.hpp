@@ -1,5 +1,7 @@
-// An OpenGL 3.3 core context with no window: frames are drawn into memory. Which API provides it
-// (OSMesa today; EGL surfaceless once Mesa drops OSMesa) is known only to its .cpp file.
+// An OpenGL 3.3 core context with no window: frames are drawn into the renderer's own
+// framebuffers in memory. Two back ends provide it, both Mesa's: OSMesa (Debian 12's, gone from
+// Mesa 25.1) and EGL on the surfaceless platform (EGL_MESA_platform_surfaceless, no display and no
+// GPU needed); which API each uses is known only to its .cpp file.
 #pragma once
 
 #include <memory>
@@ -7,19 +9,38 @@
 
 namespace tumble::render {
 
+enum class Backend {
+  automatic,  // OSMesa where it was built in and works, else EGL
+  osmesa,
+  egl,
+};
+
+// "auto", "osmesa", "egl": the name in scenes and on the command line.
+const char* backend_name(Backend backend);
+
 class OffscreenContext {
  public:
   virtual ~OffscreenContext() = default;
 
   virtual int width() const = 0;
   virtual int height() const = 0;
-  // GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa".
+  virtual Backend backend() const = 0;  // osmesa or egl: the one that made this context
+  // GL_RENDERER and GL_VERSION and the back end, e.g. "llvmpipe (LLVM 15.0.6, 256 bits),
+  // OpenGL 4.5 (Core Profile) Mesa 22.3.6 (OSMesa)".
   virtual std::string description() const = 0;
 };
 
-// Creates the context and makes it current on the calling thread. On failure returns null and
-// sets `error`.
-std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height,
+// Whether this build has the back end (CMake found its library).
+bool backend_built(Backend backend);
+
+// Creates the context with `backend` and makes it current on the calling thread, with the GL
+// entry points of render/gl.hpp loaded from it. On failure returns null and sets `error` (for
+// `automatic`, what each back end tried said).
+std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height, Backend backend,
                                                            std::string& error);
+
+// The back ends' own constructors (osmesa_context.cpp, egl_context.cpp), for the one above.
+std::unique_ptr<OffscreenContext> create_osmesa_context(int width, int height, std::string& error);
+std::unique_ptr<OffscreenContext> create_egl_context(int width, int height, std::string& error);
 
 }  // namespace tumble::render

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/gl.hpp"
+#include "render/gl_loader.hpp"
 #include "render/offscreen_context.hpp"
 
 namespace tumble::render {
@@ -28,13 +28,8 @@ class OsmesaContext final : public OffscreenContext {
 
   int width() const override { return width_; }
   int height() const override { return height_; }
-  std::string description() const override {
-    const auto text = [](GLenum name) {
-      const GLubyte* value = glGetString(name);
-      return value ? std::string(reinterpret_cast<const char*>(value)) : std::string("?");
-    };
-    return text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION) + " (OSMesa)";
-  }
+  Backend backend() const override { return Backend::osmesa; }
+  std::string description() const override { return gl_description() + " (OSMesa)"; }
 
  private:
   OSMesaContext context_;
@@ -47,8 +42,7 @@ class OsmesaContext final : public OffscreenContext {
 
 }  // namespace
 
-std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height,
-                                                           std::string& error) {
+std::unique_ptr<OffscreenContext> create_osmesa_context(int width, int height, std::string& error) {
   const int attributes[] = {OSMESA_FORMAT,
                             OSMESA_RGBA,
                             OSMESA_DEPTH_BITS,
@@ -73,6 +67,10 @@ std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height
   if (!out->make_current()) {
     error = "OSMesaMakeCurrent failed for a " + std::to_string(width) + "x" +
             std::to_string(height) + " buffer";
+    return nullptr;
+  }
+  if (const std::string missing = load_gl_functions(OSMesaGetProcAddress); !missing.empty()) {
+    error = "OSMesaGetProcAddress has no " + missing;
     return nullptr;
   }
   return out;

@@ -144,7 +144,7 @@ struct Renderer::Resources {
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
   std::string error;
-  context = create_offscreen_context(settings.width, settings.height, error);
+  context = create_offscreen_context(settings.width, settings.height, settings.backend, error);
   if (!context) return error;
 
   body_program =
