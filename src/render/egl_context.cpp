@@ -35,7 +35,9 @@ class EglContext final : public OffscreenContext {
   ~EglContext() override {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-    eglTerminate(display_);
+    // No eglTerminate: the surfaceless display is one per process, shared by every context made
+    // on it (two renderers in one process, a test drawing with each back end), and terminating
+    // it under another context would pull the driver from beneath it.
   }
 
   std::string open() {
