@@ -31,14 +31,22 @@ int gif_delay_centiseconds(int fps);
 
 struct VideoSettings {
   VideoFormat format = VideoFormat::mp4;
-  int width = 0;   // pixels; must be even (yuv420p keeps one chroma sample per 2x2 pixels)
-  int height = 0;  // pixels; must be even
-  int fps = 0;     // frames per second; frame k is shown at t = k / fps (s), constant frame rate
+  // Pixels; even for MP4 and WebM (yuv420p keeps one chroma sample per 2x2 pixels), any for GIF.
+  int width = 0;
+  int height = 0;
+  int fps = 0;   // frames per second; frame k is shown at t = k / fps (s), constant frame rate
   int crf = 18;  // MP4: x264 constant rate factor, 0 (lossless) .. 51 (worst); 18 looks transparent
-  // WebM: libvpx's constant quality, 0 (best) .. 63 (worst), at no bitrate cap. 30 is what
-  // Google's VP9 guide suggests for 720p and looks about as clean as x264's 18.
+  // WebM: libvpx's constant quality, 0 (best) .. 63 (worst), at no bitrate cap. Google's VP9 VOD
+  // guide suggests 33 for 640x480 with a cap; 30 keeps the encoder test's moving pattern within
+  // 2 levels RMS of its source (tests/io/video_encoder_test.cpp).
   int vp9_crf = 30;
-  bool loop = true;                 // GIF: play forever (else once)
+  bool loop = true;  // GIF: play forever (else once)
+  // MP4: a segment of a longer video, to be joined to the others by stream copy
+  // (io/video_join.hpp): its first frame is frame `first_frame` of the whole, at first_frame /
+  // fps s, and x264 keeps its headers independent of the content (its `stitchable` option), so
+  // every segment of the same settings carries the same SPS and PPS.
+  bool segment = false;
+  long long first_frame = 0;
   std::string preset = "veryfast";  // x264 speed/size trade-off, "ultrafast" .. "placebo"
   // Encoder threads: a fixed count, never "auto", so the bytes do not depend on the machine. One
   // by default because only that gave byte-identical files run after run: with 2, x264 (core 164)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include "support/test_frames.hpp"
 #include "support/video_reader.hpp"
 
 #include <array>
@@ -29,7 +30,9 @@ namespace tumble::io {
 namespace {
 
 using testing::DecodedVideo;
+using testing::moving_pattern;
 using testing::read_video;
+using testing::rms_difference;
 
 namespace fs = std::filesystem;
 
@@ -37,24 +40,6 @@ constexpr int kWidth = 160;
 constexpr int kHeight = 120;
 constexpr int kFps = 30;
 constexpr int kFrames = 30;  // one second
-
-// Smooth sines in every channel sliding 2 px per frame: compressible, so crf 18 keeps it close.
-Image moving_pattern(int width, int height, int k) {
-  Image image(width, height);
-  const double two_pi = 2.0 * std::numbers::pi;
-  for (int y = 0; y < height; ++y) {
-    std::uint8_t* row = image.row(y);
-    for (int x = 0; x < width; ++x) {
-      const double u = (x + 2.0 * k) / width;
-      const double v = static_cast<double>(y) / height;
-      row[3 * x + 0] = static_cast<std::uint8_t>(std::lround(128 + 100 * std::sin(two_pi * u)));
-      row[3 * x + 1] = static_cast<std::uint8_t>(std::lround(128 + 100 * std::cos(two_pi * v)));
-      row[3 * x + 2] =
-          static_cast<std::uint8_t>(std::lround(128 + 100 * std::sin(two_pi * (u - v))));
-    }
-  }
-  return image;
-}
 
 Image solid(int width, int height, std::array<std::uint8_t, 3> colour) {
   Image image(width, height);
@@ -376,16 +361,6 @@ TEST_F(VideoEncoderTest, FinishingWithoutFramesIsAnErrorAndLeavesNoFile) {
   EXPECT_EQ(encoder->finish(), out + ": no frames were added");
   EXPECT_TRUE(directory_listing().empty());
   EXPECT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, 0)), out + ": no frames were added");
-}
-
-// Root-mean-square difference over every channel of every pixel (code values 0..255).
-double rms_difference(const Image& a, const Image& b) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-    const double d = static_cast<double>(a.rgb[i]) - b.rgb[i];
-    sum += d * d;
-  }
-  return std::sqrt(sum / static_cast<double>(a.rgb.size()));
 }
 
 VideoSettings settings_for(VideoFormat format, int fps = kFps) {
