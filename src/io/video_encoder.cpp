@@ -3,7 +3,6 @@
 #include "io/av_handles.hpp"
 #include "io/filter_graph.hpp"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,12 +24,6 @@ extern "C" {
 
 namespace tumble::io {
 namespace {
-
-std::string av_error_text(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
 
 std::string size_text(int width, int height) {
   return std::to_string(width) + "x" + std::to_string(height);
@@ -71,16 +64,6 @@ std::string invalid_settings(const VideoSettings& settings) {
     return "threads must be at least 1 (got " + std::to_string(settings.threads) + ")";
   }
   return {};
-}
-
-// Flushes the file's data to disk before the rename publishes it, as AtomicFile does. Returns 0 or
-// the errno of the failing call.
-int sync_to_disk(const std::string& path) {
-  const int descriptor = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (descriptor < 0) return errno;
-  const int failure = ::fsync(descriptor) == 0 ? 0 : errno;
-  ::close(descriptor);
-  return failure;
 }
 
 // The video frame nearest GIF frame j's time j n / 100 s, at `fps`: round(j n fps / 100).
@@ -138,7 +121,7 @@ struct VideoEncoder::State {
   }
 
   std::string fail(const std::string& call, int code) {
-    if (error.empty()) error = path + ": " + call + ": " + av_error_text(code);
+    if (error.empty()) error = path + ": " + call + ": " + av::error_text(code);
     return error;
   }
 
@@ -510,7 +493,7 @@ std::string VideoEncoder::finish() {
     }
   }
   if (failure.empty()) {
-    if (const int errno_value = sync_to_disk(state.temporary_path); errno_value != 0) {
+    if (const int errno_value = av::sync_to_disk(state.temporary_path); errno_value != 0) {
       failure = state.fail("fsync(" + state.temporary_path + ")", AVERROR(errno_value));
     }
   }

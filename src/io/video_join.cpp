@@ -1,6 +1,5 @@
 #include "io/video_join.hpp"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,12 +18,6 @@ extern "C" {
 namespace tumble::io {
 namespace {
 
-std::string av_error_text(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
-
 using Input = std::unique_ptr<AVFormatContext, av::InputCloser>;
 
 // Opens `path` and finds its one video stream; on failure sets `error`.
@@ -33,12 +26,12 @@ Input open_input(const std::string& path, int& stream, std::string& error) {
   // "file:" first, as VideoEncoder writes: a path is never a protocol.
   if (const int code = avformat_open_input(&opened, ("file:" + path).c_str(), nullptr, nullptr);
       code < 0) {
-    error = path + ": avformat_open_input: " + av_error_text(code);
+    error = path + ": avformat_open_input: " + av::error_text(code);
     return nullptr;
   }
   Input input(opened);
   if (const int code = avformat_find_stream_info(input.get(), nullptr); code < 0) {
-    error = path + ": avformat_find_stream_info: " + av_error_text(code);
+    error = path + ": avformat_find_stream_info: " + av::error_text(code);
     return nullptr;
   }
   stream = av_find_best_stream(input.get(), AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
@@ -58,14 +51,6 @@ long long frame_of(std::int64_t timestamp, AVRational time_base, int fps) {
 int whole_fps(const AVStream& stream) {
   const AVRational rate = stream.avg_frame_rate;
   return rate.den > 0 && rate.num % rate.den == 0 ? rate.num / rate.den : 0;
-}
-
-int sync_to_disk(const std::string& path) {
-  const int descriptor = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (descriptor < 0) return errno;
-  const int failure = ::fsync(descriptor) == 0 ? 0 : errno;
-  ::close(descriptor);
-  return failure;
 }
 
 // The output MP4, removed unless finished.
@@ -109,7 +94,7 @@ VideoSegmentInfo read_segment_info(const std::string& path) {
     av_packet_unref(packet.get());
   }
   if (code != AVERROR_EOF) {
-    info.error = path + ": av_read_frame: " + av_error_text(code);
+    info.error = path + ": av_read_frame: " + av::error_text(code);
   } else if (info.frames == 0) {
     info.error = path + ": holds no frames";
   } else if (stream.nb_frames != 0 && stream.nb_frames != info.frames) {
@@ -171,7 +156,7 @@ std::string join_videos(const std::vector<std::string>& segments, const std::str
   Output out;
   out.temporary = path + ".partial-" + std::to_string(::getpid()) + ".mp4";
   const auto fail = [&](const std::string& call, int code) {
-    return path + ": " + call + ": " + av_error_text(code);
+    return path + ": " + call + ": " + av::error_text(code);
   };
   int code = avformat_alloc_output_context2(&out.format, nullptr, "mp4",
                                             ("file:" + out.temporary).c_str());
@@ -212,13 +197,13 @@ std::string join_videos(const std::vector<std::string>& segments, const std::str
       packet->stream_index = stream->index;
       packet->pos = -1;
       code = av_interleaved_write_frame(out.format, packet.get());
-      if (code < 0) return segments[i] + ": joining its packets: " + av_error_text(code);
+      if (code < 0) return segments[i] + ": joining its packets: " + av::error_text(code);
     }
-    if (code != AVERROR_EOF) return segments[i] + ": av_read_frame: " + av_error_text(code);
+    if (code != AVERROR_EOF) return segments[i] + ": av_read_frame: " + av::error_text(code);
   }
   if ((code = av_write_trailer(out.format)) < 0) return fail("av_write_trailer", code);
   if ((code = avio_closep(&out.format->pb)) < 0) return fail("avio_closep", code);
-  if (const int errno_value = sync_to_disk(out.temporary); errno_value != 0) {
+  if (const int errno_value = av::sync_to_disk(out.temporary); errno_value != 0) {
     return fail("fsync(" + out.temporary + ")", AVERROR(errno_value));
   }
   if (std::rename(out.temporary.c_str(), path.c_str()) != 0) {

@@ -12,12 +12,6 @@ extern "C" {
 namespace tumble::testing {
 namespace {
 
-std::string av_error_text(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
-}
-
 double mean_plane(const AVFrame& frame, int plane, int width, int height) {
   double sum = 0;
   for (int y = 0; y < height; ++y) {
@@ -62,18 +56,18 @@ DecodedVideo read_video(const std::string& path) {
   DecodedVideo video;
   AVFormatContext* opened = nullptr;
   if (int code = avformat_open_input(&opened, path.c_str(), nullptr, nullptr); code < 0) {
-    video.error = "avformat_open_input: " + av_error_text(code);
+    video.error = "avformat_open_input: " + io::av::error_text(code);
     return video;
   }
   std::unique_ptr<AVFormatContext, io::av::InputCloser> format(opened);
   if (int code = avformat_find_stream_info(format.get(), nullptr); code < 0) {
-    video.error = "avformat_find_stream_info: " + av_error_text(code);
+    video.error = "avformat_find_stream_info: " + io::av::error_text(code);
     return video;
   }
   const AVCodec* decoder = nullptr;
   const int index = av_find_best_stream(format.get(), AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
   if (index < 0) {
-    video.error = "av_find_best_stream: " + av_error_text(index);
+    video.error = "av_find_best_stream: " + io::av::error_text(index);
     return video;
   }
   const AVStream& stream = *format->streams[index];
@@ -94,7 +88,7 @@ DecodedVideo read_video(const std::string& path) {
   avcodec_parameters_to_context(codec.get(), &parameters);
   codec->thread_count = 1;
   if (int code = avcodec_open2(codec.get(), decoder, nullptr); code < 0) {
-    video.error = "avcodec_open2: " + av_error_text(code);
+    video.error = "avcodec_open2: " + io::av::error_text(code);
     return video;
   }
   // Chroma interpolated for every output pixel (FULL_CHR_H_INT): swscale's default upsampling
