@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <optional>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include "render/ground_cache.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/shader_program.hpp"
+#include "render/text_layer.hpp"
 
 namespace tumble::render {
 namespace {
@@ -113,6 +115,7 @@ struct Renderer::Resources {
   Framebuffer resolved;                   // one sample per pixel of a multisampled target
   std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
   GroundCache ground;                     // the ground without shadows, while the camera stays
+  std::unique_ptr<TextLayer> text;        // when the settings name a font
   GLuint ground_vao = 0, ground_vbo = 0;
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
@@ -243,6 +246,12 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
     ground = GroundCache::create(settings.width, settings.height, samples, error);
     if (!error.empty()) return error;
   }
+  if (!settings.font.empty()) {
+    Result<std::unique_ptr<TextLayer>> layer =
+        TextLayer::create(settings.width, settings.height, settings.font, shader_directory);
+    if (!layer) return layer.error();
+    text = std::move(layer).value();
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (glGetError() != GL_NO_ERROR) return "OpenGL error while setting up the renderer";
   return {};
@@ -263,6 +272,10 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
 
 std::string Renderer::description() const {
   return resources_->context->description();
+}
+
+const Font* Renderer::font() const {
+  return resources_->text ? &resources_->text->font() : nullptr;
 }
 
 FrameSetup Renderer::Resources::setup(const FrameView& view) const {
@@ -504,6 +517,11 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   r.draw_quads(view, frame, true);
 
   r.read_pixels(out);
+  // Text last, over the picture as read back and filtered (text_layer.hpp says why); a frame
+  // without text never reaches the text layer.
+  if (view.texts.empty()) return;
+  assert(r.text && "FrameView::texts needs RenderSettings::font");
+  if (r.text) r.text->draw(view.texts, out);
 }
 
 }  // namespace tumble::render
