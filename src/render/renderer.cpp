@@ -142,7 +142,9 @@ struct Renderer::Resources {
   void start_frame(const FrameView& view, const FrameSetup& frame, GLuint target);
   void draw_ground_shadows(const FrameView& view, const FrameSetup& frame);
   void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
-  void read_pixels(io::Image& out);
+  // Reads the frame into `out`, through the edge filter unless multisampled, which leaves
+  // `text_boxes` (from TextLayer::draw) alone.
+  void read_pixels(io::Image& out, const std::vector<PixelBox>& text_boxes);
 };
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
@@ -469,7 +471,7 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
   }
 }
 
-void Renderer::Resources::read_pixels(io::Image& out) {
+void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox>& text_boxes) {
   // Straight from the frame's own framebuffer (glReadPixels waits for the drawing): copying it
   // into the context's buffer first, with glBlitFramebuffer, costs llvmpipe more than the read.
   const Framebuffer& source = settings.msaa > 1 ? resolved : target;
@@ -477,7 +479,7 @@ void Renderer::Resources::read_pixels(io::Image& out) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, source.id());
   glReadPixels(0, 0, settings.width, settings.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (settings.msaa == kEdgeFilter) {
-    filter_edges(rgba.data(), settings.width, settings.height, out);
+    filter_edges(rgba.data(), settings.width, settings.height, out, text_boxes);
     return;
   }
   if (out.width != settings.width || out.height != settings.height) {
@@ -515,13 +517,15 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   if (s.ground.enabled && s.shadows) r.draw_ground_shadows(view, frame);
   r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
+  // Text last, over everything, and left alone by the edge filter (text_layer.hpp says why). A
+  // frame without text never reaches the text layer.
+  std::vector<PixelBox> text_boxes;
+  if (!view.texts.empty()) {
+    assert(r.text && "FrameView::texts needs RenderSettings::font");
+    if (r.text) text_boxes = r.text->draw(view.texts);
+  }
 
-  r.read_pixels(out);
-  // Text last, over the picture as read back and filtered (text_layer.hpp says why); a frame
-  // without text never reaches the text layer.
-  if (view.texts.empty()) return;
-  assert(r.text && "FrameView::texts needs RenderSettings::font");
-  if (r.text) r.text->draw(view.texts, out);
+  r.read_pixels(out, text_boxes);
 }
 
 }  // namespace tumble::render

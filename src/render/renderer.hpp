@@ -2,8 +2,8 @@
 // shadows (a kept copy while the camera stays, ground_cache.hpp), the boxes (one instanced draw),
 // the ground's shadows, the quads seen from their front and last the quads seen from their back
 // (translucent). All into a framebuffer of the renderer's own (multisampled when the settings
-// ask for samples), read back from it (through the edge filter by default). Text last, over the
-// picture read back (text_layer.hpp).
+// ask for samples), read back from it (through the edge filter by default). Text last, over
+// everything, left alone by the edge filter (text_layer.hpp).
 #pragma once
 
 #include <memory>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <optional>
 
 namespace tumble::render {
 namespace {
@@ -9,15 +10,18 @@ namespace {
 constexpr int kFloatsPerCorner = 8;   // x, y (px), atlas u, v (texels), premultiplied r, g, b, a
 constexpr int kFirstAtlasSize = 512;  // texels per side: a few hundred glyphs of 720p captions
 
-bool overlap(const PixelBox& a, const PixelBox& b) {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+bool contains(const PixelBox& outer, const PixelBox& inner) {
+  return inner.x >= outer.x && inner.y >= outer.y &&
+         inner.x + inner.width <= outer.x + outer.width &&
+         inner.y + inner.height <= outer.y + outer.height;
 }
 
-PixelBox around(const PixelBox& a, const PixelBox& b) {
-  const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
-  const int x1 = std::max(a.x + a.width, b.x + b.width);
-  const int y1 = std::max(a.y + a.height, b.y + b.height);
-  return {x0, y0, x1 - x0, y1 - y0};
+// `box` cut to the frame; nothing when none of it is inside.
+std::optional<PixelBox> clipped(const PixelBox& box, int width, int height) {
+  const int x0 = std::max(box.x, 0), y0 = std::max(box.y, 0);
+  const int x1 = std::min(box.x + box.width, width), y1 = std::min(box.y + box.height, height);
+  if (x1 <= x0 || y1 <= y0) return std::nullopt;
+  return PixelBox{x0, y0, x1 - x0, y1 - y0};
 }
 
 // Appends a rectangle of whole pixels as two triangles; `texel` its top-left atlas texel, or
@@ -47,29 +51,6 @@ Eigen::Vector4f premultiply(const Rgba& color, double opacity) {
 
 }  // namespace
 
-std::vector<PixelBox> merged_regions(const std::vector<PixelBox>& boxes, int width, int height) {
-  std::vector<PixelBox> out;
-  for (const PixelBox& box : boxes) {
-    const int x0 = std::max(box.x, 0), y0 = std::max(box.y, 0);
-    const int x1 = std::min(box.x + box.width, width), y1 = std::min(box.y + box.height, height);
-    if (x1 <= x0 || y1 <= y0) continue;
-    PixelBox merged{x0, y0, x1 - x0, y1 - y0};
-    // Swallow every region it meets, again after each growth, until it meets none.
-    for (bool grew = true; grew;) {
-      grew = false;
-      for (auto it = out.begin(); it != out.end(); ++it) {
-        if (!overlap(*it, merged)) continue;
-        merged = around(*it, merged);
-        out.erase(it);
-        grew = true;
-        break;
-      }
-    }
-    out.push_back(merged);
-  }
-  return out;
-}
-
 Result<std::unique_ptr<TextLayer>> TextLayer::create(int width, int height,
                                                      std::string_view font_family,
                                                      const std::string& shader_directory) {
@@ -82,8 +63,6 @@ Result<std::unique_ptr<TextLayer>> TextLayer::create(int width, int height,
   std::string error;
   out->program_ = ShaderProgram::build(shader_directory, {"text.vert"}, {"text.frag"}, error);
   if (!out->program_.valid()) return Error{error};
-  out->layer_ = Framebuffer::create(width, height, 1, error);
-  if (!error.empty()) return Error{"text layer: " + error};
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
   out->atlas_ = GlyphAtlas(std::min(kFirstAtlasSize, max_size), max_size);
@@ -110,39 +89,37 @@ TextLayer::~TextLayer() {
   glDeleteBuffers(1, &vbo_);
 }
 
-std::vector<TextLayout> TextLayer::lay_out_all(const std::vector<Text>& texts) {
-  std::vector<TextLayout> out;
-  out.reserve(texts.size());
-  for (const Text& text : texts) {
-    Result<TextLayout> layout = lay_out(*font_, text, width_, height_);
-    assert(layout.ok() && "text must be checked with decode_utf8 before it is drawn");
-    out.push_back(layout ? std::move(layout).value() : TextLayout{});
-  }
-  return out;
-}
-
 std::vector<float> TextLayer::vertices(const std::vector<Text>& texts,
-                                       const std::vector<TextLayout>& layouts,
-                                       std::vector<PixelBox>& covered) {
+                                       std::vector<PixelBox>& drawn_on) {
   std::vector<float> out;
-  for (std::size_t i = 0; i < texts.size(); ++i) {
-    const Text& text = texts[i];
-    const TextLayout& layout = layouts[i];
-    PixelBox extent = layout.box;  // a glyph may reach past the box (a deep descender, an accent)
-    if (text.background) {
-      add_rectangle(out, layout.box, -1.0f, -1.0f, premultiply(*text.background, text.opacity));
+  for (const Text& text : texts) {
+    const Result<TextLayout> layout = lay_out(*font_, text, width_, height_);
+    assert(layout.ok() && "text must be checked with decode_utf8 before it is drawn");
+    if (!layout) continue;
+    std::vector<PixelBox> kept;
+    const Eigen::Vector4f background =
+        premultiply(text.background.value_or(Rgba::Zero()), text.opacity);
+    const bool boxed = background.w() > 0.0f;
+    if (boxed) {
+      add_rectangle(out, layout->box, -1.0f, -1.0f, background);
+      kept.push_back(layout->box);
     }
     const Eigen::Vector4f color = premultiply(text.color, text.opacity);
-    for (const PlacedGlyph& placed : layout.glyphs) {
-      const auto glyph = atlas_.find_or_add(*font_, placed.glyph, layout.pixel_height);
+    for (const PlacedGlyph& placed : layout->glyphs) {
+      if (color.w() == 0.0f) break;
+      const auto glyph = atlas_.find_or_add(*font_, placed.glyph, layout->pixel_height);
       assert(glyph && "a frame's glyphs fit in an atlas of GL_MAX_TEXTURE_SIZE");
       if (!glyph || glyph->width == 0) continue;  // a space has no bitmap
       const PixelBox box{placed.x + glyph->left, placed.y - glyph->top, glyph->width,
                          glyph->height};
       add_rectangle(out, box, static_cast<float>(glyph->x), static_cast<float>(glyph->y), color);
-      extent = around(extent, box);
+      // Inside the background box already kept, unless it reaches past it (a deep descender).
+      const PixelBox grown{box.x - 1, box.y - 1, box.width + 2, box.height + 2};
+      if (!boxed || !contains(layout->box, grown)) kept.push_back(grown);
     }
-    covered.push_back(extent);
+    for (const PixelBox& box : kept) {
+      if (const auto inside = clipped(box, width_, height_)) drawn_on.push_back(*inside);
+    }
   }
   return out;
 }
@@ -150,7 +127,6 @@ std::vector<float> TextLayer::vertices(const std::vector<Text>& texts,
 void TextLayer::upload_atlas() {
   const auto [first, last] = atlas_.changed_rows();
   if (!atlas_.resized() && first == last) return;
-  glBindTexture(GL_TEXTURE_2D, texture_);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows of single bytes, any width
   const int size = atlas_.size();
   if (atlas_.resized()) {
@@ -166,23 +142,20 @@ void TextLayer::upload_atlas() {
   atlas_.mark_uploaded();
 }
 
-void TextLayer::draw_layer(const std::vector<float>& vertices,
-                           const std::vector<PixelBox>& regions) {
-  glBindFramebuffer(GL_FRAMEBUFFER, layer_.id());
-  glViewport(0, 0, width_, height_);
-  glDisable(GL_DEPTH_TEST);
+std::vector<PixelBox> TextLayer::draw(const std::vector<Text>& texts) {
+  std::vector<PixelBox> drawn_on;
+  const std::vector<float> corners = vertices(texts, drawn_on);
+  if (drawn_on.empty()) return drawn_on;  // nothing visible inside the frame
+  GLint kept_texture = 0;  // the renderer's (the shadow map) on unit 0, given back at the end
+  glActiveTexture(GL_TEXTURE0);
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &kept_texture);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  upload_atlas();
+  glDisable(GL_DEPTH_TEST);  // over everything
   glDisable(GL_CULL_FACE);
-  // Transparent under the boxes only: nothing else of the layer is read.
-  glEnable(GL_SCISSOR_TEST);
-  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  for (const PixelBox& region : regions) {
-    glScissor(region.x, height_ - region.y - region.height, region.width, region.height);
-    glClear(GL_COLOR_BUFFER_BIT);
-  }
-  glDisable(GL_SCISSOR_TEST);
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)),
-               vertices.data(), GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(corners.size() * sizeof(float)),
+               corners.data(), GL_STREAM_DRAW);
   glUseProgram(program_.id());
   glUniform2f(program_.uniform("u_frame_size"), static_cast<float>(width_),
               static_cast<float>(height_));
@@ -190,49 +163,13 @@ void TextLayer::draw_layer(const std::vector<float>& vertices,
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over" (Porter & Duff 1984)
   glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size() / kFloatsPerCorner));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(corners.size() / kFloatsPerCorner));
   glBindVertexArray(0);
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
-}
-
-void TextLayer::composite(const PixelBox& region, io::Image& picture) {
-  readback_.resize(static_cast<std::size_t>(region.width) * region.height * 4);
-  // Rows come top first (the renderer turned on Mesa's pack-invert), GL counts them from below.
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, layer_.id());
-  glReadPixels(region.x, height_ - region.y - region.height, region.width, region.height, GL_RGBA,
-               GL_UNSIGNED_BYTE, readback_.data());
-  const std::uint8_t* layer = readback_.data();
-  for (int row = 0; row < region.height; ++row) {
-    std::uint8_t* out = picture.row(region.y + row) + 3 * region.x;
-    for (int column = 0; column < region.width; ++column, layer += 4, out += 3) {
-      const int transparency = 255 - layer[3];
-      if (transparency == 255) continue;  // nothing drawn here (and a premultiplied 0 colour)
-      for (int c = 0; c < 3; ++c) {
-        const int blended = layer[c] + (out[c] * transparency + 127) / 255;  // src + (1 - a) dst
-        out[c] = static_cast<std::uint8_t>(std::min(blended, 255));
-      }
-    }
-  }
-}
-
-void TextLayer::draw(const std::vector<Text>& texts, io::Image& picture) {
-  assert(picture.width == width_ && picture.height == height_);
-  const std::vector<TextLayout> layouts = lay_out_all(texts);
-  std::vector<PixelBox> covered;
-  const std::vector<float> corners = vertices(texts, layouts, covered);
-  const std::vector<PixelBox> regions = merged_regions(covered, width_, height_);
-  if (regions.empty()) return;  // every text outside the frame
-  GLint kept_texture = 0;  // the renderer's (the shadow map) on unit 0, given back at the end
-  glActiveTexture(GL_TEXTURE0);
-  glGetIntegerv(GL_TEXTURE_BINDING_2D, &kept_texture);
-  upload_atlas();
-  glBindTexture(GL_TEXTURE_2D, texture_);
-  draw_layer(corners, regions);
-  for (const PixelBox& region : regions) composite(region, picture);
   glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(kept_texture));
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return drawn_on;
 }
 
 }  // namespace tumble::render

@@ -9,6 +9,7 @@
 
 #include "render/font.hpp"
 #include "render/frame.hpp"
+#include "render/pixel_box.hpp"
 #include "render/result.hpp"
 
 namespace tumble::render {
@@ -18,16 +19,6 @@ namespace tumble::render {
 inline constexpr double kTextPadding = 0.25;
 // The frame height Text's sizes are given for (px).
 inline constexpr int kTextReferenceHeight = 720;
-
-// A rectangle of whole pixels on the frame: x right from the left column, y down from the top row.
-struct PixelBox {
-  int x = 0;
-  int y = 0;
-  int width = 0;
-  int height = 0;
-
-  bool operator==(const PixelBox&) const = default;
-};
 
 struct PlacedGlyph {
   std::uint32_t glyph = 0;  // the font's glyph index, never 0

@@ -1,6 +1,6 @@
 // Text drawn by the renderer over the frame: golden images at 320×180 and 1280×720, the glyphs
-// on the picture exactly FreeType's bitmaps (so never the missing-glyph box, and untouched by
-// the edge filter), and frames without text on today's path, byte for byte. Goldens live in
+// on the picture exactly FreeType's bitmaps (so never the missing-glyph box, and kept from the
+// edge filter), and frames without text on today's path, byte for byte. Goldens live in
 // tests/render/golden/ (TUMBLE_UPDATE_GOLDEN=1 rewrites them, see renderer_test.cpp).
 #include "render/text_layer.hpp"
 
@@ -106,7 +106,7 @@ TEST(TextLayer, OverlaysMatchGoldenAt1280x720) {
 
 // White text on black: each pixel's value is the glyph's coverage, so the picture shows exactly
 // FreeType's bitmap of ω, τ, Δ and ² where the layout puts it, nothing elsewhere (the edge filter,
-// which runs before the text, has not touched it), and that bitmap is not the missing-glyph box.
+// the default, has not touched it), and that bitmap is not the missing-glyph box.
 TEST(TextLayer, DrawnGlyphsAreTheFontsBitmapsAndNotTheMissingGlyphBox) {
   RenderSettings settings = text_settings(160, 120);
   settings.background = Color(0.0, 0.0, 0.0);
@@ -203,14 +203,6 @@ TEST(TextLayer, AFontFontconfigDoesNotHaveIsAnErrorAtCreate) {
   EXPECT_FALSE(Renderer::create(settings, kShaders, error));
   EXPECT_NE(error.find("font family \"No Such Family Xq\" is not installed"), std::string::npos)
       << error;
-}
-
-TEST(TextLayer, OverlappingBoxesMergeIntoOneRegionClippedToTheFrame) {
-  const std::vector<PixelBox> regions =
-      merged_regions({{-10, 5, 30, 10}, {15, 10, 10, 10}, {50, 50, 5, 5}, {400, 0, 5, 5}}, 100, 80);
-  ASSERT_EQ(regions.size(), 2u);
-  EXPECT_EQ(regions[0], (PixelBox{0, 5, 25, 15}));
-  EXPECT_EQ(regions[1], (PixelBox{50, 50, 5, 5}));
 }
 
 }  // namespace
