@@ -149,8 +149,12 @@ bool Font::load_glyph(std::uint32_t glyph, int pixel_height) {
 }
 
 std::int32_t Font::advance(std::uint32_t glyph, int pixel_height) {
+  const auto key = std::make_pair(glyph, pixel_height);
+  if (const auto found = advances_.find(key); found != advances_.end()) return found->second;
   if (!load_glyph(glyph, pixel_height)) return 0;
-  return static_cast<std::int32_t>(face_->glyph->advance.x);
+  const auto advance = static_cast<std::int32_t>(face_->glyph->advance.x);
+  advances_.emplace(key, advance);
+  return advance;
 }
 
 std::int32_t Font::kerning(std::uint32_t left, std::uint32_t right, int pixel_height) {

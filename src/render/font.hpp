@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -68,6 +69,7 @@ class Font {
   // Metrics at `pixel_height`, the em size in pixels (what FreeType calls the pixel size).
   LineMetrics line_metrics(int pixel_height) const;
   // The pen's advance after `glyph` (1/64 px): unhinted, so that text scales with its height.
+  // Kept once found: a live value lays out the same glyphs every frame.
   std::int32_t advance(std::uint32_t glyph, int pixel_height);
   // The kerning between `left` and `right` added to the pen (1/64 px), 0 when the font has no
   // kerning table.
@@ -87,6 +89,7 @@ class Font {
   FT_FaceRec_* face_;
   FontFile file_;
   int pixel_height_ = 0;  // the size the face is set to, 0 = none yet
+  std::map<std::pair<std::uint32_t, int>, std::int32_t> advances_;  // by (glyph, pixel height)
 };
 
 }  // namespace tumble::render
