@@ -127,9 +127,19 @@ void copy_rgb(const std::uint8_t* rgba, std::size_t pixel_count, std::uint8_t* r
   std::memcpy(rgb + 3 * (pixel_count - 1), rgba + 4 * (pixel_count - 1), 3);
 }
 
+// Marks the pixels of row `y` inside `boxes` as not to filter. Precondition: boxes within the
+// picture.
+void leave_unfiltered(const std::vector<PixelBox>& boxes, int y, std::vector<std::uint8_t>& range) {
+  for (const PixelBox& box : boxes) {
+    if (y < box.y || y >= box.y + box.height) continue;
+    std::fill_n(range.begin() + box.x, box.width, std::uint8_t{0});
+  }
+}
+
 }  // namespace
 
-void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& out) {
+void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& out,
+                  const std::vector<PixelBox>& unfiltered) {
   if (out.width != width || out.height != height) out = io::Image(width, height);
   copy_rgb(rgba, static_cast<std::size_t>(width) * height, out.rgb.data());
   Luma luma(rgba, width, height);
@@ -149,6 +159,7 @@ void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& ou
       const bool filtered = contrast >= kContrastFloor && contrast * kContrastRelative >= highest;
       range[static_cast<std::size_t>(x)] = static_cast<std::uint8_t>(filtered ? contrast : 0);
     }
+    leave_unfiltered(unfiltered, y, range);
     for (int x = 0; x < width; ++x) {
       if (range[static_cast<std::size_t>(x)] == 0) {
         // Most of a row is not on an edge: skip eight pixels at a time where none is.

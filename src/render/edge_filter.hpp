@@ -4,16 +4,20 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "io/image.hpp"
+#include "render/pixel_box.hpp"
 
 namespace tumble::render {
 
 // Copies the picture `rgba` (width × height × 4 bytes, top row first; alpha ignored) to `out`
 // as RGB (resized to width × height), blending each pixel on a hard luminance edge with its
 // neighbour across the edge by how much of the pixel the straightened edge would cover: the
-// idea of FXAA (Lottes 2009). Pixels away from edges are copied unchanged. The same input gives
-// the same bytes.
-void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& out);
+// idea of FXAA (Lottes 2009). Pixels away from edges are copied unchanged, and so are those
+// inside `unfiltered` (text, antialiased by its glyphs' coverage: text_layer.hpp). The same
+// input gives the same bytes.
+void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& out,
+                  const std::vector<PixelBox>& unfiltered = {});
 
 }  // namespace tumble::render

@@ -1,8 +1,10 @@
-// What the renderer draws, as plain data: a camera, lights, boxes with poses and quads. It knows
-// nothing of bodies, planes, forces or time.
+// What the renderer draws, as plain data: a camera, lights, boxes with poses, quads and text
+// over the picture. It knows nothing of bodies, planes, forces or time.
 #pragma once
 
 #include <Eigen/Geometry>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "render/offscreen_context.hpp"
@@ -15,6 +17,8 @@ using Quat = Eigen::Quaterniond;
 // Colours are sRGB-encoded components in [0, 1], as people write them; the renderer lights in
 // linear space and encodes the result back to sRGB.
 using Color = Eigen::Vector3d;
+// sRGB-encoded colour and a straight (not premultiplied) opacity, each in [0, 1].
+using Rgba = Eigen::Vector4d;
 
 struct Camera {
   Vec3 position = Vec3(4.0, 3.0, 6.0);  // world frame (m)
@@ -57,6 +61,35 @@ struct Quad {
   double grid_spacing = 1.0;              // m between grid lines, from the centre; 0 = no grid
 };
 
+// Where on the frame a text's box sits: a corner, the middle of an edge or the centre. Lines of
+// several-line text align to the same side (left, centre, right). In reading order, row by row:
+// the layout (text_layout.cpp) takes the column and the row from the value.
+enum class Anchor {
+  kTopLeft,
+  kTop,
+  kTopRight,
+  kLeft,
+  kCentre,
+  kRight,
+  kBottomLeft,
+  kBottom,
+  kBottomRight
+};
+
+// Text over the picture (a title, a caption, a live value), drawn after the scene. Sizes are
+// given for a 720-row frame and scale with the frame's height, so that a render at 180 or 2160
+// rows shows the same layout.
+struct Text {
+  std::string text;                  // UTF-8, '\n' between lines
+  Anchor anchor = Anchor::kTopLeft;  // of the frame, and of the text's box
+  Eigen::Vector2d offset =
+      Eigen::Vector2d::Zero();            // box from the anchor, x right, y down (px at 720 rows)
+  double height = 32.0;                   // em size (px at 720 rows)
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);  // of the glyphs
+  std::optional<Rgba> background = std::nullopt;  // a box behind the text, padded around it
+  double opacity = 1.0;                           // of glyphs and box together, to fade (0-1)
+};
+
 // RenderSettings::msaa when the scene asks for no multisampling: one sample per pixel, then the
 // edge filter (render/edge_filter.hpp) on the picture read back. On llvmpipe 4 samples per pixel
 // cost more than everything else a frame of 1000 boxes draws; the filter costs one pass over
@@ -75,6 +108,9 @@ struct RenderSettings {
   Ground ground;
   bool shadows = true;
   Backend backend = Backend::automatic;  // which off-screen OpenGL draws (offscreen_context.hpp)
+  // The fontconfig family FrameView::texts are drawn in (kDefaultFontFamily, render/font.hpp,
+  // unless the scene chooses); empty for a render without text, which then loads no font.
+  std::string font;
 };
 
 // Changes every frame.
@@ -82,6 +118,7 @@ struct FrameView {
   Camera camera;
   std::vector<Box> boxes;
   std::vector<Quad> quads;
+  std::vector<Text> texts;  // drawn in order, each over the ones before; needs settings' font
 };
 
 }  // namespace tumble::render

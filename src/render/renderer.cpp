@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <optional>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include "render/ground_cache.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/shader_program.hpp"
+#include "render/text_layer.hpp"
 
 namespace tumble::render {
 namespace {
@@ -113,6 +115,7 @@ struct Renderer::Resources {
   Framebuffer resolved;                   // one sample per pixel of a multisampled target
   std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
   GroundCache ground;                     // the ground without shadows, while the camera stays
+  std::unique_ptr<TextLayer> text;        // when the settings name a font
   GLuint ground_vao = 0, ground_vbo = 0;
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
@@ -139,7 +142,9 @@ struct Renderer::Resources {
   void start_frame(const FrameView& view, const FrameSetup& frame, GLuint target);
   void draw_ground_shadows(const FrameView& view, const FrameSetup& frame);
   void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
-  void read_pixels(io::Image& out);
+  // Reads the frame into `out`, through the edge filter unless multisampled, which leaves
+  // `text_boxes` (from TextLayer::draw) alone.
+  void read_pixels(io::Image& out, const std::vector<PixelBox>& text_boxes);
 };
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
@@ -243,6 +248,12 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
     ground = GroundCache::create(settings.width, settings.height, samples, error);
     if (!error.empty()) return error;
   }
+  if (!settings.font.empty()) {
+    Result<std::unique_ptr<TextLayer>> layer =
+        TextLayer::create(settings.width, settings.height, settings.font, shader_directory);
+    if (!layer) return layer.error();
+    text = std::move(layer).value();
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (glGetError() != GL_NO_ERROR) return "OpenGL error while setting up the renderer";
   return {};
@@ -263,6 +274,10 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
 
 std::string Renderer::description() const {
   return resources_->context->description();
+}
+
+const Font* Renderer::font() const {
+  return resources_->text ? &resources_->text->font() : nullptr;
 }
 
 FrameSetup Renderer::Resources::setup(const FrameView& view) const {
@@ -456,7 +471,7 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
   }
 }
 
-void Renderer::Resources::read_pixels(io::Image& out) {
+void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox>& text_boxes) {
   // Straight from the frame's own framebuffer (glReadPixels waits for the drawing): copying it
   // into the context's buffer first, with glBlitFramebuffer, costs llvmpipe more than the read.
   const Framebuffer& source = settings.msaa > 1 ? resolved : target;
@@ -464,7 +479,7 @@ void Renderer::Resources::read_pixels(io::Image& out) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, source.id());
   glReadPixels(0, 0, settings.width, settings.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (settings.msaa == kEdgeFilter) {
-    filter_edges(rgba.data(), settings.width, settings.height, out);
+    filter_edges(rgba.data(), settings.width, settings.height, out, text_boxes);
     return;
   }
   if (out.width != settings.width || out.height != settings.height) {
@@ -502,8 +517,15 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   if (s.ground.enabled && s.shadows) r.draw_ground_shadows(view, frame);
   r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
+  // Text last, over everything, and left alone by the edge filter (text_layer.hpp says why). A
+  // frame without text never reaches the text layer.
+  std::vector<PixelBox> text_boxes;
+  if (!view.texts.empty()) {
+    assert(r.text && "FrameView::texts needs RenderSettings::font");
+    if (r.text) text_boxes = r.text->draw(view.texts);
+  }
 
-  r.read_pixels(out);
+  r.read_pixels(out, text_boxes);
 }
 
 }  // namespace tumble::render

@@ -2,13 +2,15 @@
 // shadows (a kept copy while the camera stays, ground_cache.hpp), the boxes (one instanced draw),
 // the ground's shadows, the quads seen from their front and last the quads seen from their back
 // (translucent). All into a framebuffer of the renderer's own (multisampled when the settings
-// ask for samples), read back from it (through the edge filter by default).
+// ask for samples), read back from it (through the edge filter by default). Text last, over
+// everything, left alone by the edge filter (text_layer.hpp).
 #pragma once
 
 #include <memory>
 #include <string>
 
 #include "io/image.hpp"
+#include "render/font.hpp"
 #include "render/frame.hpp"
 
 namespace tumble::render {
@@ -16,8 +18,9 @@ namespace tumble::render {
 class Renderer {
  public:
   // Creates the off-screen context (current on the calling thread from then on), loads the
-  // shaders from `shader_directory` and the GPU buffers. On failure returns null and sets
-  // `error` (a file name and compiler log for shader errors).
+  // shaders from `shader_directory` and the GPU buffers, and the font when the settings name one.
+  // On failure returns null and sets `error` (a file name and compiler log for shader errors,
+  // the family for a font fontconfig does not have).
   static std::unique_ptr<Renderer> create(const RenderSettings& settings,
                                           const std::string& shader_directory, std::string& error);
   ~Renderer();
@@ -30,6 +33,10 @@ class Renderer {
 
   // The GL implementation in use, for --verbose.
   std::string description() const;
+
+  // The font FrameView::texts are drawn in, to warn about the characters it lacks
+  // (Font::missing_characters); null when the settings name no font.
+  const Font* font() const;
 
   struct Resources;  // GL objects, defined in renderer.cpp
 

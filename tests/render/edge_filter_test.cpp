@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -143,6 +144,34 @@ TEST(EdgeFilter, StaircaseComesCloseToTheExactCoverage) {
 TEST(EdgeFilter, StaircasesOfOtherSlopesComeCloseToo) {
   expect_smoothed(Line{0.0, 10.6, 3.0, 1.0});
   expect_smoothed(Line{0.0, 22.1, 20.0, 1.0});
+}
+
+// Text's pixels (text_layer.hpp) come through unfiltered; the rest of the staircase is smoothed
+// as without them.
+TEST(EdgeFilter, PixelsInsideUnfilteredBoxesAreCopiedUnchanged) {
+  const Line line{10.0, 5.0, 7.0, 2.0};
+  const std::vector<std::uint8_t> rgba =
+      grey_picture([&](int x, int y) { return line.aliased(x, y); });
+  const io::Image plain = filtered(rgba);
+  const std::vector<PixelBox> boxes = {{20, 4, 16, 12}, {40, 10, 3, 30}};
+  io::Image kept;
+  filter_edges(rgba.data(), kWidth, kHeight, kept, boxes);
+  int smoothed_inside = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const bool inside = std::any_of(boxes.begin(), boxes.end(), [&](const PixelBox& b) {
+        return x >= b.x && x < b.x + b.width && y >= b.y && y < b.y + b.height;
+      });
+      const int value = kept.row(y)[3 * x];
+      if (inside) {
+        ASSERT_EQ(value, line.aliased(x, y)) << "inside a box, at " << x << "," << y;
+        smoothed_inside += plain.row(y)[3 * x] != value;
+      } else {
+        ASSERT_EQ(value, plain.row(y)[3 * x]) << "outside the boxes, at " << x << "," << y;
+      }
+    }
+  }
+  EXPECT_GT(smoothed_inside, 5) << "the boxes hold part of the staircase the filter smooths";
 }
 
 TEST(EdgeFilter, SamePictureGivesTheSameBytes) {

@@ -1,0 +1,153 @@
+// The cost of text over a frame (Google Benchmark; not run by ctest):
+//   build/render_bench --benchmark_filter=TextCost --benchmark_repetitions=5 --benchmark_min_time=1
+// One cube at 720p with the default ground, shadows and edge filter, drawn without text and
+// with three texts (a boxed two-line live value, a caption, a label), the values changing every
+// frame as a documentation video's do: as two benchmarks, and alternated frame by frame on one
+// renderer (BM_TextCostPerFrame720p), whose counters give the ratios of with to without, the
+// render stage's cost of text.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+#include <string>
+
+#include "render/renderer.hpp"
+
+namespace {
+
+using namespace tumble::render;
+
+const std::string kShaders = std::string(TUMBLE_SOURCE_DIR) + "/shaders";
+
+std::unique_ptr<Renderer> make_renderer() {
+  RenderSettings settings;  // 1280 × 720, edge filter, ground and shadows
+  settings.font = std::string(kDefaultFontFamily);
+  std::string error;
+  auto renderer = Renderer::create(settings, kShaders, error);
+  if (!renderer) std::fprintf(stderr, "render_bench: %s\n", error.c_str());
+  return renderer;
+}
+
+// The cube turning frame by frame, as in scenes/spinning_cube.toml.
+FrameView cube_frame(int frame) {
+  FrameView view;
+  view.boxes.push_back(Box{.orientation = Quat(Eigen::AngleAxisd(0.05 * frame, Vec3::UnitX()))});
+  return view;
+}
+
+std::string format(const char* pattern, double value) {
+  char text[64];
+  std::snprintf(text, sizeof(text), pattern, value);
+  return text;
+}
+
+void add_three_texts(FrameView& view, int frame) {
+  const double t = frame / 60.0;  // s
+  view.texts.push_back(
+      Text{.text = format("\xCF\x89 = %.2f rad/s", 10.0 * (1.0 - 1.0 / (1.0 + t))) +
+                   format("   t = %.2f s\n\xCF\x84 = 1.00 N\xC2\xB7m   ", t) +
+                   format("\xCE\x94"
+                          "E = %.3f J",
+                          0.001 * frame),
+           .anchor = Anchor::kTopLeft,
+           .offset = Eigen::Vector2d(24.0, 24.0),
+           .height = 32.0,
+           .background = Rgba(0.0, 0.0, 0.0, 0.5)});
+  view.texts.push_back(Text{.text = "Spinning cube: torque against angular damping",
+                            .anchor = Anchor::kBottom,
+                            .offset = Eigen::Vector2d(0.0, -24.0),
+                            .height = 28.0,
+                            .color = Rgba(0.1, 0.1, 0.2, 1.0)});
+  view.texts.push_back(Text{.text = format("|L| = %.3f kg\xC2\xB7m\xC2\xB2/s", 1.0 + 0.01 * frame),
+                            .anchor = Anchor::kTopRight,
+                            .offset = Eigen::Vector2d(-24.0, 24.0),
+                            .height = 24.0,
+                            .opacity = 0.8});
+}
+
+void draw_frames(benchmark::State& state, bool with_text) {
+  const auto renderer = make_renderer();
+  if (!renderer) {
+    state.SkipWithError("no renderer");
+    return;
+  }
+  tumble::io::Image image;
+  int frame = 0;
+  for (auto _ : state) {
+    FrameView view = cube_frame(frame);
+    if (with_text) add_three_texts(view, frame);
+    renderer->draw(view, image);
+    benchmark::DoNotOptimize(image.rgb.data());
+    ++frame;
+  }
+}
+
+// This process's CPU time, all threads (ms).
+double process_cpu_ms() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
+}
+
+// The same frame without and with the texts, one after the other on one renderer, so that a
+// shared machine's load falls on both alike. The iteration's time is what the texts add (wall);
+// the counters give the ratios of with to without, wall and CPU: the render stage's cost of
+// text as a fraction.
+void BM_TextCostPerFrame720p(benchmark::State& state) {
+  const auto renderer = make_renderer();
+  if (!renderer) {
+    state.SkipWithError("no renderer");
+    return;
+  }
+  using Clock = std::chrono::steady_clock;
+  tumble::io::Image image;
+  double wall_without = 0.0, wall_with = 0.0, cpu_without = 0.0, cpu_with = 0.0;  // ms
+  int frame = 0;
+  for (auto _ : state) {
+    FrameView view = cube_frame(frame);
+    const auto start = Clock::now();
+    const double cpu_start = process_cpu_ms();
+    renderer->draw(view, image);
+    const auto middle = Clock::now();
+    const double cpu_middle = process_cpu_ms();
+    add_three_texts(view, frame);
+    renderer->draw(view, image);
+    const auto end = Clock::now();
+    cpu_without += cpu_middle - cpu_start;
+    cpu_with += process_cpu_ms() - cpu_middle;
+    const double without = std::chrono::duration<double, std::milli>(middle - start).count();
+    const double with = std::chrono::duration<double, std::milli>(end - middle).count();
+    wall_without += without;
+    wall_with += with;
+    state.SetIterationTime(1e-3 * (with - without));
+    ++frame;
+  }
+  state.counters["wall_ratio"] = wall_with / wall_without;
+  state.counters["cpu_ratio"] = cpu_with / cpu_without;
+  state.counters["ms_without"] = wall_without / frame;
+}
+
+void BM_Frame720pWithoutText(benchmark::State& state) {
+  draw_frames(state, false);
+}
+void BM_Frame720pWithThreeTexts(benchmark::State& state) {
+  draw_frames(state, true);
+}
+
+// Wall time per frame, and CPU time of the whole process (llvmpipe rasterises on threads of its
+// own): on a shared machine the CPU time is the steadier figure of what text costs.
+BENCHMARK(BM_Frame720pWithoutText)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(BM_Frame720pWithThreeTexts)
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+BENCHMARK(BM_TextCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
