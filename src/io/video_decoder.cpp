@@ -1,0 +1,209 @@
+#include "io/video_decoder.hpp"
+
+#include "io/av_handles.hpp"
+
+extern "C" {
+#include <libavutil/log.h>
+#include <libavutil/pixdesc.h>
+}
+
+namespace tumble::io {
+namespace {
+
+bool is_yuv(AVPixelFormat format) {
+  const AVPixFmtDescriptor* descriptor = av_pix_fmt_desc_get(format);
+  return descriptor && !(descriptor->flags & AV_PIX_FMT_FLAG_RGB) &&
+         !(descriptor->flags & AV_PIX_FMT_FLAG_PAL) && descriptor->nb_components >= 3;
+}
+
+// swscale's name for the matrix a frame declares; BT.709 when unspecified.
+int sws_matrix(AVColorSpace space) {
+  switch (space) {
+    case AVCOL_SPC_BT470BG:
+    case AVCOL_SPC_SMPTE170M:
+      return SWS_CS_ITU601;
+    case AVCOL_SPC_SMPTE240M:
+      return SWS_CS_SMPTE240M;
+    case AVCOL_SPC_BT2020_NCL:
+    case AVCOL_SPC_BT2020_CL:
+      return SWS_CS_BT2020;
+    default:
+      return SWS_CS_ITU709;
+  }
+}
+
+// Chroma interpolated for every output pixel (FULL_CHR_H_INT) and accurate rounding, so that
+// decoding adds as little as it can to what the encoder lost.
+constexpr int kToRgbFlags = SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT;
+
+}  // namespace
+
+Image through_picture_format(const Image& image, const VideoPictureFormat& format) {
+  if (format.yuv_format < 0 || image.rgb.empty()) return image;
+  const auto yuv = static_cast<AVPixelFormat>(format.yuv_format);
+  const int* matrix = sws_getCoefficients(format.matrix);
+  const int range = format.full_range ? 1 : 0;
+  // The flags VideoEncoder converts with.
+  av::Scaler to_yuv(
+      sws_getContext(image.width, image.height, AV_PIX_FMT_RGB24, image.width, image.height, yuv,
+                     SWS_BICUBIC | SWS_FULL_CHR_H_INP | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr,
+                     nullptr, nullptr));
+  av::Scaler to_rgb(sws_getContext(image.width, image.height, yuv, image.width, image.height,
+                                   AV_PIX_FMT_RGB24, kToRgbFlags, nullptr, nullptr, nullptr));
+  av::Frame planes(av_frame_alloc());
+  if (!to_yuv || !to_rgb || !planes) return image;
+  planes->format = yuv;
+  planes->width = image.width;
+  planes->height = image.height;
+  if (av_frame_get_buffer(planes.get(), 0) < 0) return image;
+  sws_setColorspaceDetails(to_yuv.get(), matrix, 1, matrix, range, 0, 1 << 16, 1 << 16);
+  sws_setColorspaceDetails(to_rgb.get(), matrix, range, matrix, 1, 0, 1 << 16, 1 << 16);
+  const std::uint8_t* const source[] = {image.rgb.data()};
+  const int stride[] = {static_cast<int>(image.row_bytes())};
+  sws_scale(to_yuv.get(), source, stride, 0, image.height, planes->data, planes->linesize);
+  Image out(image.width, image.height);
+  std::uint8_t* const destination[] = {out.rgb.data()};
+  sws_scale(to_rgb.get(), planes->data, planes->linesize, 0, image.height, destination, stride);
+  return out;
+}
+
+struct VideoDecoder::State {
+  std::string path;
+  std::unique_ptr<AVFormatContext, av::InputCloser> format;
+  av::CodecContext codec;
+  av::Packet packet{av_packet_alloc()};
+  av::Frame frame{av_frame_alloc()};
+  SwsContext* scaler = nullptr;  // cached by sws_getCachedContext, freed with the state
+  int stream_index = -1;
+  AVRational time_base{1, 1};
+  bool input_ended = false;           // every packet sent, and the flush packet too
+  VideoPictureFormat picture_format;  // of the last frame
+
+  ~State() { sws_freeContext(scaler); }
+
+  std::string fail(const std::string& call, int code) const {
+    return path + ": cannot decode video: " + call + ": " + av::error_text(code);
+  }
+  Image to_rgb(std::string& error);
+  // Sends packets until the decoder has a frame: 0, AVERROR_EOF at the end, or an error.
+  int receive(std::string& error);
+};
+
+Image VideoDecoder::State::to_rgb(std::string& error) {
+  const auto pixel_format = static_cast<AVPixelFormat>(frame->format);
+  scaler =
+      sws_getCachedContext(scaler, frame->width, frame->height, pixel_format, frame->width,
+                           frame->height, AV_PIX_FMT_RGB24, kToRgbFlags, nullptr, nullptr, nullptr);
+  if (!scaler) {
+    error = path + ": cannot convert " + av_get_pix_fmt_name(pixel_format) + " pictures to RGB";
+    return {};
+  }
+  picture_format = {};
+  if (is_yuv(pixel_format)) {
+    picture_format = {pixel_format, sws_matrix(frame->colorspace),
+                      frame->color_range == AVCOL_RANGE_JPEG};
+    const int* matrix = sws_getCoefficients(picture_format.matrix);
+    sws_setColorspaceDetails(scaler, matrix, picture_format.full_range ? 1 : 0, matrix, 1, 0,
+                             1 << 16, 1 << 16);
+  }
+  Image image(frame->width, frame->height);
+  std::uint8_t* const destination[] = {image.rgb.data()};
+  const int destination_stride[] = {static_cast<int>(image.row_bytes())};
+  sws_scale(scaler, frame->data, frame->linesize, 0, frame->height, destination,
+            destination_stride);
+  return image;
+}
+
+int VideoDecoder::State::receive(std::string& error) {
+  for (;;) {
+    const int received = avcodec_receive_frame(codec.get(), frame.get());
+    if (received != AVERROR(EAGAIN)) {
+      if (received < 0 && received != AVERROR_EOF) error = fail("avcodec_receive_frame", received);
+      return received;
+    }
+    if (input_ended) return AVERROR_EOF;
+    const int read = av_read_frame(format.get(), packet.get());
+    if (read < 0 && read != AVERROR_EOF) {
+      error = fail("av_read_frame", read);
+      return read;
+    }
+    if (read == AVERROR_EOF) input_ended = true;
+    if (read == 0 && packet->stream_index != stream_index) {
+      av_packet_unref(packet.get());
+      continue;
+    }
+    const int sent = avcodec_send_packet(codec.get(), input_ended ? nullptr : packet.get());
+    av_packet_unref(packet.get());
+    if (sent < 0 && sent != AVERROR_EOF) {
+      error = fail("avcodec_send_packet", sent);
+      return sent;
+    }
+  }
+}
+
+std::unique_ptr<VideoDecoder> VideoDecoder::open(const std::string& path, std::string& error) {
+  av_log_set_level(AV_LOG_ERROR);  // libavformat's notes on every probe are not for our users
+  auto state = std::make_unique<State>();
+  state->path = path;
+  AVFormatContext* opened = nullptr;
+  if (const int code = avformat_open_input(&opened, path.c_str(), nullptr, nullptr); code < 0) {
+    error = path + ": cannot read as a video: " + av::error_text(code);
+    return nullptr;
+  }
+  state->format.reset(opened);
+  if (const int code = avformat_find_stream_info(opened, nullptr); code < 0) {
+    error = state->fail("avformat_find_stream_info", code);
+    return nullptr;
+  }
+  const AVCodec* decoder = nullptr;
+  state->stream_index = av_find_best_stream(opened, AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
+  if (state->stream_index < 0) {
+    error = path + ": holds no video stream FFmpeg can decode";
+    return nullptr;
+  }
+  const AVStream& stream = *opened->streams[state->stream_index];
+  state->time_base = stream.time_base;
+  state->codec.reset(avcodec_alloc_context3(decoder));
+  if (!state->codec || !state->packet || !state->frame) {
+    error = path + ": cannot decode video: FFmpeg could not allocate its state";
+    return nullptr;
+  }
+  if (const int code = avcodec_parameters_to_context(state->codec.get(), stream.codecpar);
+      code < 0) {
+    error = state->fail("avcodec_parameters_to_context", code);
+    return nullptr;
+  }
+  // Decoded pictures do not depend on the thread count; two keep up with the comparison.
+  state->codec->thread_count = 2;
+  if (const int code = avcodec_open2(state->codec.get(), decoder, nullptr); code < 0) {
+    error = state->fail("avcodec_open2", code);
+    return nullptr;
+  }
+  return std::unique_ptr<VideoDecoder>(new VideoDecoder(std::move(state)));
+}
+
+VideoDecoder::VideoDecoder(std::unique_ptr<State> state) : state_(std::move(state)) {}
+VideoDecoder::~VideoDecoder() = default;
+
+std::optional<DecodedFrame> VideoDecoder::next(std::string& error) {
+  State& state = *state_;
+  if (state.receive(error) < 0) return std::nullopt;
+  DecodedFrame decoded;
+  const std::int64_t timestamp = state.frame->best_effort_timestamp;
+  decoded.time =
+      timestamp == AV_NOPTS_VALUE ? 0.0 : static_cast<double>(timestamp) * av_q2d(state.time_base);
+  decoded.image = state.to_rgb(error);
+  av_frame_unref(state.frame.get());
+  if (!error.empty()) return std::nullopt;
+  return decoded;
+}
+
+VideoPictureFormat VideoDecoder::picture_format() const {
+  return state_->picture_format;
+}
+
+const std::string& VideoDecoder::path() const {
+  return state_->path;
+}
+
+}  // namespace tumble::io

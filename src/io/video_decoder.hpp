@@ -1,0 +1,58 @@
+// Frames of a video file (anything libavformat opens and libavcodec decodes: MP4, WebM, GIF, …),
+// one at a time in presentation order, as 8-bit RGB Images. FFmpeg stays out of this header.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "io/image.hpp"
+
+namespace tumble::io {
+
+struct DecodedFrame {
+  Image image;
+  double time = 0.0;  // presentation time (s) from the stream's start
+};
+
+// How a video stores its pictures: FFmpeg's pixel format number (-1 when it is not YUV: a GIF's
+// palette), and the matrix (swscale's SWS_CS_* number) and range of its YUV.
+struct VideoPictureFormat {
+  int yuv_format = -1;
+  int matrix = 0;
+  bool full_range = false;
+};
+
+// `image` converted into `format` and back to RGB, the way VideoEncoder and VideoDecoder convert:
+// what a video in that format can hold of it before any compression (4:2:0 keeps one chroma
+// sample per 2x2 pixels). Unchanged when the format is not YUV. Safe to call from any thread.
+Image through_picture_format(const Image& image, const VideoPictureFormat& format);
+
+class VideoDecoder {
+ public:
+  // Opens the first video stream of `path`. Returns nullptr and sets `error` (naming the path and
+  // the failing call) if the file cannot be read as a video.
+  static std::unique_ptr<VideoDecoder> open(const std::string& path, std::string& error);
+
+  ~VideoDecoder();
+  VideoDecoder(const VideoDecoder&) = delete;
+  VideoDecoder& operator=(const VideoDecoder&) = delete;
+
+  // The next frame. Nothing at the end of the video (`error` left empty) or on a decoding error
+  // (`error` set). YUV pictures are converted with the matrix and range the stream declares,
+  // BT.709 limited range when it declares none (what VideoEncoder writes); others (a GIF's
+  // palette) as they are.
+  std::optional<DecodedFrame> next(std::string& error);
+
+  const std::string& path() const;
+  // The format of the last frame next() returned.
+  VideoPictureFormat picture_format() const;
+
+ private:
+  struct State;
+  explicit VideoDecoder(std::unique_ptr<State> state);
+
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace tumble::io
