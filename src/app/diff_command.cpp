@@ -1,8 +1,13 @@
 #include "app/diff_command.hpp"
 
-#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 
+#include "app/diff_inputs.hpp"
+#include "app/diff_outputs.hpp"
+#include "app/diff_run.hpp"
+#include "app/diff_text.hpp"
 #include "io/image.hpp"
 #include "io/image_diff.hpp"
 #include "io/png_io.hpp"
@@ -14,25 +19,81 @@ std::string size_text(const io::Image& image) {
   return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
-// Three significant digits, never in exponent notation: 8.33%, 0.0244%, 0.000301%.
-std::string percent_text(std::int64_t part, std::int64_t whole) {
-  const double percent = 100.0 * static_cast<double>(part) / static_cast<double>(whole);
-  const int decimals =
-      percent > 0.0 ? std::max(0, 2 - static_cast<int>(std::floor(std::log10(percent)))) : 0;
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f%%", decimals, percent);
-  return text;
-}
-
 bool read(const std::string& path, io::Image& image, std::FILE* err) {
   const std::string error = io::read_png(path, image);
   if (!error.empty()) std::fprintf(err, "tumble: %s\n", error.c_str());
   return error.empty();
 }
 
-}  // namespace
+// The threshold in the metric's unit, checked against its range: "" or why it is refused.
+std::string parse_threshold(io::DiffMetric metric, const std::string& text, double& out) {
+  if (text.empty()) {
+    out = io::default_threshold(metric);
+    return {};
+  }
+  if (metric == io::DiffMetric::max) {
+    long long whole = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), whole);
+    if (error != std::errc() || end != text.data() + text.size() || whole < 0 || whole > 255) {
+      return "--threshold: expected a whole number from 0 to 255, got " + text;
+    }
+    out = static_cast<double>(whole);
+    return {};
+  }
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  const double top = metric == io::DiffMetric::rms    ? 255.0
+                     : metric == io::DiffMetric::psnr ? 1000.0
+                                                      : 1.0;
+  if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value < 0 || value > top) {
+    return "--threshold: expected a number from 0 to " + std::to_string(static_cast<int>(top)) +
+           " for --metric " + io::diff_metric_name(metric) + ", got " + text;
+  }
+  out = value;
+  return {};
+}
 
-int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err) {
+// The options as criteria for one frame: "" or why they do not fit together.
+std::string criteria_from(const DiffCommandOptions& options, io::FrameCriteria& criteria) {
+  const std::optional<io::DiffMetric> metric = io::diff_metric_named(options.metric);
+  if (!metric)
+    return "--metric: expected max, rms, perceptual, ssim or psnr, got " + options.metric;
+  criteria.metric = *metric;
+  if (std::string error = parse_threshold(*metric, options.threshold, criteria.threshold);
+      !error.empty()) {
+    return error;
+  }
+  const bool per_pixel = io::counts_pixels(*metric);
+  if (!per_pixel && (options.max_pixels || options.max_percent || options.ignore_antialiasing)) {
+    return std::string(
+               "--max-pixels, --max-percent and --ignore-antialiasing judge pixels: they "
+               "apply to --metric max and perceptual, not ") +
+           io::diff_metric_name(*metric);
+  }
+  criteria.ignore_antialiasing =
+      options.ignore_antialiasing.value_or(*metric == io::DiffMetric::perceptual);
+  criteria.max_pixels = options.max_pixels.value_or(0);
+  criteria.max_percent = options.max_percent.value_or(-1.0);
+  return {};
+}
+
+// Writes the --json, --junit and --report outputs asked for; false after printing an error.
+bool write_outputs(const DiffCommandOptions& options, const DiffSubject& subject,
+                   const SequenceDiff& diff, std::FILE* err) {
+  std::string error;
+  if (!options.json.empty()) error = write_diff_json(options.json, subject, diff);
+  if (error.empty() && !options.junit.empty()) {
+    error = write_diff_junit(options.junit, subject, diff);
+  }
+  if (error.empty() && !options.report.empty()) {
+    error = write_diff_report(options.report, subject, diff);
+  }
+  if (!error.empty()) std::fprintf(err, "tumble: %s\n", error.c_str());
+  return error.empty();
+}
+
+int diff_images(const DiffCommandOptions& options, const SequenceOptions& settings, std::FILE* out,
+                std::FILE* err) {
   io::Image first;
   io::Image second;
   if (!read(options.first_path, first, err) || !read(options.second_path, second, err)) {
@@ -44,25 +105,94 @@ int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err) 
                  size_text(second).c_str());
     return kExitBadInput;
   }
-
-  const io::DiffResult result =
-      io::compare_images(first, second, {options.threshold, options.max_pixels});
-  const std::int64_t pixels = std::int64_t{first.width} * first.height;
-  std::fprintf(
-      out, "%s: %lld of %lld pixels differ (%s), largest channel difference %d, RMS %.4g\n",
-      result.match ? "match" : "mismatch", static_cast<long long>(result.differing_pixels),
-      static_cast<long long>(pixels), percent_text(result.differing_pixels, pixels).c_str(),
-      result.max_channel_difference, result.rms);
+  const io::Image picture =
+      options.out.empty() ? io::Image() : io::difference_picture(first, second, settings.criteria);
+  const SequenceDiff diff = compare_pair(first, second, options.second_path, settings);
+  std::fprintf(out, "%s\n", outcome_text(diff.frames.front(), settings.criteria).c_str());
   std::fflush(out);
-
   if (!options.out.empty()) {
-    const io::Image picture = io::diff_image(first, second, options.threshold);
     if (const std::string error = io::write_png(options.out, picture); !error.empty()) {
       std::fprintf(err, "tumble: %s\n", error.c_str());
       return kExitBadInput;
     }
   }
-  return result.match ? kExitOk : kExitMismatch;
+  if (!write_outputs(options, {options.first_path, options.second_path, settings.criteria}, diff,
+                     err)) {
+    return kExitBadInput;
+  }
+  return diff.match() ? kExitOk : kExitMismatch;
+}
+
+int diff_sequences(const DiffCommandOptions& options, const SequenceOptions& settings,
+                   std::FILE* out, std::FILE* err) {
+  DiffInput first, second;
+  for (auto [path, input] :
+       {std::pair{&options.first_path, &first}, {&options.second_path, &second}}) {
+    if (std::string error = resolve_diff_input(*path, *input); !error.empty()) {
+      std::fprintf(err, "tumble: %s\n", error.c_str());
+      return kExitBadInput;
+    }
+  }
+  const SequenceDiff diff = compare_sequences(first, second, settings);
+  if (!diff.error.empty()) {
+    std::fprintf(err, "tumble: %s\n", diff.error.c_str());
+    return kExitBadInput;
+  }
+  if (diff.frames.empty()) {
+    std::fprintf(
+        err, "tumble: --frames %lld:%lld: no such frames (A has %lld, B has %lld)\n",
+        static_cast<long long>(settings.first_frame), static_cast<long long>(settings.end_frame),
+        static_cast<long long>(diff.first_count), static_cast<long long>(diff.second_count));
+    return kExitBadInput;
+  }
+  for (const FrameOutcome& frame : diff.frames) {
+    if (!frame.match) {
+      std::fprintf(out, "%s: %s\n", frame.name.c_str(),
+                   outcome_text(frame, settings.criteria).c_str());
+    }
+  }
+  std::fprintf(out, "%s (%s)\n", verdict_text(diff).c_str(),
+               criteria_text(settings.criteria).c_str());
+  std::fflush(out);
+  if (!write_outputs(options, {options.first_path, options.second_path, settings.criteria}, diff,
+                     err)) {
+    return kExitBadInput;
+  }
+  return diff.match() ? kExitOk : kExitMismatch;
+}
+
+}  // namespace
+
+int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err) {
+  SequenceOptions settings;
+  if (std::string error = criteria_from(options, settings.criteria); !error.empty()) {
+    std::fprintf(err, "tumble: %s\n", error.c_str());
+    return kExitBadInput;
+  }
+  settings.keep_images = !options.report.empty();
+  const bool images = names_png(options.first_path) || names_png(options.second_path);
+  if (images && options.frames) {
+    std::fprintf(err, "tumble: --frames selects frames of folders and videos, not of two PNGs\n");
+    return kExitBadInput;
+  }
+  if (!images && !options.out.empty()) {
+    std::fprintf(err,
+                 "tumble: --out writes the difference of two PNGs; for folders and videos "
+                 "use --report FOLDER\n");
+    return kExitBadInput;
+  }
+  if (options.frames) {
+    const auto [first_frame, end_frame] = *options.frames;
+    if (first_frame < 0 || end_frame <= first_frame) {
+      std::fprintf(err, "tumble: --frames: expected A:B with 0 <= A < B, got %lld:%lld\n",
+                   first_frame, end_frame);
+      return kExitBadInput;
+    }
+    settings.first_frame = first_frame;
+    settings.end_frame = end_frame;
+  }
+  return images ? diff_images(options, settings, out, err)
+                : diff_sequences(options, settings, out, err);
 }
 
 }  // namespace tumble::app

@@ -106,22 +106,52 @@ int main(int argc, char** argv) {
       ->capture_default_str();
 
   DiffCommandOptions diff;
+  std::string diff_frames;
   CLI::App* diff_command = app.add_subcommand(
-      "diff", "Compare two PNGs: exit 0 if they match within the tolerance, 1 if not, 2 on error");
-  diff_command->add_option("first", diff.first_path, "First PNG")->required();
-  diff_command->add_option("second", diff.second_path, "Second PNG")->required();
+      "diff",
+      "Compare two PNGs, folders of frames, renders or videos: exit 0 if they match within the "
+      "tolerance, 1 if not, 2 on error");
+  diff_command->add_option("first", diff.first_path, "A, the expected: PNG, folder or video")
+      ->required();
+  diff_command->add_option("second", diff.second_path, "B, the actual: PNG, folder or video")
+      ->required();
   diff_command
-      ->add_option("--threshold", diff.threshold,
-                   "A pixel differs when a channel differs by more than this")
-      ->check(whole_number_in(0, 255, "from 0 to 255"))
+      ->add_option("--metric", diff.metric,
+                   "max (channel levels), rms (levels), perceptual (YIQ distance 0-1, as "
+                   "pixelmatch), ssim (0-1) or psnr (dB)")
+      ->check(CLI::IsMember({"max", "rms", "perceptual", "ssim", "psnr"}))
       ->capture_default_str();
+  diff_command->add_option(
+      "--threshold", diff.threshold,
+      "In the metric's unit: a pixel differs beyond it (max: 0-255, default 0; perceptual: 0-1, "
+      "default 0.1); a frame differs beyond it (rms: 0-255, default 1; ssim below it: 0-1, "
+      "default 0.99; psnr below it: dB, default 40)");
+  bool diff_antialiasing = false;
+  CLI::Option* antialiasing = diff_command->add_flag(
+      "--ignore-antialiasing,!--count-antialiasing", diff_antialiasing,
+      "Do not count pixels on anti-aliased edges (Vyšniauskas 2009, as pixelmatch); default on "
+      "for perceptual only");
+  CLI::Option* max_pixels =
+      diff_command
+          ->add_option("--max-pixels", diff.max_pixels,
+                       "A frame matches when at most this many pixels differ (default 0)")
+          ->check(whole_number_in(0, LLONG_MAX, ">= 0"));
   diff_command
-      ->add_option("--max-pixels", diff.max_pixels,
-                   "The images match when at most this many pixels differ")
-      ->check(whole_number_in(0, LLONG_MAX, ">= 0"))
-      ->capture_default_str();
-  diff_command->add_option("--out", diff.out, "Write an image of the differences here (PNG)")
+      ->add_option("--max-percent", diff.max_percent,
+                   "A frame matches when at most this share of its pixels differ (%)")
+      ->check(CLI::Range(0.0, 100.0))
+      ->excludes(max_pixels);
+  diff_command->add_option("--frames", diff_frames, "Compare frames A to B-1 only (A:B)")
       ->check(kNotEmpty);
+  diff_command->add_option("--out", diff.out, "Two PNGs: write an image of the differences here")
+      ->check(kNotEmpty);
+  diff_command
+      ->add_option("--report", diff.report,
+                   "Write an HTML report (index.html and images) into this folder")
+      ->check(kNotEmpty);
+  diff_command->add_option("--junit", diff.junit, "Write JUnit XML, one test case per frame")
+      ->check(kNotEmpty);
+  diff_command->add_option("--json", diff.json, "Write every figure as JSON")->check(kNotEmpty);
 
   CLI::App* bench_command = app.add_subcommand("bench", "Measure tumble's speed");
   bench_command->require_subcommand(1);
@@ -201,7 +231,18 @@ int main(int argc, char** argv) {
     if (bench_accuracy_command->parsed()) return run_bench_accuracy(bench_accuracy, stdout, stderr);
     if (bench_contact_command->parsed()) return run_bench_contact(bench_contact, stdout, stderr);
     if (check_command->parsed()) return run_check(check, stdout, stderr);
-    if (diff_command->parsed()) return run_diff(diff, stdout, stderr);
+    if (diff_command->parsed()) {
+      if (!diff_frames.empty()) {
+        diff.frames = parse_range(diff_frames);
+        if (!diff.frames) {
+          std::fprintf(stderr, "tumble: --frames: expected A:B (frames A to B-1), got %s\n",
+                       diff_frames.c_str());
+          return kExitBadInput;
+        }
+      }
+      if (antialiasing->count() > 0) diff.ignore_antialiasing = diff_antialiasing;
+      return run_diff(diff, stdout, stderr);
+    }
     if (render_command->parsed()) {
       if (!frame_range.empty()) {
         const std::optional<std::pair<long long, long long>> range = parse_range(frame_range);
