@@ -198,20 +198,17 @@ std::string produce_by_name(const DiffInput& first, const DiffInput& second,
   names.insert(second.frames.begin(), second.frames.end());
   const std::set<std::string> in_first(first.frames.begin(), first.frames.end());
   const std::set<std::string> in_second(second.frames.begin(), second.frames.end());
-  diff.first_count = static_cast<std::int64_t>(first.frames.size());
-  diff.second_count = static_cast<std::int64_t>(second.frames.size());
-  std::int64_t index = 0;
-  for (const std::string& name : names) {
+  for (std::int64_t index = 0; const std::string& name : names) {
     if (index >= options.end_frame) break;
-    if (index >= options.first_frame) {
-      Job job{index, name, {}, {}};
-      job.first.present = in_first.count(name) == 1;
-      if (job.first.present) job.first.file = first.folder + "/" + name;
-      job.second.present = in_second.count(name) == 1;
-      if (job.second.present) job.second.file = second.folder + "/" + name;
-      if (!jobs.push(std::move(job))) break;
-    }
-    ++index;
+    Job job{index++, name, {}, {}};
+    job.first.present = in_first.count(name) == 1;
+    job.second.present = in_second.count(name) == 1;
+    diff.first_count += job.first.present;  // up to the end of the range, as for videos
+    diff.second_count += job.second.present;
+    if (job.index < options.first_frame) continue;
+    if (job.first.present) job.first.file = first.folder + "/" + name;
+    if (job.second.present) job.second.file = second.folder + "/" + name;
+    if (!jobs.push(std::move(job))) break;
   }
   return {};
 }

@@ -115,6 +115,9 @@ TEST_F(DiffSequences, AFrameMissingFromAFolderIsAMismatchThatSaysSo) {
             "frame_00003.png: mismatch: missing from B\n"
             "mismatch: 1 of 5 frames differ; A has 5 frames, B has 4 (max, threshold 0 (channel "
             "levels 0-255))\n");
+  // A range that leaves the missing frame out matches: only its frames are counted.
+  EXPECT_EQ(tumble("diff --frames 0:3 " + path("a") + " " + path("b")).exit_code, 0);
+  EXPECT_EQ(tumble("diff --frames 3:5 " + path("a") + " " + path("b")).exit_code, 1);
 }
 
 TEST_F(DiffSequences, OnlyTheChangedFramesAreReported) {
