@@ -142,7 +142,9 @@ int VideoDecoder::State::receive(std::string& error) {
 }
 
 std::unique_ptr<VideoDecoder> VideoDecoder::open(const std::string& path, std::string& error) {
-  av_log_set_level(AV_LOG_ERROR);  // libavformat's notes on every probe are not for our users
+  // FFmpeg's own lines ("moov atom not found") would come before ours, which say the same with
+  // the path: every failure is returned as a message instead.
+  av_log_set_level(AV_LOG_FATAL);
   auto state = std::make_unique<State>();
   state->path = path;
   AVFormatContext* opened = nullptr;
