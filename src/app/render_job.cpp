@@ -64,7 +64,8 @@ RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
     result.error = stopped.what();
     return result;
   }
-  render::RenderSettings settings = scene.render;
+  // The automatic back end, and no font: no scene draws text yet.
+  render::RenderSettings settings{scene.render, render::Backend::automatic, std::string()};
   settings.ground = framing.ground;
 
   const std::unique_ptr<render::Renderer> renderer =

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/render_settings.hpp"
 #include "render/offscreen_context.hpp"
 
 namespace tumble::render {
@@ -14,9 +15,12 @@ namespace tumble::render {
 using Vec3 = Eigen::Vector3d;
 using Quat = Eigen::Quaterniond;
 
-// Colours are sRGB-encoded components in [0, 1], as people write them; the renderer lights in
-// linear space and encodes the result back to sRGB.
-using Color = Eigen::Vector3d;
+// The picture's settings (size, smoothing, colours, light, ground) are plain data the scene
+// reads too: they live in common/, named here as render's own.
+using common::Color;
+using common::DirectionalLight;
+using common::Ground;
+using common::kEdgeFilter;
 // sRGB-encoded colour and a straight (not premultiplied) opacity, each in [0, 1].
 using Rgba = Eigen::Vector4d;
 
@@ -25,19 +29,6 @@ struct Camera {
   Vec3 look_at = Vec3::Zero();          // world frame (m)
   Vec3 up = Vec3::UnitY();              // world frame, need not be unit
   double fov_degrees = 40.0;            // vertical field of view
-};
-
-struct DirectionalLight {
-  Vec3 direction = Vec3(0.25, -1.2, -0.75);  // the way the light travels, world frame
-  Color color = Color(1.0, 1.0, 1.0);        // key light colour and intensity (sRGB)
-  double ambient = 0.3;                      // ambient intensity, a fraction of the key
-};
-
-struct Ground {
-  bool enabled = true;
-  double height = -1.5;                   // y of the plane (m)
-  Color color = Color(0.62, 0.64, 0.66);  // sRGB
-  double grid_spacing = 1.0;              // m between grid lines; 0 = no grid
 };
 
 // A box (a cube when the edges are equal) at a pose.
@@ -90,23 +81,9 @@ struct Text {
   double opacity = 1.0;                           // of glyphs and box together, to fade (0-1)
 };
 
-// RenderSettings::msaa when the scene asks for no multisampling: one sample per pixel, then the
-// edge filter (render/edge_filter.hpp) on the picture read back. On llvmpipe 4 samples per pixel
-// cost more than everything else a frame of 1000 boxes draws; the filter costs one pass over
-// the picture.
-inline constexpr int kEdgeFilter = 0;
-
-// Fixed for a whole render.
-struct RenderSettings {
-  int width = 1280;
-  int height = 720;
-  // Samples per pixel of multisampling (2, 4, 8, 16), used as given; 1 = one sample and no
-  // antialiasing at all; kEdgeFilter (the default) = one sample, then the edge filter.
-  int msaa = kEdgeFilter;
-  Color background = Color(0.78, 0.84, 0.9);
-  DirectionalLight light;
-  Ground ground;
-  bool shadows = true;
+// Fixed for a whole render: what the scene asks for (common/render_settings.hpp), and what the
+// machine draws it with, which is not the scene's business (yet).
+struct RenderSettings : common::RenderSettings {
   Backend backend = Backend::automatic;  // which off-screen OpenGL draws (offscreen_context.hpp)
   // The fontconfig family FrameView::texts are drawn in (kDefaultFontFamily, render/font.hpp,
   // unless the scene chooses); empty for a render without text, which then loads no font.

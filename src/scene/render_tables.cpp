@@ -13,7 +13,7 @@ constexpr std::array<std::string_view, 10> kPresets = {
     "medium",    "slow",      "slower",   "veryslow", "placebo"};
 
 void read_render(TableReader& in, Scene& scene) {
-  render::RenderSettings& r = scene.render;
+  common::RenderSettings& r = scene.render;
   r.width = static_cast<int>(in.optional_integer("width", r.width, kMinImageSide, kMaxImageSide));
   r.height =
       static_cast<int>(in.optional_integer("height", r.height, kMinImageSide, kMaxImageSide));
@@ -55,7 +55,7 @@ void read_camera(TableReader& in, Scene& scene) {
 }
 
 void read_light(TableReader& in, Scene& scene) {
-  render::DirectionalLight& l = scene.render.light;
+  common::DirectionalLight& l = scene.render.light;
   l.direction = in.optional_vector("direction", l.direction);
   if (l.direction.norm() == 0.0) in.fail("direction", "must not be the zero vector");
   l.color = in.optional_color("color", l.color);
@@ -67,7 +67,7 @@ void read_light(TableReader& in, Scene& scene) {
 }
 
 void read_ground(TableReader& in, Scene& scene) {
-  render::Ground& g = scene.render.ground;
+  common::Ground& g = scene.render.ground;
   // With planes the drawn floor is a plane (app/plane_view.hpp): one home for where it is and
   // whether it shows, so [ground] keeps only its look.
   for (const char* key : {"enabled", "height"}) {
@@ -142,7 +142,7 @@ void read_render_tables(TableReader& root, Scene& scene) {
       !problem.empty()) {
     fail_at("render", "fps", "duration", problem);
   }
-  const render::RenderSettings& r = scene.render;
+  const common::RenderSettings& r = scene.render;
   if (scene.output.video && (r.width % 2 != 0 || r.height % 2 != 0)) {
     const bool odd_width = r.width % 2 != 0;
     fail_at("render", odd_width ? "width" : "height", "render",

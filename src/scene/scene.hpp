@@ -1,17 +1,18 @@
 // The scene as plain data, as read from a scene file and validated. Building the physics from it
-// is scene_builder's job; drawing it will be render's.
+// is scene_builder's job; drawing it is the app's and render's,
+// which the scene never includes (cmake/check_layers.cmake).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/render_settings.hpp"
 #include "physics/contact.hpp"
 #include "physics/forces.hpp"
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
 #include "physics/shapes.hpp"
-#include "render/frame.hpp"  // plain data only: colours, light, ground, image settings
 
 namespace tumble::scene {
 
@@ -29,7 +30,7 @@ struct BodySpec {
   std::vector<physics::ForceLaw> forces;                   // only what the scene lists
   physics::Material material = {};                         // restitution 0, friction 0.5
   bool collide = true;  // with other bodies (planes stop every body)
-  render::Color color = render::Color(0.85, 0.35, 0.2);  // sRGB
+  common::Color color = common::Color(0.85, 0.35, 0.2);  // sRGB
 };
 
 // A static plane, as written: `point` and the unit `normal` place it; `size` is only how much of
@@ -75,7 +76,7 @@ struct Scene {
   std::vector<PlaneSpec> planes;  // in the order written; none means no contact code runs
   // Rendering. The ground's height, when not written, is chosen below the whole motion; a scene
   // with planes has no ground_height (its floor is a plane, app/plane_view.hpp).
-  render::RenderSettings render;
+  common::RenderSettings render;
   std::optional<double> ground_height;  // m
   int fps = 60;                         // video frames per simulated second
   CameraSpec camera;

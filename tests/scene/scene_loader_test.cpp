@@ -277,7 +277,7 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenRenderingValues) {
   EXPECT_EQ(scene.render.height, 360);
   EXPECT_EQ(scene.fps, 30);
   EXPECT_EQ(scene.render.msaa, 8);
-  EXPECT_EQ(scene.render.background, render::Color(0.1, 0.2, 0.3));
+  EXPECT_EQ(scene.render.background, common::Color(0.1, 0.2, 0.3));
   EXPECT_FALSE(scene.render.shadows);
 
   ASSERT_TRUE(scene.camera.position.has_value());
@@ -289,13 +289,13 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenRenderingValues) {
   EXPECT_EQ(scene.camera.follow, "lid");
 
   EXPECT_EQ(scene.render.light.direction, Vec3(1.0, -2.0, 0.5));
-  EXPECT_EQ(scene.render.light.color, render::Color(1.0, 0.9, 0.8));
+  EXPECT_EQ(scene.render.light.color, common::Color(1.0, 0.9, 0.8));
   EXPECT_EQ(scene.render.light.ambient, 0.25);
 
   EXPECT_FALSE(scene.render.ground.enabled);
   ASSERT_TRUE(scene.ground_height.has_value());
   EXPECT_EQ(*scene.ground_height, -2.5);
-  EXPECT_EQ(scene.render.ground.color, render::Color(128 / 255.0, 128 / 255.0, 128 / 255.0));
+  EXPECT_EQ(scene.render.ground.color, common::Color(128 / 255.0, 128 / 255.0, 128 / 255.0));
   EXPECT_EQ(scene.render.ground.grid_spacing, 0.5);
 
   EXPECT_EQ(scene.output.directory, "renders/full");
@@ -306,7 +306,7 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenRenderingValues) {
 
   ASSERT_FALSE(scene.bodies.empty());
   // "#ff8000": each pair of hex digits is a component out of 255.
-  EXPECT_EQ(scene.bodies[0].color, render::Color(1.0, 128 / 255.0, 0.0));
+  EXPECT_EQ(scene.bodies[0].color, common::Color(1.0, 128 / 255.0, 0.0));
 }
 
 TEST(SceneLoader, MinimalSceneTakesEveryDefault) {
@@ -342,7 +342,7 @@ position = [2.0, 0.0, 0.0]
   EXPECT_EQ(scene.render.width, 1280);
   EXPECT_EQ(scene.render.height, 720);
   EXPECT_EQ(scene.fps, 60);
-  EXPECT_EQ(scene.render.msaa, render::kEdgeFilter);  // no msaa given: one sample, filtered
+  EXPECT_EQ(scene.render.msaa, common::kEdgeFilter);  // no msaa given: one sample, filtered
   EXPECT_TRUE(scene.render.shadows);
 
   // Left out, the camera is placed later to frame the whole motion.

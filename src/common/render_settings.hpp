@@ -1,0 +1,46 @@
+// How a scene asks to be drawn, as plain data: the picture's size and smoothing, its colours,
+// the key light and the ground. Shared by scene (which reads it from [render], [light] and
+// [ground]) and render (which draws with it), so that neither includes the other.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace tumble::common {
+
+// Colours are sRGB-encoded components in [0, 1], as people write them; the renderer lights in
+// linear space and encodes the result back to sRGB.
+using Color = Eigen::Vector3d;
+
+struct DirectionalLight {
+  Eigen::Vector3d direction = Eigen::Vector3d(0.25, -1.2, -0.75);  // the way it travels, world
+  Color color = Color(1.0, 1.0, 1.0);  // key light colour and intensity (sRGB)
+  double ambient = 0.3;                // ambient intensity, a fraction of the key
+};
+
+struct Ground {
+  bool enabled = true;
+  double height = -1.5;                   // y of the plane (m)
+  Color color = Color(0.62, 0.64, 0.66);  // sRGB
+  double grid_spacing = 1.0;              // m between grid lines; 0 = no grid
+};
+
+// RenderSettings::msaa when the scene asks for no multisampling: one sample per pixel, then the
+// edge filter (render/edge_filter.hpp) on the picture read back. On llvmpipe 4 samples per pixel
+// cost more than everything else a frame of 1000 boxes draws; the filter costs one pass over
+// the picture.
+inline constexpr int kEdgeFilter = 0;
+
+// Fixed for a whole render.
+struct RenderSettings {
+  int width = 1280;  // pixels
+  int height = 720;  // pixels
+  // Samples per pixel of multisampling (2, 4, 8, 16), used as given; 1 = one sample and no
+  // antialiasing at all; kEdgeFilter (the default) = one sample, then the edge filter.
+  int msaa = kEdgeFilter;
+  Color background = Color(0.78, 0.84, 0.9);
+  DirectionalLight light;
+  Ground ground;
+  bool shadows = true;
+};
+
+}  // namespace tumble::common
