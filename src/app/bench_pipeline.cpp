@@ -14,6 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "io/staged_directory.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/video_rules.hpp"
 
 namespace tumble::app {
 namespace {
@@ -58,17 +59,17 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
     return kExitBadInput;
   }
-  if (options.width % 2 != 0 || options.height % 2 != 0) {
-    std::fprintf(err,
-                 "tumble: --width and --height must be even: the benchmark encodes H.264 "
-                 "yuv420p, which stores colour per 2×2 pixels\n");
-    return kExitBadInput;
-  }
   scene::Scene scene = std::get<scene::Scene>(loaded);
   scene.render.width = options.width;
   scene.render.height = options.height;
   if (options.msaa != 0) scene.render.msaa = options.msaa;
   scene.duration = static_cast<double>(options.frames) / scene.fps;
+  // Held to the scene's rules once more, as `tumble render` holds its overrides.
+  if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {
+    std::fprintf(err, "tumble: %s: %s, as the command line sets it: %s\n",
+                 scene.source_path.c_str(), broken->keys.front().c_str(), broken->problem.c_str());
+    return kExitBadInput;
+  }
 
   // The frames and videos, written only to be timed, go to a hidden scratch folder beside the
   // report (".pipeline.partial-<pid>"), never committed: it is removed on the way out, whatever

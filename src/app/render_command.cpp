@@ -19,8 +19,8 @@
 #include "app/stability_report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/staged_directory.hpp"
-#include "scene/limits.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/video_rules.hpp"
 
 namespace tumble::app {
 namespace {
@@ -104,30 +104,18 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   if (options.width) scene.render.width = *options.width;
   if (options.height) scene.render.height = *options.height;
   if (options.fps) scene.fps = *options.fps;
-  for (const std::string& problem :
-       {scene::pixel_limit_problem(scene.render.width, scene.render.height),
-        scene::frame_count_problem(scene.duration, scene.fps)}) {
-    if (!problem.empty()) {
-      std::fprintf(err, "tumble: %s\n", problem.c_str());
-      return kExitBadInput;
-    }
+  if (!options.frames) scene.output.frames = false;
+  if (!options.video) scene.output.video = false;
+  // The loaded scene kept every rule: what breaks one now is an override.
+  if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {
+    std::fprintf(err, "tumble: %s: %s, as the command line sets it: %s\n",
+                 scene.source_path.c_str(), broken->keys.front().c_str(), broken->problem.c_str());
+    return kExitBadInput;
   }
   if (!options.quiet) print_stability_warnings(scene, err);
-  const bool write_frames = options.frames && scene.output.frames;
-  const bool write_video = options.video && scene.output.video;
-  if (!write_frames && !write_video) {
-    std::fprintf(err, "tumble: nothing to write: frames and video are both off\n");
-    return kExitBadInput;
-  }
-  if (write_video && (scene.render.width % 2 || scene.render.height % 2)) {
-    std::fprintf(err,
-                 "tumble: width and height must be even for H.264 yuv420p video (got %dx%d); "
-                 "change them or render frames only with --no-video\n",
-                 scene.render.width, scene.render.height);
-    return kExitBadInput;
-  }
-
-  const std::int64_t total = std::llround(scene.duration * scene.fps);
+  const bool write_frames = scene.output.frames;
+  const bool write_video = scene.output.video;
+  const std::int64_t total = scene::frame_count(scene);
   const std::int64_t first = options.first_frame.value_or(0);
   const std::int64_t end = options.end_frame.value_or(total);
   if (first < 0 || end > total || first >= end) {

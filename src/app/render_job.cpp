@@ -12,6 +12,7 @@
 #include "io/video_encoder.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_builder.hpp"
+#include "scene/video_rules.hpp"
 
 namespace tumble::app {
 namespace {
@@ -56,7 +57,7 @@ std::int64_t peak_memory_bytes() {
 RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
   RenderResult result;
   const auto setup_start = std::chrono::steady_clock::now();
-  const std::int64_t total = std::llround(scene.duration * scene.fps);
+  const std::int64_t total = scene::frame_count(scene);
   Framing framing;
   try {
     framing = frame_scene(scene, total, plan.stop_requested);

@@ -1,10 +1,10 @@
 // The largest scene tumble will attempt. Beyond these a value is almost surely a typo, and an
 // attempt would run for days or fill the disk, so the loader refuses it with a message instead.
-// The README's "Errors and limits" lists them; change both together.
+// The README's "Errors and limits" lists them; change both together. scene/video_rules.hpp holds
+// a scene to the image and frame limits.
 #pragma once
 
 #include <cstdint>
-#include <string>
 
 namespace tumble::scene {
 
@@ -26,11 +26,5 @@ inline constexpr std::int64_t kMaxForcesPerBody = 100;
 inline constexpr std::int64_t kMaxPlanes = 64;
 // Scene files are read whole.
 inline constexpr std::int64_t kMaxSceneFileBytes = 16 * 1024 * 1024;
-
-// "" when a width × height frame is within kMaxPixels, else what is wrong, as a clause.
-std::string pixel_limit_problem(std::int64_t width, std::int64_t height);
-
-// "" when `duration` seconds at `fps` give 1 to kMaxFrames frames, else what is wrong.
-std::string frame_count_problem(double duration, std::int64_t fps);
 
 }  // namespace tumble::scene

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "scene/limits.hpp"
+#include "scene/video_rules.hpp"
 
 namespace tumble::scene::detail {
 namespace {
@@ -17,9 +18,6 @@ void read_render(TableReader& in, Scene& scene) {
   r.width = static_cast<int>(in.optional_integer("width", r.width, kMinImageSide, kMaxImageSide));
   r.height =
       static_cast<int>(in.optional_integer("height", r.height, kMinImageSide, kMaxImageSide));
-  if (const std::string problem = pixel_limit_problem(r.width, r.height); !problem.empty()) {
-    in.fail(in.has("height") ? "height" : "width", problem);
-  }
   scene.fps = static_cast<int>(in.optional_integer("fps", scene.fps, 1, 240));
   r.msaa = static_cast<int>(in.optional_integer("msaa", r.msaa, 1, 16));
   if (r.msaa & (r.msaa - 1)) {
@@ -130,29 +128,19 @@ void read_render_tables(TableReader& root, Scene& scene) {
   read("ground", read_ground);
   read("output", read_output);
 
-  // The scene describes a video: what no render of it could write is refused here, at the key
-  // in `table` when the file has it, else at `fallback` (a top-level key).
-  const auto fail_at = [&](const char* table, const char* key, const char* fallback,
-                           const std::string& problem) {
+  // The scene describes a video: what no render of it could write is refused here, at the first
+  // of the rule's keys the file has, else at its top-level key.
+  const std::optional<BrokenRule> broken = broken_video_rule(scene);
+  if (!broken) return;
+  for (const std::string& key : broken->keys) {
+    const std::size_t dot = key.find('.');
+    const std::string table = key.substr(0, dot);
     const toml::table* in = root.table().get_as<toml::table>(table);
-    if (in && in->contains(key)) TableReader(*in, table, root.file()).fail(key, problem);
-    root.fail(fallback, problem);
-  };
-  if (const std::string problem = frame_count_problem(scene.duration, scene.fps);
-      !problem.empty()) {
-    fail_at("render", "fps", "duration", problem);
+    if (in && in->contains(key.substr(dot + 1))) {
+      TableReader(*in, table, root.file()).fail(key.substr(dot + 1), broken->problem);
+    }
   }
-  const common::RenderSettings& r = scene.render;
-  if (scene.output.video && (r.width % 2 != 0 || r.height % 2 != 0)) {
-    const bool odd_width = r.width % 2 != 0;
-    fail_at("render", odd_width ? "width" : "height", "render",
-            "must be even for H.264 yuv420p video, which stores colour per 2×2 pixels (got " +
-                std::to_string(odd_width ? r.width : r.height) +
-                "); or set [output] video = false for PNG frames only");
-  }
-  if (!scene.output.frames && !scene.output.video) {
-    fail_at("output", "video", "output", "frames and video are both off: nothing to write");
-  }
+  root.fail(broken->fallback, broken->problem);
 }
 
 }  // namespace tumble::scene::detail

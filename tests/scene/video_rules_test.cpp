@@ -1,0 +1,90 @@
+// The video rules and the frame count, in their one home: the loader, `tumble render` and
+// `tumble bench pipeline` all ask broken_video_rule and frame_count.
+#include "scene/video_rules.hpp"
+
+#include <gtest/gtest.h>
+
+#include <variant>
+
+#include "scene/scene_loader.hpp"
+
+namespace tumble::scene {
+namespace {
+
+Scene loaded(const std::string& text) {
+  const SceneOrError result = parse_scene(text, "test.toml");
+  if (const auto* error = std::get_if<SceneError>(&result)) ADD_FAILURE() << error->message;
+  return std::get<Scene>(result);
+}
+
+constexpr const char* kCube = R"(duration = 0.5
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+width = 160
+height = 120
+fps = 30
+)";
+
+TEST(VideoRules, FrameCountIsDurationTimesFpsToTheNearestFrame) {
+  Scene scene = loaded(kCube);
+  EXPECT_EQ(frame_count(scene), 15);
+  scene.duration = 0.51;  // 15.3 frames
+  EXPECT_EQ(frame_count(scene), 15);
+  scene.duration = 0.4833;  // 14.499 frames
+  EXPECT_EQ(frame_count(scene), 14);
+  scene.fps = 60;
+  scene.duration = 1.0 / 120.0;  // half a frame: the first
+  EXPECT_EQ(frame_count(scene), 1);
+}
+
+TEST(VideoRules, ALoadedSceneKeepsThemAndAChangedOneNamesTheKeyItBroke) {
+  const Scene scene = loaded(kCube);
+  EXPECT_FALSE(broken_video_rule(scene));
+
+  Scene odd = scene;
+  odd.render.height = 121;
+  ASSERT_TRUE(broken_video_rule(odd));
+  EXPECT_EQ(broken_video_rule(odd)->keys, std::vector<std::string>{"render.height"});
+  EXPECT_NE(broken_video_rule(odd)->problem.find("must be even"), std::string::npos);
+  odd.output.video = false;  // frames alone may be odd
+  EXPECT_FALSE(broken_video_rule(odd));
+
+  Scene no_frame = scene;
+  no_frame.fps = 1;
+  no_frame.duration = 0.4;
+  ASSERT_TRUE(broken_video_rule(no_frame));
+  EXPECT_EQ(broken_video_rule(no_frame)->keys, std::vector<std::string>{"render.fps"});
+  EXPECT_EQ(broken_video_rule(no_frame)->fallback, "duration");
+
+  Scene huge = scene;
+  huge.render.width = 8192;
+  huge.render.height = 8192;
+  ASSERT_TRUE(broken_video_rule(huge));
+  EXPECT_NE(broken_video_rule(huge)->problem.find("8192 × 8192 is 67108864 pixels"),
+            std::string::npos);
+
+  Scene nothing = scene;
+  nothing.output.frames = false;
+  nothing.output.video = false;
+  ASSERT_TRUE(broken_video_rule(nothing));
+  EXPECT_EQ(broken_video_rule(nothing)->keys, std::vector<std::string>{"output.video"});
+}
+
+// In a file the rule is blamed on the first of its keys the file has, else its fallback.
+TEST(VideoRules, TheLoaderBlamesTheFirstKeyTheFileHas) {
+  const SceneOrError without_fps = parse_scene(
+      "duration = 0.001\n[[bodies]]\nshape = \"cube\"\n"
+      "size = 1.0\nmass = 1.0\n[physics]\ndt = 0.001\n",
+      "test.toml");
+  ASSERT_TRUE(std::holds_alternative<SceneError>(without_fps));
+  EXPECT_NE(
+      std::get<SceneError>(without_fps).message.find(": duration: duration × fps gives no frame"),
+      std::string::npos)
+      << std::get<SceneError>(without_fps).message;
+}
+
+}  // namespace
+}  // namespace tumble::scene
