@@ -1,4 +1,4 @@
-# Which parts of src/ each part may include (docs/DESIGN's table "Parts and what each may know"):
+# Which parts of src/ each part may include (DESIGN.md's table "Parts and what each may know"):
 # run by ctest as `cmake -DSOURCE_DIR=<a folder holding src/> -P check_layers.cmake`. Every
 # library shares the include root src/, so the compiler alone would let scene/scene.hpp include a
 # render header; this check fails the build's tests instead, naming the file and the include.

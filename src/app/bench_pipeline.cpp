@@ -14,7 +14,6 @@
 #include "io/atomic_file.hpp"
 #include "io/staged_directory.hpp"
 #include "scene/scene_loader.hpp"
-#include "scene/video_rules.hpp"
 
 namespace tumble::app {
 namespace {
@@ -59,17 +58,19 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
     return kExitBadInput;
   }
-  scene::Scene scene = std::get<scene::Scene>(loaded);
-  scene.render.width = options.width;
-  scene.render.height = options.height;
-  if (options.msaa != 0) scene.render.msaa = options.msaa;
-  scene.duration = static_cast<double>(options.frames) / scene.fps;
-  // Held to the scene's rules once more, as `tumble render` holds its overrides.
-  if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {
-    std::fprintf(err, "tumble: %s: %s, as the command line sets it: %s\n",
-                 scene.source_path.c_str(), broken->keys.front().c_str(), broken->problem.c_str());
+  // The benchmark's sizes, rate and length override the scene's, as `tumble render`'s do, and
+  // are held to the same rules (render_job.hpp).
+  RenderOptions overrides;
+  overrides.width = options.width;
+  overrides.height = options.height;
+  overrides.duration = static_cast<double>(options.frames) / std::get<scene::Scene>(loaded).fps;
+  if (options.msaa != 0) overrides.msaa = options.msaa;
+  const Result<RenderJob> job = make_render_job(std::get<scene::Scene>(loaded), overrides);
+  if (!job) {
+    std::fprintf(err, "tumble: %s\n", job.error().c_str());
     return kExitBadInput;
   }
+  const scene::Scene& scene = job->scene;
 
   // The frames and videos, written only to be timed, go to a hidden scratch folder beside the
   // report (".pipeline.partial-<pid>"), never committed: it is removed on the way out, whatever
@@ -82,26 +83,24 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   }
   const fs::path root = scratch.path();
   std::error_code error_code;
-  const std::string shaders = find_shader_directory();
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
 
   // One way of rendering: a fresh renderer and encoder, the frames, the finished video.
   const auto run = [&](const std::string& name, bool serial, bool frames, bool video,
                        const char* png, const char* preset, PathResult& result) {
     const fs::path directory = root / name;
-    fs::create_directories(directory / "frames", error_code);
-    scene::Scene variant = scene;
-    variant.output.preset = preset;
-    RenderPlan plan{.first = 0,
-                    .end = options.frames,
-                    .frames_directory = frames ? (directory / "frames").string() : "",
-                    .video_path = video ? (directory / "video.mp4").string() : "",
-                    .png = *io::png_settings_named(png),
-                    .serial = serial,
-                    .shader_directory = shaders};
-    plan.stop_requested = [] { return interrupt_signal() != 0; };
+    fs::create_directories(directory, error_code);
+    // The checked job, written another way: outputs on or off (off entirely for the ceiling),
+    // other PNG and x264 settings, one thread or the pipeline.
+    RenderJob variant = *job;
+    variant.scene.output.frames = frames;
+    variant.scene.output.video = video;
+    variant.scene.output.preset = preset;
+    variant.png = *io::png_settings_named(png);
+    variant.serial = serial;
     std::fprintf(err, "bench: %s ...\n", name.c_str());
-    const RenderResult rendered = render_scene(variant, plan);
+    const RenderResult rendered = render_scene(
+        variant, directory, [] { return interrupt_signal() != 0; }, [](std::int64_t) {});
     result.name = name;
     result.seconds = rendered.pipeline.wall + rendered.finish_seconds;
     result.efficiency = rendered.pipeline.process_cpu / cores / rendered.pipeline.wall;

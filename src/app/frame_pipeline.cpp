@@ -5,20 +5,15 @@
 
 #include <atomic>
 #include <chrono>
+#include <deque>
 #include <mutex>
-#include <stdexcept>
 #include <system_error>
 #include <thread>
-#include <vector>
 
 #include "app/bounded_queue.hpp"
 
 namespace tumble::app {
 namespace {
-
-// Frames in flight: one being drawn, one being written, one being encoded, one spare so that the
-// drawing thread never waits for a slot while both workers are busy. 4 × 2.8 MB at 1280×720.
-constexpr std::size_t kSlots = 4;
 
 double thread_cpu_seconds() {
   timespec now{};
@@ -58,62 +53,58 @@ auto timed(StageTime& into, Work&& work) {
 struct Slot {
   io::Image image;
   std::int64_t frame = 0;
-  std::atomic<int> pending{0};  // sinks that have not finished with this frame
+  std::atomic<std::size_t> pending{0};  // sinks that have not finished with this frame
 };
 
-// Simulates and draws frame k into `image`: "" or the error the source threw (a blow-up, an
-// interruption, a renderer failure).
-std::string draw_frame(const FrameSource& source, std::int64_t k, io::Image& image,
-                       PipelineReport& report) {
-  try {
-    const render::FrameView view = timed(report.simulate, [&] { return source.view(k); });
-    timed(report.render, [&] { source.draw(view, image); });
-    return {};
-  } catch (const std::exception& error) {
-    return error.what();
+// Pulls frame k from the source and draws it into `image`: "" or why the run must stop.
+std::string draw_frame(FrameSource& source, render::Renderer& renderer, std::int64_t k,
+                       io::Image& image, PipelineReport& report) {
+  const Result<render::FrameView> view = timed(report.simulate, [&] { return source.view(k); });
+  if (!view) return view.error();
+  timed(report.render, [&] { renderer.draw(*view, image); });
+  return {};
+}
+
+void finish_times(PipelineReport& report, double start_wall, double start_cpu) {
+  report.wall = wall_seconds() - start_wall;
+  report.process_cpu = process_cpu_seconds() - start_cpu;
+  // The renderer's own threads (llvmpipe) are not the calling thread: count every CPU second no
+  // other stage claimed as rendering.
+  double claimed = report.simulate.cpu;
+  for (const StageTime& sink : report.sinks) claimed += sink.cpu;
+  report.render.cpu = std::max(0.0, report.process_cpu - claimed);
+}
+
+void run_serial(std::int64_t first, std::int64_t end, FrameSource& source,
+                render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
+                const std::function<void(std::int64_t done)>& on_frame_done,
+                PipelineReport& report) {
+  io::Image image;
+  for (std::int64_t k = first; k < end; ++k) {
+    std::string error = draw_frame(source, renderer, k, image, report);
+    for (std::size_t i = 0; i < sinks.size() && error.empty(); ++i) {
+      error = timed(report.sinks[i], [&] { return sinks[i]->write(k, image); });
+    }
+    if (!error.empty()) {
+      report.error = error;
+      return;
+    }
+    on_frame_done(++report.frames_done);
   }
 }
 
-}  // namespace
-
-PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSource& source,
-                          const FrameSinks& sinks, bool serial,
-                          const std::function<void(std::int64_t done)>& on_frame_done) {
-  PipelineReport report;
-  const double start_wall = wall_seconds();
-  const double start_cpu = process_cpu_seconds();
-  const auto finish = [&] {
-    report.wall = wall_seconds() - start_wall;
-    report.process_cpu = process_cpu_seconds() - start_cpu;
-    // The renderer's own threads (llvmpipe) are not the calling thread: count every CPU second
-    // no other stage claimed as rendering.
-    report.render.cpu =
-        std::max(0.0, report.process_cpu - report.simulate.cpu - report.png.cpu - report.video.cpu);
-    return report;
-  };
-
-  if (serial) {
-    io::Image image;
-    for (std::int64_t k = first; k < end; ++k) {
-      std::string error = draw_frame(source, k, image, report);
-      if (error.empty() && sinks.png)
-        error = timed(report.png, [&] { return sinks.png(k, image); });
-      if (error.empty() && sinks.video) {
-        error = timed(report.video, [&] { return sinks.video(image); });
-      }
-      if (!error.empty()) {
-        report.error = error;
-        return finish();
-      }
-      on_frame_done(++report.frames_done);
-    }
-    return finish();
-  }
-
-  std::vector<Slot> slots(kSlots);
-  BoundedQueue<std::size_t> free_slots(kSlots), png_queue(kSlots), video_queue(kSlots);
-  for (std::size_t i = 0; i < kSlots; ++i) free_slots.push(i);
-  const int sinks_per_frame = (sinks.png ? 1 : 0) + (sinks.video ? 1 : 0);
+void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
+                   render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
+                   const std::function<void(std::int64_t done)>& on_frame_done,
+                   PipelineReport& report) {
+  // Frames in flight: one being drawn, one with each sink, and one spare so that the drawing
+  // thread never waits for a slot while every sink is busy. 4 × 2.8 MB at 1280×720 for PNG + MP4.
+  const std::size_t slot_count = sinks.size() + 2;
+  std::vector<Slot> slots(slot_count);
+  BoundedQueue<std::size_t> free_slots(slot_count);
+  std::deque<BoundedQueue<std::size_t>> queues;  // one per sink; a queue cannot move
+  for (std::size_t i = 0; i < sinks.size(); ++i) queues.emplace_back(slot_count);
+  for (std::size_t i = 0; i < slot_count; ++i) free_slots.push(i);
 
   std::mutex done_mutex;  // guards report.error, report.frames_done and on_frame_done
   const auto fail = [&](const std::string& error) {
@@ -122,8 +113,7 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSourc
       if (report.error.empty()) report.error = error;
     }
     free_slots.abort();
-    png_queue.abort();
-    video_queue.abort();
+    for (BoundedQueue<std::size_t>& queue : queues) queue.abort();
   };
   const auto release = [&](std::size_t slot) {
     if (slots[slot].pending.fetch_sub(1) != 1) return;
@@ -134,9 +124,11 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSourc
     free_slots.push(slot);
   };
   // One worker per sink; each times its work into its own StageTime.
-  const auto worker = [&](BoundedQueue<std::size_t>& queue, StageTime& time, auto&& work) {
-    while (const std::optional<std::size_t> slot = queue.pop()) {
-      const std::string error = timed(time, [&] { return work(slots[*slot]); });
+  const auto worker = [&](std::size_t i) {
+    while (const std::optional<std::size_t> slot = queues[i].pop()) {
+      Slot& s = slots[*slot];
+      const std::string error =
+          timed(report.sinks[i], [&] { return sinks[i]->write(s.frame, s.image); });
       if (!error.empty()) {
         fail(error);
         return;
@@ -145,46 +137,55 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, const FrameSourc
     }
   };
   std::vector<std::thread> threads;
-  threads.reserve(2);
+  threads.reserve(sinks.size());
   try {
-    if (sinks.png) {
-      threads.emplace_back([&] {
-        worker(png_queue, report.png,
-               [&](Slot& slot) { return sinks.png(slot.frame, slot.image); });
-      });
-    }
-    if (sinks.video) {
-      threads.emplace_back([&] {
-        worker(video_queue, report.video, [&](Slot& slot) { return sinks.video(slot.image); });
-      });
-    }
+    for (std::size_t i = 0; i < sinks.size(); ++i) threads.emplace_back(worker, i);
   } catch (const std::system_error& error) {  // out of memory or of threads (ulimit -v, -u)
     fail(std::string("cannot start a worker thread: ") + error.what());
     for (std::thread& thread : threads) thread.join();  // the aborted queues let it finish
-    return finish();
+    return;
   }
 
   for (std::int64_t k = first; k < end; ++k) {
     const std::optional<std::size_t> slot = free_slots.pop();
     if (!slot) break;  // a worker failed
     Slot& s = slots[*slot];
-    if (const std::string error = draw_frame(source, k, s.image, report); !error.empty()) {
+    if (const std::string error = draw_frame(source, renderer, k, s.image, report);
+        !error.empty()) {
       fail(error);
       break;
     }
     s.frame = k;
-    s.pending = sinks_per_frame;
-    if (sinks_per_frame == 0) {  // drawing only, as when measuring the renderer alone
-      s.pending = 1;
+    s.pending = sinks.empty() ? 1 : sinks.size();
+    if (sinks.empty()) {  // drawing only, as when measuring the renderer alone
       release(*slot);
       continue;
     }
-    if ((sinks.png && !png_queue.push(*slot)) || (sinks.video && !video_queue.push(*slot))) break;
+    bool queued = true;
+    for (BoundedQueue<std::size_t>& queue : queues) queued = queued && queue.push(*slot);
+    if (!queued) break;
   }
-  png_queue.close();
-  video_queue.close();
+  for (BoundedQueue<std::size_t>& queue : queues) queue.close();
   for (std::thread& thread : threads) thread.join();
-  return finish();
+}
+
+}  // namespace
+
+PipelineReport run_frames(std::int64_t first, std::int64_t end, FrameSource& source,
+                          render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
+                          bool serial,
+                          const std::function<void(std::int64_t done)>& on_frame_done) {
+  PipelineReport report;
+  report.sinks.resize(sinks.size());
+  const double start_wall = wall_seconds();
+  const double start_cpu = process_cpu_seconds();
+  if (serial) {
+    run_serial(first, end, source, renderer, sinks, on_frame_done, report);
+  } else {
+    run_pipelined(first, end, source, renderer, sinks, on_frame_done, report);
+  }
+  finish_times(report, start_wall, start_cpu);
+  return report;
 }
 
 }  // namespace tumble::app

@@ -5,13 +5,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <memory>
 
 #include "app/scene_view.hpp"
-#include "io/video_encoder.hpp"
 #include "render/renderer.hpp"
-#include "scene/scene_builder.hpp"
 #include "scene/video_rules.hpp"
 
 namespace tumble::app {
@@ -21,6 +18,40 @@ namespace fs = std::filesystem;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void apply_overrides(const RenderOptions& options, scene::Scene& scene) {
+  if (options.width) scene.render.width = *options.width;
+  if (options.height) scene.render.height = *options.height;
+  if (options.fps) scene.fps = *options.fps;
+  if (options.msaa) scene.render.msaa = *options.msaa;
+  if (options.duration) scene.duration = *options.duration;
+  if (options.preset) scene.output.preset = *options.preset;
+  scene.output.frames = scene.output.frames && options.frames;
+  scene.output.video = scene.output.video && options.video;
+}
+
+// Every output the job asks for, opened in `folder`.
+Result<std::vector<std::unique_ptr<FrameSink>>> open_sinks(const RenderJob& job,
+                                                           const fs::path& folder) {
+  std::vector<std::unique_ptr<FrameSink>> sinks;
+  const scene::Scene& scene = job.scene;
+  if (scene.output.frames) {
+    Result<std::unique_ptr<FrameSink>> png = PngFrames::open(job.frames_path(folder), job.png);
+    if (!png) return Error{png.error()};
+    sinks.push_back(std::move(*png));
+  }
+  if (scene.output.video) {
+    Result<std::unique_ptr<FrameSink>> video =
+        Mp4Video::open(job.video_path(folder), {.width = scene.render.width,
+                                                .height = scene.render.height,
+                                                .fps = scene.fps,
+                                                .crf = scene.output.crf,
+                                                .preset = scene.output.preset});
+    if (!video) return Error{video.error()};
+    sinks.push_back(std::move(*video));
+  }
+  return sinks;
 }
 
 }  // namespace
@@ -54,82 +85,103 @@ std::int64_t peak_memory_bytes() {
   return static_cast<std::int64_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
-RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan) {
-  RenderResult result;
-  const auto setup_start = std::chrono::steady_clock::now();
+std::string RenderJob::frames_path(const fs::path& folder) const {
+  return scene.output.frames ? (folder / "frames").string() : std::string();
+}
+
+std::string RenderJob::video_path(const fs::path& folder) const {
+  return scene.output.video ? (folder / (scene.name + ".mp4")).string() : std::string();
+}
+
+Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& options) {
+  apply_overrides(options, scene);
+  // The loaded scene kept every rule: what breaks one now is an override.
+  if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {
+    return Error{scene.source_path + ": " + broken->keys.front() +
+                 ", as the command line sets it: " + broken->problem};
+  }
   const std::int64_t total = scene::frame_count(scene);
-  Framing framing;
-  try {
-    framing = frame_scene(scene, total, plan.stop_requested);
-  } catch (const RenderStopped& stopped) {
-    result.error = stopped.what();
+  const std::int64_t first = options.first_frame.value_or(0);
+  const std::int64_t end = options.end_frame.value_or(total);
+  if (first < 0 || end > total || first >= end) {
+    return Error{"--frames " + std::to_string(first) + ":" + std::to_string(end) +
+                 " is outside the scene's frames 0:" + std::to_string(total)};
+  }
+  std::string shader_directory = find_shader_directory();
+  if (shader_directory.empty()) {
+    const char* asked = std::getenv("TUMBLE_SHADER_DIR");
+    return Error{asked ? std::string("no shaders (body.vert) in TUMBLE_SHADER_DIR=") + asked
+                       : "cannot find the shaders/ folder (set TUMBLE_SHADER_DIR)"};
+  }
+  const fs::path root = fs::path(options.output_root).lexically_normal();
+  const fs::path directory = root / scene.output.directory;
+  return RenderJob{.scene = std::move(scene),
+                   .frame_count = total,
+                   .first = first,
+                   .end = end,
+                   .output_root = root,
+                   .directory = directory,
+                   .png = options.png,
+                   .serial = options.serial,
+                   .shader_directory = std::move(shader_directory)};
+}
+
+RenderResult render_scene(const RenderJob& job, const fs::path& folder,
+                          const std::function<bool()>& stop_requested,
+                          const std::function<void(std::int64_t done)>& on_frame_done) {
+  RenderResult result;
+  const scene::Scene& scene = job.scene;
+  const auto setup_start = std::chrono::steady_clock::now();
+  Result<std::vector<std::unique_ptr<FrameSink>>> sinks = open_sinks(job, folder);
+  if (!sinks) {
+    result.error = sinks.error();
     return result;
   }
+  const Result<Framing> framing = frame_scene(scene, job.frame_count, stop_requested);
+  if (!framing) {
+    result.error = framing.error();
+    return result;
+  }
+  result.framing_steps = framing->physics_steps;
   // The automatic back end, and no font: no scene draws text yet.
   render::RenderSettings settings{scene.render, render::Backend::automatic, std::string()};
-  settings.ground = framing.ground;
-
+  settings.ground = framing->ground;
   const std::unique_ptr<render::Renderer> renderer =
-      render::Renderer::create(settings, plan.shader_directory, result.error);
+      render::Renderer::create(settings, job.shader_directory, result.error);
   if (!renderer) {
     // Mostly what the scene asks of this OpenGL ([render] msaa beyond its samples): name it.
     result.error = scene.source_path + ": " + result.error;
     return result;
   }
   result.renderer = renderer->description();
-
-  std::unique_ptr<io::VideoEncoder> encoder;
-  if (!plan.video_path.empty()) {
-    encoder = io::VideoEncoder::open(plan.video_path,
-                                     {.width = settings.width,
-                                      .height = settings.height,
-                                      .fps = scene.fps,
-                                      .crf = scene.output.crf,
-                                      .preset = scene.output.preset},
-                                     result.error);
-    if (!encoder) return result;
-  }
-
-  sim::Simulation simulation = scene::build_simulation(scene);
-  for (const physics::BodyState& state : simulation.current()) {
+  SimulatedFrames source(scene, *framing, stop_requested);
+  for (const physics::BodyState& state : source.simulation().current()) {
     result.bodies.push_back({.energy_start = physics::kinetic_energy(state),
                              .angular_momentum_start = state.angular_momentum().norm()});
   }
+  std::vector<FrameSink*> sink_list;
+  for (const std::unique_ptr<FrameSink>& sink : *sinks) {
+    sink_list.push_back(sink.get());
+    result.stages.push_back(sink->stage());
+  }
   result.setup_seconds = seconds_since(setup_start);
 
-  const FrameSource source{
-      .view =
-          [&](std::int64_t k) {
-            const double t = static_cast<double>(k) / scene.fps;
-            return frame_view(scene, framing,
-                              checked_states_at(simulation, scene, t, plan.stop_requested), t);
-          },
-      .draw = [&](const render::FrameView& view,
-                  io::Image& image) { renderer->draw(view, image); }};
-  FrameSinks sinks;
-  if (!plan.frames_directory.empty()) {
-    sinks.png = [&](std::int64_t k, const io::Image& image) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(k));
-      return io::write_png((fs::path(plan.frames_directory) / name).string(), image, plan.png);
-    };
-  }
-  if (encoder) {
-    sinks.video = [&](const io::Image& image) { return encoder->add_frame(image); };
-  }
   result.pipeline =
-      run_frames(plan.first, plan.end, source, sinks, plan.serial, plan.on_frame_done);
+      run_frames(job.first, job.end, source, *renderer, sink_list, job.serial, on_frame_done);
+  result.frame_steps = source.simulation().step_count();
   if (!result.pipeline.error.empty()) {
     result.error = result.pipeline.error;
-    return result;  // the encoder's destructor removes its partial file
+    return result;  // each sink's destructor removes its partial file
   }
-
   const auto finish_start = std::chrono::steady_clock::now();
-  if (encoder) result.error = encoder->finish();
+  for (FrameSink* sink : sink_list) {
+    if (result.error.empty()) result.error = sink->finish();
+  }
   result.finish_seconds = seconds_since(finish_start);
   for (std::size_t i = 0; i < result.bodies.size(); ++i) {
-    result.bodies[i].energy_end = physics::kinetic_energy(simulation.current()[i]);
-    result.bodies[i].angular_momentum_end = simulation.current()[i].angular_momentum().norm();
+    const physics::BodyState& state = source.simulation().current()[i];
+    result.bodies[i].energy_end = physics::kinetic_energy(state);
+    result.bodies[i].angular_momentum_end = state.angular_momentum().norm();
   }
   return result;
 }

@@ -1,29 +1,59 @@
-// One render of a scene, from framing to the last encoded frame: shared by `tumble render` and
-// `tumble bench pipeline`, which runs it several ways on the same scene.
+// One render of a scene, decided once and checked in one place (make_render_job), then run
+// (render_scene): shared by `tumble render` and `tumble bench pipeline`, which runs it several
+// ways on the same scene.
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/frame_pipeline.hpp"
+#include "common/result.hpp"
 #include "io/png_io.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::app {
 
-struct RenderPlan {
-  std::int64_t first = 0;  // frames first .. end-1
-  std::int64_t end = 0;
-  std::string frames_directory;  // PNG frames go here; "" = none
-  std::string video_path;        // the MP4; "" = none
+// What the command line asks of a render. Each override, when set, replaces the scene's value
+// before the scene is checked.
+struct RenderOptions {
+  std::string scene_path;
+  std::string output_root = "output";     // files go to <output_root>/<scene output directory>/
+  std::optional<int> width, height, fps;  // [render] width, height (pixels) and fps
+  std::optional<int> msaa;                // [render] msaa (bench pipeline's --msaa)
+  std::optional<double> duration;         // s (bench pipeline's --frames)
+  std::optional<std::string> preset;      // [output] preset (bench pipeline's x264 presets)
+  std::optional<std::int64_t> first_frame, end_frame;  // --frames A:B renders A .. B-1
+  bool frames = true;  // false: no PNG frames, whatever [output] frames says
+  bool video = true;   // false: no MP4, whatever [output] video says
+  bool quiet = false;
+  bool verbose = false;
+  bool serial = false;  // one thread: the reference the pipelined path must match byte for byte
+  io::PngSettings png;  // fast by default; see io/png_io.hpp
+};
+
+struct RenderJob {
+  scene::Scene scene;                 // with the overrides; keeps every rule of scene/video_rules
+  std::int64_t frame_count = 0;       // of the whole scene, from scene::frame_count
+  std::int64_t first = 0, end = 0;    // frames first .. end-1 are rendered
+  std::filesystem::path output_root;  // spelt one way ("a/../b" is "b"), as StagedDirectory does
+  std::filesystem::path directory;    // the final folder: output_root / [output] directory
   io::PngSettings png;
   bool serial = false;  // one thread, for comparison (same bytes as the pipeline)
   std::string shader_directory;
-  std::function<void(std::int64_t done)> on_frame_done = [](std::int64_t) {};
-  std::function<bool()> stop_requested = [] { return false; };  // asked before each frame
+
+  // Where the frames and the video go in `folder` (the folder being written, or `directory` in
+  // the report): "" for an output that is off.
+  std::string frames_path(const std::filesystem::path& folder) const;
+  std::string video_path(const std::filesystem::path& folder) const;
 };
+
+// The scene with the options' overrides, held to the video rules once more (an override can
+// break them), with its frame range and shaders. Errors name the scene file and the key.
+Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& options);
 
 struct BodyDiagnostics {
   double energy_start = 0.0, energy_end = 0.0;                      // J
@@ -31,15 +61,22 @@ struct BodyDiagnostics {
 };
 
 struct RenderResult {
-  std::string error;            // "" on success; then the video (if any) is complete
+  std::string error;            // "" on success; then every output is complete
   PipelineReport pipeline;      // the frames
-  double setup_seconds = 0.0;   // framing, renderer and encoder set-up (s, wall)
-  double finish_seconds = 0.0;  // draining the encoder and closing the MP4 (s, wall)
+  double setup_seconds = 0.0;   // framing, renderer and sinks' set-up (s, wall)
+  double finish_seconds = 0.0;  // finishing the sinks: draining the encoder, closing the MP4 (s)
   std::string renderer;         // the OpenGL implementation
+  std::vector<const char*> stages;  // each sink's stage name, as in pipeline.sinks
+  std::int64_t framing_steps = 0;   // physics steps of the framing pass (0 when not run)
+  std::int64_t frame_steps = 0;     // physics steps of the frames
   std::vector<BodyDiagnostics> bodies;
 };
 
-RenderResult render_scene(const scene::Scene& scene, const RenderPlan& plan);
+// Renders the job's frames into `folder` (which must exist). Asks `stop_requested` before each
+// frame and calls `on_frame_done` as each one finishes.
+RenderResult render_scene(const RenderJob& job, const std::filesystem::path& folder,
+                          const std::function<bool()>& stop_requested,
+                          const std::function<void(std::int64_t done)>& on_frame_done);
 
 // shaders/ beside an installed binary, else in the source tree this binary was built from;
 // TUMBLE_SHADER_DIR overrides both. "" if none is found.

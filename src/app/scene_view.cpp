@@ -10,75 +10,126 @@
 
 namespace tumble::app {
 
-std::vector<physics::BodyState> checked_states_at(sim::Simulation& simulation,
-                                                  const scene::Scene& scene, double t,
-                                                  const StopRequested& stop_requested) {
-  if (stop_requested()) throw RenderStopped("interrupted");
+Result<std::vector<physics::BodyState>> checked_states_at(sim::Simulation& simulation,
+                                                          const scene::Scene& scene, double t,
+                                                          const StopRequested& stop_requested) {
+  if (stop_requested()) return Error{"interrupted"};
   std::vector<physics::BodyState> states = simulation.states_at(t);
-  if (simulation.blow_up()) throw RenderStopped(blow_up_message(scene, *simulation.blow_up()));
+  if (simulation.blow_up()) return Error{blow_up_message(scene, *simulation.blow_up())};
   return states;
 }
 
-Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
-                    const StopRequested& stop_requested) {
-  // Bounds of every body, at every frame, as spheres around their centres.
+bool framing_needs_motion(const scene::Scene& scene) {
+  return !scene.camera.position || !scene.camera.look_at ||
+         (scene.planes.empty() && !scene.ground_height);
+}
+
+namespace {
+
+// Where the bodies go over the whole run, as spheres around their centres.
+struct MotionBounds {
+  // Around every centre, and every spring anchor while it acts, at every frame (world frame, m).
   physics::Vec3 low = physics::Vec3::Constant(std::numeric_limits<double>::infinity());
   physics::Vec3 high = -low;
-  double largest_radius = 0.0;
-  double lowest_point = std::numeric_limits<double>::infinity();
+  double largest_radius = 0.0;                                    // of any body's sphere (m)
+  double lowest_point = std::numeric_limits<double>::infinity();  // y any sphere reaches (m)
+  std::int64_t steps = 0;                                         // physics steps taken
+};
+
+void take_in(const scene::Scene& scene, const std::vector<physics::BodyState>& states, double t,
+             MotionBounds& bounds) {
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const double radius = 0.5 * scene.bodies[i].size.norm();
+    bounds.low = bounds.low.cwiseMin(states[i].position());
+    bounds.high = bounds.high.cwiseMax(states[i].position());
+    bounds.largest_radius = std::max(bounds.largest_radius, radius);
+    bounds.lowest_point = std::min(bounds.lowest_point, states[i].position().y() - radius);
+    // Spring anchors are drawn too, where they are while they act: keep them in the picture.
+    for (const physics::ForceLaw& law : scene.bodies[i].forces) {
+      const auto* spring = std::get_if<physics::Spring>(&law);
+      if (!spring || !physics::acts_at(*spring, t)) continue;
+      const physics::Vec3 anchor = physics::anchor_motion(*spring, t).position;
+      bounds.low = bounds.low.cwiseMin(anchor);
+      bounds.high = bounds.high.cwiseMax(anchor);
+    }
+  }
+}
+
+// The framing pass: the scene's physics at every frame time, on a simulation of its own.
+Result<MotionBounds> motion_bounds(const scene::Scene& scene, std::int64_t frame_count,
+                                   const StopRequested& stop_requested) {
+  MotionBounds bounds;
   sim::Simulation simulation = scene::build_simulation(scene);
   for (std::int64_t k = 0; k < std::max<std::int64_t>(frame_count, 1); ++k) {
     const double t = static_cast<double>(k) / scene.fps;  // s
     const auto states = checked_states_at(simulation, scene, t, stop_requested);
-    for (std::size_t i = 0; i < states.size(); ++i) {
-      const double radius = 0.5 * scene.bodies[i].size.norm();
-      low = low.cwiseMin(states[i].position());
-      high = high.cwiseMax(states[i].position());
-      largest_radius = std::max(largest_radius, radius);
-      lowest_point = std::min(lowest_point, states[i].position().y() - radius);
-      // Spring anchors are drawn too, where they are while they act: keep them in the picture.
-      for (const physics::ForceLaw& law : scene.bodies[i].forces) {
-        const auto* spring = std::get_if<physics::Spring>(&law);
-        if (!spring || !physics::acts_at(*spring, t)) continue;
-        const physics::Vec3 anchor = physics::anchor_motion(*spring, t).position;
-        low = low.cwiseMin(anchor);
-        high = high.cwiseMax(anchor);
-      }
-    }
+    if (!states) return Error{states.error()};
+    take_in(scene, *states, t, bounds);
   }
+  bounds.steps = simulation.step_count();
+  return bounds;
+}
 
+// The camera the scene leaves to be chosen, framing `bounds`: looking at their centre unless
+// look_at is given, and unless position is given, far enough that the bounding sphere spans 65%
+// of the frame's height (R / d = sin of the angle it subtends), seen from above and to the side
+// so that three faces of a cube show.
+Result<render::Camera> chosen_camera(const scene::Scene& scene, const MotionBounds& bounds) {
+  const physics::Vec3 center = 0.5 * (bounds.low + bounds.high);
+  const double radius = 0.5 * (bounds.high - bounds.low).norm() + bounds.largest_radius;
+  render::Camera camera{.look_at = scene.camera.look_at.value_or(center),
+                        .up = scene.camera.up,
+                        .fov_degrees = scene.camera.fov_degrees};
+  if (scene.camera.position) {
+    camera.position = *scene.camera.position;
+    if ((camera.position - camera.look_at).norm() == 0.0) {
+      return Error{scene.source_path +
+                   ": [camera] position is the centre of the motion, where the camera looks "
+                   "when look_at is not given: the view has no direction; give [camera] look_at"};
+    }
+  } else {
+    const double half_fov = 0.5 * scene.camera.fov_degrees * M_PI / 180.0;
+    const double distance = radius / (0.65 * std::sin(half_fov));
+    camera.position = camera.look_at + distance * physics::Vec3(0.55, 0.42, 0.72).normalized();
+  }
+  return camera;
+}
+
+}  // namespace
+
+Result<Framing> frame_scene(const scene::Scene& scene, std::int64_t frame_count,
+                            const StopRequested& stop_requested) {
   Framing out;
   if (scene.planes.empty()) {
     out.ground = scene.render.ground;
-    out.ground.height = scene.ground_height.value_or(lowest_point - 0.25 * largest_radius);
   } else {
     DrawnPlanes planes = drawn_planes(scene);
     out.ground = planes.ground;
     out.quads = std::move(planes.quads);
-    // Walls as far as two motion radii from it: a room around a small motion shows, a default
-    // 20 m wall does not take over the picture.
-    frame_walls(out.quads, 2.0 * (0.5 * (high - low).norm() + largest_radius), low, high);
   }
-  const physics::Vec3 center = 0.5 * (low + high);
-  const double radius = 0.5 * (high - low).norm() + largest_radius;
-  out.camera.look_at = scene.camera.look_at.value_or(center);
-  out.camera.up = scene.camera.up;
-  out.camera.fov_degrees = scene.camera.fov_degrees;
-  if (scene.camera.position) {
-    out.camera.position = *scene.camera.position;
-    if ((out.camera.position - out.camera.look_at).norm() == 0.0) {
-      throw RenderStopped(scene.source_path +
-                          ": [camera] position is the centre of the motion, where the camera "
-                          "looks when look_at is not given: the view has no direction; give "
-                          "[camera] look_at");
+  if (framing_needs_motion(scene)) {
+    Result<MotionBounds> bounds = motion_bounds(scene, frame_count, stop_requested);
+    if (!bounds) return Error{bounds.error()};
+    out.physics_steps = bounds->steps;
+    if (scene.planes.empty()) {
+      out.ground.height =
+          scene.ground_height.value_or(bounds->lowest_point - 0.25 * bounds->largest_radius);
+    } else {
+      // Walls as far as two motion radii from it: a room around a small motion shows, a default
+      // 20 m wall does not take over the picture.
+      frame_walls(out.quads,
+                  2.0 * (0.5 * (bounds->high - bounds->low).norm() + bounds->largest_radius),
+                  bounds->low, bounds->high);
     }
+    Result<render::Camera> camera = chosen_camera(scene, *bounds);
+    if (!camera) return Error{camera.error()};
+    out.camera = *camera;
   } else {
-    // Far enough that the bounding sphere spans 65% of the frame's height (R / d = sin of the
-    // angle it subtends), seen from above and to the side so that three faces of a cube show.
-    const double half_fov = 0.5 * scene.camera.fov_degrees * M_PI / 180.0;
-    const double distance = radius / (0.65 * std::sin(half_fov));
-    out.camera.position =
-        out.camera.look_at + distance * physics::Vec3(0.55, 0.42, 0.72).normalized();
+    if (scene.planes.empty()) out.ground.height = *scene.ground_height;
+    out.camera = render::Camera{.position = *scene.camera.position,
+                                .look_at = *scene.camera.look_at,
+                                .up = scene.camera.up,
+                                .fov_degrees = scene.camera.fov_degrees};
   }
   out.follow_offset = out.camera.position - out.camera.look_at;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -147,6 +198,21 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
     add_force_visuals(scene.bodies[i], states[i], t, view.boxes);
   }
   return view;
+}
+
+SimulatedFrames::SimulatedFrames(const scene::Scene& scene, const Framing& framing,
+                                 StopRequested stop_requested)
+    : scene_(scene),
+      framing_(framing),
+      stop_requested_(std::move(stop_requested)),
+      simulation_(scene::build_simulation(scene)) {}
+
+Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
+  const double t = static_cast<double>(frame) / scene_.fps;  // s
+  const Result<std::vector<physics::BodyState>> states =
+      checked_states_at(simulation_, scene_, t, stop_requested_);
+  if (!states) return Error{states.error()};
+  return frame_view(scene_, framing_, *states, t);
 }
 
 }  // namespace tumble::app

@@ -1,20 +1,20 @@
 // From a scene and body states to what the renderer draws: the glue between physics and render.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <vector>
 
+#include "app/frame_pipeline.hpp"
+#include "common/result.hpp"
 #include "physics/rigid_body.hpp"
 #include "render/frame.hpp"
 #include "scene/scene.hpp"
-
-#include <functional>
-#include <stdexcept>
-
 #include "sim/simulation.hpp"
 
 namespace tumble::app {
 
-// Where the camera and ground go when the scene leaves them out: chosen from the whole motion.
+// Where the camera and ground go: as the scene writes them, or chosen from the whole motion.
 struct Framing {
   render::Camera camera;  // position and look_at as written, or framing every body at all times
   // [ground] as written. Without planes its height is as written, or just below the lowest point
@@ -23,30 +23,47 @@ struct Framing {
   std::vector<render::Quad> quads;  // the planes other than the floor, the same every frame
   render::Vec3 follow_offset;       // camera position - look_at, kept when following a body
   int follow_index = -1;            // the followed body, or -1
+  std::int64_t physics_steps = 0;   // steps the framing pass took; 0 when it was not needed
 };
 
-// Thrown when a render must stop before its last frame; what() says why.
-struct RenderStopped : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// Asked before each frame: true stops the render (RenderStopped "interrupted").
+// Asked before each frame: true stops the render ("interrupted").
 using StopRequested = std::function<bool()>;
 
-// Every body's state at time t (s), from Simulation::states_at. Throws RenderStopped when
-// `stop_requested` says so, or when a body blew up (naming it, the time and the likely cause).
-std::vector<physics::BodyState> checked_states_at(sim::Simulation& simulation,
-                                                  const scene::Scene& scene, double t,
-                                                  const StopRequested& stop_requested);
+// Every body's state at time t (s), from Simulation::states_at; an error when `stop_requested`
+// says so, or when a body blew up (naming it, the time and the likely cause).
+Result<std::vector<physics::BodyState>> checked_states_at(sim::Simulation& simulation,
+                                                          const scene::Scene& scene, double t,
+                                                          const StopRequested& stop_requested);
 
-// Runs the scene's physics over all frame times (cheap next to rendering) to frame it. Throws
-// RenderStopped as checked_states_at does.
-Framing frame_scene(const scene::Scene& scene, std::int64_t frame_count,
-                    const StopRequested& stop_requested);
+// True when the scene leaves the camera's position or look_at, or (without planes) the ground's
+// height, to be chosen from the whole motion: only then does frame_scene run the physics.
+bool framing_needs_motion(const scene::Scene& scene);
+
+// The camera and ground of every frame. When framing_needs_motion, runs the scene's physics over
+// all `frame_count` frame times first (the framing pass), which fails as checked_states_at does,
+// or when a camera given only its position is at the centre of the motion it would look at.
+Result<Framing> frame_scene(const scene::Scene& scene, std::int64_t frame_count,
+                            const StopRequested& stop_requested);
 
 // The frame for the body states at time t (s): the bodies, the springs and pushes acting, and
 // the planes' quads.
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                              const std::vector<physics::BodyState>& states, double t);
+
+// The frame loop's source for a render: frame k shows the bodies at t = k / fps (s), their states
+// interpolated between the two physics steps around t, on a simulation of its own.
+class SimulatedFrames final : public FrameSource {
+ public:
+  // `scene` and `framing` must outlive it.
+  SimulatedFrames(const scene::Scene& scene, const Framing& framing, StopRequested stop_requested);
+  Result<render::FrameView> view(std::int64_t frame) override;
+  const sim::Simulation& simulation() const { return simulation_; }
+
+ private:
+  const scene::Scene& scene_;
+  const Framing& framing_;
+  StopRequested stop_requested_;
+  sim::Simulation simulation_;
+};
 
 }  // namespace tumble::app

@@ -158,7 +158,9 @@ point = [-1.5, 1, 0]
 normal = [1, 0, 0]
 size = [3, 2]
 )");
-  const Framing framing = frame_scene(scene, 6, [] { return false; });
+  const Result<Framing> framed = frame_scene(scene, 6, [] { return false; });
+  ASSERT_TRUE(framed) << framed.error();
+  const Framing& framing = *framed;
   EXPECT_TRUE(framing.ground.enabled);
   EXPECT_EQ(framing.ground.height, 0.0);
   ASSERT_EQ(framing.quads.size(), 1u);

@@ -213,6 +213,68 @@ TEST_F(RenderCommand, AnOverrideThatBreaksAVideoRuleGivesOneClearError) {
   EXPECT_EQ(image.width, 161);
 }
 
+// The framing pass (the whole run simulated to choose the camera and ground) runs only when the
+// scene leaves one of them open; report.json counts its physics steps.
+TEST_F(RenderCommand, AGivenCameraAndGroundNeedNoFramingPass) {
+  const std::string given = std::string(kScene) +
+                            "[camera]\nposition = [4.0, 3.0, 6.0]\nlook_at = [0.0, 0.0, 0.0]\n" +
+                            "[ground]\nheight = -1.5\n";
+  for (const auto& [name, text] :
+       {std::pair{"given", given}, std::pair{"open", std::string(kScene)}}) {
+    const Outcome run =
+        tumble("render -q --no-video --frames 0:3 " +
+               write(std::string(name) + ".toml", text).string() + " -o " + path(name));
+    ASSERT_EQ(run.exit_code, 0) << name << ": " << run.err;
+  }
+  // 3 frames at 30 frames/s reach t = 2/30 s: 7 steps of 0.01 s. The framing pass of the open
+  // scene runs to its last frame, 14/30 s: 47 steps.
+  EXPECT_NE(read_file(dir_ / "given/spin/report.json")
+                .find("\"physics_steps\": {\"framing\": 0, \"frames\": 7}"),
+            std::string::npos)
+      << read_file(dir_ / "given/spin/report.json");
+  EXPECT_NE(read_file(dir_ / "open/spin/report.json")
+                .find("\"physics_steps\": {\"framing\": 47, \"frames\": 7}"),
+            std::string::npos)
+      << read_file(dir_ / "open/spin/report.json");
+}
+
+// Without a framing pass a render simulates only up to its last frame: a body that blows up
+// later does not stop a render of the frames before.
+TEST_F(RenderCommand, ABlowUpAfterTheLastFrameStopsOnlyARenderThatFramesTheWholeRun) {
+  // k dt = 100 / s × 0.05 s = 5, beyond explicit Euler's limit of 2: it blows up at t = 0.7 s.
+  const std::string stiff = R"(duration = 2.0
+[physics]
+dt = 0.05
+integrator = "euler"
+[[bodies]]
+name = "slab"
+shape = "cube"
+size = 1.0
+mass = 1.0
+velocity = [1.0, 0.0, 0.0]
+[[bodies.forces]]
+kind = "linear_damping"
+coefficient = 100.0
+[render]
+width = 64
+height = 48
+fps = 10
+[output]
+video = false
+)";
+  const std::string framed = stiff +
+                             "[camera]\nposition = [4.0, 3.0, 6.0]\nlook_at = [0.0, 0.0, 0.0]\n" +
+                             "[ground]\nheight = -1.0\n";
+  const Outcome given =
+      tumble("render -q --frames 0:5 " + write("given.toml", framed).string() + " -o " + path("a"));
+  EXPECT_EQ(given.exit_code, 0) << given.err;
+  const Outcome open =
+      tumble("render -q --frames 0:5 " + write("open.toml", stiff).string() + " -o " + path("b"));
+  EXPECT_EQ(open.exit_code, 2) << open.err;
+  EXPECT_NE(open.err.find("body \"slab\" blew up at t = 0.7 s"), std::string::npos) << open.err;
+  EXPECT_FALSE(fs::exists(dir_ / "b"));
+}
+
 // JSON has no infinity: a kinetic energy that leaves double range during the run is null.
 // 1e300 kg at 1e4 m/s has 5e307 J; pushed to 2e4 m/s in half a second it would have 2e308.
 TEST_F(RenderCommand, AnEnergyBeyondDoubleRangeIsNullInTheReport) {

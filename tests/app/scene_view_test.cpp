@@ -68,13 +68,64 @@ TEST(SceneView, FramingTakesInTheAnchorOnlyWhereItIsDrawn) {
   scene::Scene scene = dragged_cube_scene();
   const auto never_stop = [] { return false; };
   // Acting from 0.25 s: the anchor is drawn from (2, 2, 0) up to (2, 4, 0), the cube at the origin.
-  const Framing acting = frame_scene(scene, 60, never_stop);
-  EXPECT_LT((acting.camera.look_at - Vec3(1, 2, 0)).norm(), 1e-12);
+  const Result<Framing> acting = frame_scene(scene, 60, never_stop);
+  ASSERT_TRUE(acting) << acting.error();
+  EXPECT_LT((acting->camera.look_at - Vec3(1, 2, 0)).norm(), 1e-12);
   // Acting only after the last frame: never drawn, so only the cube is framed.
   std::get<physics::Spring>(scene.bodies.front().forces.front()).start = 5.0;
   std::get<physics::Spring>(scene.bodies.front().forces.front()).end = 6.0;
-  const Framing never = frame_scene(scene, 60, never_stop);
-  EXPECT_EQ(never.camera.look_at, Vec3::Zero());
+  const Result<Framing> never = frame_scene(scene, 60, never_stop);
+  ASSERT_TRUE(never) << never.error();
+  EXPECT_EQ(never->camera.look_at, Vec3::Zero());
+}
+
+// The framing pass runs the physics only for what the scene leaves open: the camera's position
+// or look_at, or (with no planes) the ground's height. Counted in physics steps.
+TEST(SceneView, TheFramingPassRunsOnlyWhenTheCameraOrGroundIsLeftOpen) {
+  scene::Scene scene = dragged_cube_scene();
+  scene.camera.position = Vec3(4, 3, 6);
+  scene.camera.look_at = Vec3::Zero();
+  scene.ground_height = -1.0;
+  const auto never_stop = [] { return false; };
+  ASSERT_FALSE(framing_needs_motion(scene));
+  const Result<Framing> given = frame_scene(scene, 60, never_stop);
+  ASSERT_TRUE(given) << given.error();
+  EXPECT_EQ(given->physics_steps, 0);
+  EXPECT_EQ(given->camera.position, Vec3(4, 3, 6));
+  EXPECT_EQ(given->ground.height, -1.0);
+
+  scene::Scene open_ground = scene;
+  open_ground.ground_height.reset();
+  scene::Scene open_look = scene;
+  open_look.camera.look_at.reset();
+  scene::Scene open_position = scene;
+  open_position.camera.position.reset();
+  for (const scene::Scene* open : {&open_ground, &open_look, &open_position}) {
+    EXPECT_TRUE(framing_needs_motion(*open));
+    const Result<Framing> framed = frame_scene(*open, 60, never_stop);
+    ASSERT_TRUE(framed) << framed.error();
+    EXPECT_NEAR(framed->physics_steps, 99, 1);  // to the last frame, 59/60 s, at dt = 0.01 s
+  }
+
+  // With planes the floor is a plane: the camera alone decides.
+  scene::Scene floored = scene;
+  floored.ground_height.reset();
+  scene::PlaneSpec floor;
+  floor.point = Vec3(0, -1, 0);
+  floored.planes.push_back(floor);
+  EXPECT_FALSE(framing_needs_motion(floored));
+  const Result<Framing> on_floor = frame_scene(floored, 60, never_stop);
+  ASSERT_TRUE(on_floor) << on_floor.error();
+  EXPECT_EQ(on_floor->physics_steps, 0);
+  EXPECT_EQ(on_floor->ground.height, -1.0);
+}
+
+// A stop asked for during the framing pass is a returned error, not an exception.
+TEST(SceneView, AStopDuringTheFramingPassIsAnError) {
+  const scene::Scene scene = dragged_cube_scene();
+  const Result<Framing> stopped = frame_scene(scene, 60, [] { return true; });
+  ASSERT_FALSE(stopped);
+  EXPECT_EQ(stopped.error(), "interrupted");
 }
 
 }  // namespace

@@ -1,0 +1,58 @@
+// Where finished frames go: each output of a render is a sink on the frame loop
+// (app/frame_pipeline.hpp), a small object of its own. A new format (WebM, GIF, a contact sheet)
+// is one more sink; the loop does not change.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "common/result.hpp"
+#include "io/image.hpp"
+#include "io/png_io.hpp"
+#include "io/video_encoder.hpp"
+
+namespace tumble::app {
+
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  // Its stage in report.json ("png", "video").
+  virtual const char* stage() const = 0;
+  // Takes frame `frame`. Frames come in increasing order, all from one thread (not necessarily
+  // the one that made the sink). "" or a complete error message, which stops the render.
+  virtual std::string write(std::int64_t frame, const io::Image& image) = 0;
+  // After the last frame: "" once the output is complete, else why it is not.
+  virtual std::string finish() { return {}; }
+};
+
+// frame_00000.png ... in a folder, which it creates.
+class PngFrames final : public FrameSink {
+ public:
+  static Result<std::unique_ptr<FrameSink>> open(const std::string& folder,
+                                                 const io::PngSettings& settings);
+  const char* stage() const override { return "png"; }
+  std::string write(std::int64_t frame, const io::Image& image) override;
+
+ private:
+  PngFrames(std::string folder, const io::PngSettings& settings)
+      : folder_(std::move(folder)), settings_(settings) {}
+  std::string folder_;
+  io::PngSettings settings_;
+};
+
+// An H.264 MP4; unless finished, its destructor removes the partial file.
+class Mp4Video final : public FrameSink {
+ public:
+  static Result<std::unique_ptr<FrameSink>> open(const std::string& path,
+                                                 const io::VideoSettings& settings);
+  const char* stage() const override { return "video"; }
+  std::string write(std::int64_t frame, const io::Image& image) override;
+  std::string finish() override;
+
+ private:
+  explicit Mp4Video(std::unique_ptr<io::VideoEncoder> encoder) : encoder_(std::move(encoder)) {}
+  std::unique_ptr<io::VideoEncoder> encoder_;
+};
+
+}  // namespace tumble::app
