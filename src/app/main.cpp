@@ -17,6 +17,7 @@
 #include "app/render_command.hpp"
 #include "app/simulate_command.hpp"
 #include "io/png_io.hpp"
+#include "render/offscreen_context.hpp"
 #include "scene/limits.hpp"
 
 namespace {
@@ -97,6 +98,11 @@ int main(int argc, char** argv) {
   render_command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
   render_command->add_flag("--serial", render.serial,
                            "Render, write and encode on one thread (slower; same bytes)");
+  std::string backend = "auto";
+  render_command
+      ->add_option("--backend", backend,
+                   "Off-screen OpenGL: osmesa, egl (surfaceless) or auto (OSMesa if built in)")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   std::string png_compression = "fast";
   render_command
       ->add_option("--png-compression", png_compression,
@@ -255,6 +261,10 @@ int main(int argc, char** argv) {
         render.end_frame = range->second;
       }
       render.png = *tumble::io::png_settings_named(png_compression);  // checked by IsMember
+      for (const auto each : {tumble::render::Backend::automatic, tumble::render::Backend::osmesa,
+                              tumble::render::Backend::egl}) {
+        if (backend == tumble::render::backend_name(each)) render.backend = each;
+      }
       return run_render(render, stderr);
     }
     return kExitBadInput;

@@ -123,6 +123,7 @@ Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& optio
                    .directory = directory,
                    .png = options.png,
                    .serial = options.serial,
+                   .backend = options.backend,
                    .shader_directory = std::move(shader_directory)};
 }
 
@@ -143,8 +144,8 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
     return result;
   }
   result.framing_steps = framing->physics_steps;
-  // The automatic back end, and no font: no scene draws text yet.
-  render::RenderSettings settings{scene.render, render::Backend::automatic, std::string()};
+  // No font: no scene draws text yet.
+  render::RenderSettings settings{scene.render, job.backend, std::string()};
   settings.ground = framing->ground;
   const std::unique_ptr<render::Renderer> renderer =
       render::Renderer::create(settings, job.shader_directory, result.error);

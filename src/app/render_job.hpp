@@ -13,6 +13,7 @@
 #include "app/frame_pipeline.hpp"
 #include "common/result.hpp"
 #include "io/png_io.hpp"
+#include "render/offscreen_context.hpp"
 #include "scene/scene.hpp"
 
 namespace tumble::app {
@@ -33,6 +34,7 @@ struct RenderOptions {
   bool verbose = false;
   bool serial = false;  // one thread: the reference the pipelined path must match byte for byte
   io::PngSettings png;  // fast by default; see io/png_io.hpp
+  render::Backend backend = render::Backend::automatic;  // --backend: which off-screen OpenGL
 };
 
 struct RenderJob {
@@ -43,6 +45,7 @@ struct RenderJob {
   std::filesystem::path directory;    // the final folder: output_root / [output] directory
   io::PngSettings png;
   bool serial = false;  // one thread, for comparison (same bytes as the pipeline)
+  render::Backend backend = render::Backend::automatic;
   std::string shader_directory;
 
   // Where the frames and the video go in `folder` (the folder being written, or `directory` in

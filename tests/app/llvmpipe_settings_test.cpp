@@ -60,5 +60,29 @@ TEST_F(LlvmpipeSettings, GiveTheDefaultRunsFramesByteForByte) {
   }
 }
 
+// --backend picks the off-screen OpenGL; report.json names the one that drew, and OSMesa's and
+// EGL's frames are the same bytes.
+TEST_F(LlvmpipeSettings, BackendOptionChoosesTheOffscreenOpenGLAndTheFramesAgree) {
+  write("scene.toml", cube_in_a_box(false));
+  std::string frames[2];
+  const char* names[2] = {"osmesa", "egl"};
+  const char* says[2] = {"(OSMesa)", "(EGL surfaceless)"};
+  for (int i = 0; i < 2; ++i) {
+    const Outcome outcome =
+        tumble("render " + path("scene.toml") + " -o " + path(names[i]) +
+               " --width 320 --height 180 --frames 20:21 --no-video -q" + " --backend " + names[i]);
+    ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+    const fs::path folder = fs::path(path(names[i])) / "cube_in_a_box";
+    EXPECT_NE(read_file(folder / "report.json").find(says[i]), std::string::npos);
+    frames[i] = read_file(folder / "frames" / "frame_00020.png");
+  }
+  EXPECT_GT(frames[0].size(), 1000u);
+  EXPECT_TRUE(frames[0] == frames[1]);
+  const Outcome bad = tumble("render " + path("scene.toml") + " --backend vulkan");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--backend: vulkan not in {auto,osmesa,egl}"), std::string::npos)
+      << bad.err;
+}
+
 }  // namespace
 }  // namespace tumble::testing
