@@ -13,12 +13,14 @@
 #include "io/image_diff.hpp"
 #include "io/png_io.hpp"
 #include "render/geometry.hpp"
+#include "support/render_golden.hpp"
 
 namespace tumble::render {
 namespace {
 
-const std::string kShaders = std::string(TUMBLE_SOURCE_DIR) + "/shaders";
-const std::string kGoldens = std::string(TUMBLE_SOURCE_DIR) + "/tests/render/golden/";
+using testing::draw;
+using testing::kGoldens;
+using testing::kShaders;
 
 // Same machine, same Mesa: renders are bit-identical (see DrawingTwiceIsByteIdentical). The
 // tolerance absorbs another Mesa or LLVM version rounding a shading or rasterisation decision
@@ -42,28 +44,8 @@ FrameView cube_view(const Quat& orientation) {
   return view;
 }
 
-io::Image draw(const RenderSettings& settings, const FrameView& view) {
-  std::string error;
-  const auto renderer = Renderer::create(settings, kShaders, error);
-  EXPECT_TRUE(renderer) << error;
-  io::Image image;
-  if (renderer) renderer->draw(view, image);
-  return image;
-}
-
 void expect_matches_golden(const io::Image& image, const std::string& name) {
-  const std::string path = kGoldens + name + ".png";
-  if (std::getenv("TUMBLE_UPDATE_GOLDEN")) {
-    ASSERT_EQ(io::write_png(path, image, {.compression_level = 9, .filter = true}), "");
-    GTEST_SKIP() << "wrote " << path;
-  }
-  io::Image golden;
-  ASSERT_EQ(io::read_png(path, golden), "");
-  ASSERT_EQ(golden.width, image.width);
-  ASSERT_EQ(golden.height, image.height);
-  const io::DiffResult diff = io::compare_images(golden, image, kGoldenTolerance);
-  EXPECT_TRUE(diff.match) << name << ": " << diff.differing_pixels << " pixels differ, largest "
-                          << diff.max_channel_difference << ", rms " << diff.rms;
+  testing::expect_matches_golden(image, name, kGoldenTolerance);
 }
 
 TEST(Renderer, CubeAtRestMatchesGolden) {

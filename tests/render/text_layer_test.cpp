@@ -13,12 +13,14 @@
 #include "io/png_io.hpp"
 #include "render/renderer.hpp"
 #include "render/utf8.hpp"
+#include "support/render_golden.hpp"
 
 namespace tumble::render {
 namespace {
 
-const std::string kShaders = std::string(TUMBLE_SOURCE_DIR) + "/shaders";
-const std::string kGoldens = std::string(TUMBLE_SOURCE_DIR) + "/tests/render/golden/";
+using testing::draw;
+using testing::kGoldens;
+using testing::kShaders;
 
 // Same machine, same Mesa and FreeType: bit-identical (DrawingTextTwiceIsByteIdentical). The
 // tolerance is the scene goldens' (renderer_test.cpp): 8 of 255 per channel, and 1% of the
@@ -72,28 +74,8 @@ FrameView overlay_view() {
   return view;
 }
 
-io::Image draw(const RenderSettings& settings, const FrameView& view) {
-  std::string error;
-  const auto renderer = Renderer::create(settings, kShaders, error);
-  EXPECT_TRUE(renderer) << error;
-  io::Image image;
-  if (renderer) renderer->draw(view, image);
-  return image;
-}
-
 void expect_matches_golden(const io::Image& image, const std::string& name) {
-  const std::string path = kGoldens + name + ".png";
-  if (std::getenv("TUMBLE_UPDATE_GOLDEN")) {
-    ASSERT_EQ(io::write_png(path, image, {.compression_level = 9, .filter = true}), "");
-    GTEST_SKIP() << "wrote " << path;
-  }
-  io::Image golden;
-  ASSERT_EQ(io::read_png(path, golden), "");
-  ASSERT_EQ(golden.width, image.width);
-  ASSERT_EQ(golden.height, image.height);
-  const io::DiffResult diff = io::compare_images(golden, image, golden_tolerance(image));
-  EXPECT_TRUE(diff.match) << name << ": " << diff.differing_pixels << " pixels differ, largest "
-                          << diff.max_channel_difference << ", rms " << diff.rms;
+  testing::expect_matches_golden(image, name, golden_tolerance(image));
 }
 
 TEST(TextLayer, OverlaysMatchGoldenAt320x180) {
