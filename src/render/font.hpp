@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "render/result.hpp"
+#include "common/result.hpp"
 
 struct FT_LibraryRec_;  // FreeType's handles (FT_Library, FT_Face), kept out of this header
 struct FT_FaceRec_;

@@ -19,10 +19,10 @@
 #include <string_view>
 #include <vector>
 
+#include "common/result.hpp"
 #include "render/font.hpp"
 #include "render/frame.hpp"
 #include "render/glyph_atlas.hpp"
-#include "render/result.hpp"
 #include "render/shader_program.hpp"
 #include "render/text_layout.hpp"
 

@@ -7,10 +7,10 @@
 #include <string_view>
 #include <vector>
 
+#include "common/result.hpp"
 #include "render/font.hpp"
 #include "render/frame.hpp"
 #include "render/pixel_box.hpp"
-#include "render/result.hpp"
 
 namespace tumble::render {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "render/result.hpp"
+#include "common/result.hpp"
 
 namespace tumble::render {
 
