@@ -8,15 +8,12 @@
 #include <string>
 
 #include "render/utf8.hpp"
+#include "support/default_font.hpp"
 
 namespace tumble::render {
 namespace {
 
-std::unique_ptr<Font> default_font() {
-  Result<std::unique_ptr<Font>> font = Font::open(kDefaultFontFamily);
-  EXPECT_TRUE(font) << font.error();
-  return font ? std::move(font).value() : nullptr;
-}
+using testing::default_font;
 
 // The symbols issue 13 names: ω τ θ Δ ² · → ≈ °.
 const std::u32string kPhysicsSymbols = {0x3C9, 0x3C4,  0x3B8,  0x394, 0xB2,

@@ -1,4 +1,5 @@
 #include "render/glyph_atlas.hpp"
+#include "support/default_font.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,11 +8,7 @@
 namespace tumble::render {
 namespace {
 
-std::unique_ptr<Font> default_font() {
-  Result<std::unique_ptr<Font>> font = Font::open(kDefaultFontFamily);
-  EXPECT_TRUE(font) << font.error();
-  return font ? std::move(font).value() : nullptr;
-}
+using testing::default_font;
 
 // The atlas texels under a glyph's place.
 std::vector<std::uint8_t> texels_of(const GlyphAtlas& atlas, const AtlasGlyph& glyph) {

@@ -1,4 +1,5 @@
 #include "render/text_layout.hpp"
+#include "support/default_font.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +9,7 @@
 namespace tumble::render {
 namespace {
 
-std::unique_ptr<Font> default_font() {
-  Result<std::unique_ptr<Font>> font = Font::open(kDefaultFontFamily);
-  EXPECT_TRUE(font) << font.error();
-  return font ? std::move(font).value() : nullptr;
-}
+using testing::default_font;
 
 Text live_value(Anchor anchor) {
   Text text;
