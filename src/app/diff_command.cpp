@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <string>
 
 #include "app/diff_inputs.hpp"
 #include "app/diff_outputs.hpp"
@@ -163,13 +164,30 @@ int diff_sequences(const DiffCommandOptions& options, const SequenceOptions& set
 
 }  // namespace
 
-int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err) {
+Result<SequenceOptions> diff_settings(const DiffCommandOptions& options) {
   SequenceOptions settings;
   if (std::string error = criteria_from(options, settings.criteria); !error.empty()) {
-    std::fprintf(err, "tumble: %s\n", error.c_str());
-    return kExitBadInput;
+    return Error{error};
   }
   settings.keep_images = !options.report.empty();
+  if (options.frames) {
+    const auto [first_frame, end_frame] = *options.frames;
+    if (first_frame < 0 || end_frame <= first_frame) {
+      return Error{"--frames: expected A:B with 0 <= A < B, got " + std::to_string(first_frame) +
+                   ":" + std::to_string(end_frame)};
+    }
+    settings.first_frame = first_frame;
+    settings.end_frame = end_frame;
+  }
+  return settings;
+}
+
+int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err) {
+  const Result<SequenceOptions> settings = diff_settings(options);
+  if (!settings) {
+    std::fprintf(err, "tumble: %s\n", settings.error().c_str());
+    return kExitBadInput;
+  }
   const bool images = names_png(options.first_path) || names_png(options.second_path);
   if (images && options.frames) {
     std::fprintf(err, "tumble: --frames selects frames of folders and videos, not of two PNGs\n");
@@ -181,18 +199,8 @@ int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err) 
                  "use --report FOLDER\n");
     return kExitBadInput;
   }
-  if (options.frames) {
-    const auto [first_frame, end_frame] = *options.frames;
-    if (first_frame < 0 || end_frame <= first_frame) {
-      std::fprintf(err, "tumble: --frames: expected A:B with 0 <= A < B, got %lld:%lld\n",
-                   first_frame, end_frame);
-      return kExitBadInput;
-    }
-    settings.first_frame = first_frame;
-    settings.end_frame = end_frame;
-  }
-  return images ? diff_images(options, settings, out, err)
-                : diff_sequences(options, settings, out, err);
+  return images ? diff_images(options, *settings, out, err)
+                : diff_sequences(options, *settings, out, err);
 }
 
 }  // namespace tumble::app

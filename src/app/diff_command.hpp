@@ -8,7 +8,9 @@
 #include <string>
 #include <utility>
 
+#include "app/diff_run.hpp"
 #include "app/exit_codes.hpp"
+#include "common/result.hpp"
 
 namespace tumble::app {
 
@@ -26,6 +28,11 @@ struct DiffCommandOptions {
   std::string junit;   // JUnit XML file; empty for none
   std::string json;    // JSON file with every figure; empty for none
 };
+
+// The options checked (metric, threshold in its unit, pixel limits, frame range) as the criteria
+// of a comparison: the error names the option. run_diff starts with it; `render --golden` calls
+// it before rendering, so a bad option costs no render.
+Result<SequenceOptions> diff_settings(const DiffCommandOptions& options);
 
 // Prints figures to `out` (one line for two PNGs; for sequences a line per failing frame and a
 // summary) and messages to `err`. Returns kExitOk when everything matches, kExitMismatch when

@@ -203,9 +203,11 @@ std::string produce_by_name(const DiffInput& first, const DiffInput& second,
     Job job{index++, name, {}, {}};
     job.first.present = in_first.count(name) == 1;
     job.second.present = in_second.count(name) == 1;
-    diff.first_count += job.first.present;  // up to the end of the range, as for videos
-    diff.second_count += job.second.present;
     if (job.index < options.first_frame) continue;
+    // Within the range only: a render of frames A..B-1 holds none before A, and matches a
+    // whole render over its range.
+    diff.first_count += job.first.present;
+    diff.second_count += job.second.present;
     if (job.first.present) job.first.file = first.folder + "/" + name;
     if (job.second.present) job.second.file = second.folder + "/" + name;
     if (!jobs.push(std::move(job))) break;

@@ -55,7 +55,8 @@ struct SequenceDiff {
   std::string error;                 // why the inputs could not be read (exit 2), else ""
   std::vector<FrameOutcome> frames;  // in frame order
   std::vector<KeptFrame> worst;      // failing compared frames, worst first, at most 10
-  std::int64_t first_count = 0;      // frames of each input read, up to the end of the range
+  // Frames of each input: two folders', within the range; others', up to the range's end.
+  std::int64_t first_count = 0;
   std::int64_t second_count = 0;
   bool match() const;  // every frame matched and the counts agree
 };

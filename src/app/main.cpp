@@ -7,6 +7,7 @@
 #include <cstring>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "app/bench_command.hpp"
 #include "app/bench_contact.hpp"
@@ -55,6 +56,49 @@ const CLI::Validator kNotEmpty(
       return value.empty() ? std::string("expected a name, got \"\"") : "";
     },
     "NAME");
+
+// How frames are compared and what is written of the comparison: `tumble diff` and
+// `tumble render --golden` take the same options. Returns --ignore-antialiasing, whose default
+// depends on the metric (applied when it was not given). With `needs`, each is refused without it.
+CLI::Option* add_comparison_options(CLI::App* command, tumble::app::DiffCommandOptions& diff,
+                                    bool& ignore_antialiasing, CLI::Option* needs = nullptr) {
+  const std::size_t before = command->get_options().size();
+  command
+      ->add_option("--metric", diff.metric,
+                   "max (channel levels), rms (levels), perceptual (YIQ distance 0-1, as "
+                   "pixelmatch), ssim (0-1) or psnr (dB)")
+      ->check(CLI::IsMember({"max", "rms", "perceptual", "ssim", "psnr"}))
+      ->capture_default_str();
+  command->add_option(
+      "--threshold", diff.threshold,
+      "In the metric's unit: a pixel differs beyond it (max: 0-255, default 0; perceptual: 0-1, "
+      "default 0.1); a frame differs beyond it (rms: 0-255, default 1; ssim below it: 0-1, "
+      "default 0.99; psnr below it: dB, default 40)");
+  CLI::Option* antialiasing = command->add_flag(
+      "--ignore-antialiasing,!--count-antialiasing", ignore_antialiasing,
+      "Do not count pixels on anti-aliased edges (Vyšniauskas 2009, as pixelmatch); default on "
+      "for perceptual only");
+  CLI::Option* max_pixels =
+      command
+          ->add_option("--max-pixels", diff.max_pixels,
+                       "A frame matches when at most this many pixels differ (default 0)")
+          ->check(whole_number_in(0, LLONG_MAX, ">= 0"));
+  command
+      ->add_option("--max-percent", diff.max_percent,
+                   "A frame matches when at most this share of its pixels differ (%)")
+      ->check(CLI::Range(0.0, 100.0))
+      ->excludes(max_pixels);
+  command
+      ->add_option("--report", diff.report,
+                   "Write an HTML report (index.html and images) into this folder")
+      ->check(kNotEmpty);
+  command->add_option("--junit", diff.junit, "Write JUnit XML, one test case per frame")
+      ->check(kNotEmpty);
+  command->add_option("--json", diff.json, "Write every figure as JSON")->check(kNotEmpty);
+  const std::vector<CLI::Option*> added = command->get_options();
+  for (std::size_t i = before; needs && i < added.size(); ++i) added[i]->needs(needs);
+  return antialiasing;
+}
 
 }  // namespace
 
@@ -110,6 +154,17 @@ int main(int argc, char** argv) {
                    "small (zlib 9, adaptive filter)")
       ->check(CLI::IsMember({"fast", "default", "small"}))
       ->capture_default_str();
+  DiffCommandOptions golden;
+  CLI::Option* golden_option =
+      render_command
+          ->add_option(
+              "--golden", golden.first_path,
+              "Then compare the render with this golden render (its folder, a folder of "
+              "frames or a video) as `tumble diff` does: exit 0 match, 1 mismatch, 2 error")
+          ->check(kNotEmpty);
+  bool golden_antialiasing = false;
+  CLI::Option* golden_antialiasing_option =
+      add_comparison_options(render_command, golden, golden_antialiasing, golden_option);
 
   DiffCommandOptions diff;
   std::string diff_frames;
@@ -121,43 +176,12 @@ int main(int argc, char** argv) {
       ->required();
   diff_command->add_option("second", diff.second_path, "B, the actual: PNG, folder or video")
       ->required();
-  diff_command
-      ->add_option("--metric", diff.metric,
-                   "max (channel levels), rms (levels), perceptual (YIQ distance 0-1, as "
-                   "pixelmatch), ssim (0-1) or psnr (dB)")
-      ->check(CLI::IsMember({"max", "rms", "perceptual", "ssim", "psnr"}))
-      ->capture_default_str();
-  diff_command->add_option(
-      "--threshold", diff.threshold,
-      "In the metric's unit: a pixel differs beyond it (max: 0-255, default 0; perceptual: 0-1, "
-      "default 0.1); a frame differs beyond it (rms: 0-255, default 1; ssim below it: 0-1, "
-      "default 0.99; psnr below it: dB, default 40)");
   bool diff_antialiasing = false;
-  CLI::Option* antialiasing = diff_command->add_flag(
-      "--ignore-antialiasing,!--count-antialiasing", diff_antialiasing,
-      "Do not count pixels on anti-aliased edges (Vyšniauskas 2009, as pixelmatch); default on "
-      "for perceptual only");
-  CLI::Option* max_pixels =
-      diff_command
-          ->add_option("--max-pixels", diff.max_pixels,
-                       "A frame matches when at most this many pixels differ (default 0)")
-          ->check(whole_number_in(0, LLONG_MAX, ">= 0"));
-  diff_command
-      ->add_option("--max-percent", diff.max_percent,
-                   "A frame matches when at most this share of its pixels differ (%)")
-      ->check(CLI::Range(0.0, 100.0))
-      ->excludes(max_pixels);
+  CLI::Option* antialiasing = add_comparison_options(diff_command, diff, diff_antialiasing);
   diff_command->add_option("--frames", diff_frames, "Compare frames A to B-1 only (A:B)")
       ->check(kNotEmpty);
   diff_command->add_option("--out", diff.out, "Two PNGs: write an image of the differences here")
       ->check(kNotEmpty);
-  diff_command
-      ->add_option("--report", diff.report,
-                   "Write an HTML report (index.html and images) into this folder")
-      ->check(kNotEmpty);
-  diff_command->add_option("--junit", diff.junit, "Write JUnit XML, one test case per frame")
-      ->check(kNotEmpty);
-  diff_command->add_option("--json", diff.json, "Write every figure as JSON")->check(kNotEmpty);
 
   CLI::App* bench_command = app.add_subcommand("bench", "Measure tumble's speed");
   bench_command->require_subcommand(1);
@@ -265,7 +289,14 @@ int main(int argc, char** argv) {
                               tumble::render::Backend::egl}) {
         if (backend == tumble::render::backend_name(each)) render.backend = each;
       }
-      return run_render(render, stderr);
+      std::optional<DiffCommandOptions> compare;
+      if (!golden.first_path.empty()) {
+        if (golden_antialiasing_option->count() > 0) {
+          golden.ignore_antialiasing = golden_antialiasing;
+        }
+        compare = golden;
+      }
+      return run_render(render, compare, stdout, stderr);
     }
     return kExitBadInput;
   };

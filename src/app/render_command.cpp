@@ -13,6 +13,7 @@
 #include "app/json_text.hpp"
 #include "app/output_folder.hpp"
 #include "app/progress.hpp"
+#include "app/render_golden.hpp"
 #include "app/render_job.hpp"
 #include "app/stability_report.hpp"
 #include "io/atomic_file.hpp"
@@ -93,7 +94,8 @@ std::string write_text_file(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-int run_render(const RenderOptions& options, std::FILE* err) {
+int run_render(const RenderOptions& options, const std::optional<DiffCommandOptions>& golden,
+               std::FILE* out, std::FILE* err) {
   const auto start = Clock::now();
   install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
@@ -107,6 +109,12 @@ int run_render(const RenderOptions& options, std::FILE* err) {
     return kExitBadInput;
   }
   const RenderJob& job = *made;
+  if (golden) {
+    if (const std::string problem = golden_problem(*golden, job); !problem.empty()) {
+      std::fprintf(err, "tumble: %s\n", problem.c_str());
+      return kExitBadInput;
+    }
+  }
   if (!options.quiet) print_stability_warnings(job.scene, err);
 
   // Everything is written into a hidden folder beside the final one and swapped in at the end:
@@ -166,7 +174,7 @@ int run_render(const RenderOptions& options, std::FILE* err) {
                  static_cast<long long>(count), total_seconds,
                  static_cast<double>(count) / total_seconds, shown.c_str());
   }
-  return kExitOk;
+  return golden ? compare_with_golden(*golden, job, out, err) : kExitOk;
 }
 
 }  // namespace tumble::app

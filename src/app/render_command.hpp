@@ -2,12 +2,17 @@
 #pragma once
 
 #include <cstdio>
+#include <optional>
 
-#include "app/render_job.hpp"  // RenderOptions
+#include "app/diff_command.hpp"  // DiffCommandOptions
+#include "app/render_job.hpp"    // RenderOptions
 
 namespace tumble::app {
 
-// Runs the command; progress and messages go to `err`. Returns the process exit code.
-int run_render(const RenderOptions& options, std::FILE* err);
+// Runs the command; progress and messages go to `err`. With `golden` (--golden DIR and the diff
+// options), the finished render is then compared with DIR (app/render_golden.hpp), whose figures
+// go to `out`. Returns the process exit code.
+int run_render(const RenderOptions& options, const std::optional<DiffCommandOptions>& golden,
+               std::FILE* out, std::FILE* err);
 
 }  // namespace tumble::app

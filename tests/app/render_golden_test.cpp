@@ -1,0 +1,120 @@
+// End-to-end tests of `tumble render --golden DIR`: a render compared with a stored golden render
+// in one step, with `tumble diff`'s exit codes and outputs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "support/command_test.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using tumble::testing::Outcome;
+using tumble::testing::read_file;
+
+// Half a second at 30 frames/s of a cube spinning about a tilted axis: 15 small frames.
+constexpr const char* kBody = R"(name = "spin"
+duration = 0.5
+[physics]
+dt = 0.01
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+angular_velocity = [0.0, 2.0, 1.0]
+)";
+constexpr const char* kPicture = R"([render]
+width = 160
+height = 120
+fps = 30
+)";
+// The same cube turned 1° more about y at the start: q = (cos 0.5°, 0, sin 0.5°, 0).
+constexpr const char* kTurned =
+    "orientation = [0.99996192306417131, 0.0, 0.0087265354983739347, 0.0]\n";
+
+class RenderGolden : public tumble::testing::CommandTest {
+ protected:
+  void SetUp() override {
+    CommandTest::SetUp();
+    scene_ = write("spin.toml", std::string(kBody) + kPicture).string();
+    turned_ = write("turned.toml", std::string(kBody) + kTurned + kPicture).string();
+    const Outcome golden = tumble("render -q " + scene_ + " -o " + path("golden"));
+    ASSERT_EQ(golden.exit_code, 0) << golden.err;
+  }
+  std::string golden() const { return path("golden") + "/spin"; }
+  std::string scene_, turned_;
+};
+
+TEST_F(RenderGolden, ARenderMatchesTheGoldenItWasMadeAs) {
+  const Outcome run = tumble("render -q " + scene_ + " -o " + path("actual") + " --golden " +
+                             golden() + " --json " + path("figures.json"));
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_TRUE(run.out.starts_with("match: 0 of 15 frames differ")) << run.out;
+  EXPECT_TRUE(fs::exists(path("actual") + "/spin/frames/frame_00014.png"));
+  EXPECT_NE(read_file(path("figures.json")).find(",\n  \"match\": true,"), std::string::npos);
+}
+
+TEST_F(RenderGolden, ACubeTurnedOneDegreeMoreFailsWithAReportAndJUnit) {
+  const Outcome run =
+      tumble("render -q " + turned_ + " -o " + path("actual") + " --golden " + golden() +
+             " --metric perceptual --report " + path("report") + " --junit " + path("junit.xml"));
+  EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
+  EXPECT_NE(run.out.find("mismatch: 15 of 15 frames differ"), std::string::npos) << run.out;
+  EXPECT_TRUE(fs::exists(path("report") + "/index.html"));
+  // Every frame shows the turned cube: each of the 15 test cases fails.
+  const std::string junit = read_file(path("junit.xml"));
+  EXPECT_NE(junit.find("tests=\"15\" failures=\"15\""), std::string::npos) << junit;
+  // The render itself is complete: a mismatch is the golden's verdict, not a failed render.
+  EXPECT_TRUE(fs::exists(path("actual") + "/spin/spin.mp4"));
+}
+
+TEST_F(RenderGolden, AFrameRangeIsComparedOverItsFramesOnly) {
+  const Outcome run = tumble("render -q --frames 5:8 " + scene_ + " -o " + path("actual") +
+                             " --golden " + golden());
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_TRUE(run.out.starts_with("match: 0 of 3 frames differ")) << run.out;
+}
+
+TEST_F(RenderGolden, ARenderWithoutFramesComparesItsVideo) {
+  const Outcome run = tumble("render -q --no-frames " + scene_ + " -o " + path("actual") +
+                             " --golden " + golden() + "/spin.mp4 --metric max --threshold 0");
+  EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_TRUE(run.out.starts_with("match: 0 of 15 frames differ")) << run.out;
+}
+
+TEST_F(RenderGolden, AGoldenInTheFolderTheRenderReplacesIsRefusedBeforeRendering) {
+  const std::string before = read_file(golden() + "/frames/frame_00003.png");
+  const Outcome run =
+      tumble("render -q " + turned_ + " -o " + path("golden") + " --golden " + golden());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("the folder this render replaces"), std::string::npos) << run.err;
+  EXPECT_EQ(read_file(golden() + "/frames/frame_00003.png"), before);
+}
+
+TEST_F(RenderGolden, AMissingGoldenOrABadOptionIsAnErrorBeforeRendering) {
+  Outcome run =
+      tumble("render -q " + scene_ + " -o " + path("actual") + " --golden " + path("nowhere"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find(path("nowhere") + ": no such file or folder"), std::string::npos)
+      << run.err;
+  run = tumble("render -q " + scene_ + " -o " + path("actual") + " --golden " + golden() +
+               " --metric rms --max-pixels 3");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--max-pixels"), std::string::npos) << run.err;
+  run = tumble("render -q " + scene_ + " -o " + path("actual") + " --golden " + golden() +
+               "/frames/frame_00000.png");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("not one PNG"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(path("actual")));
+}
+
+TEST_F(RenderGolden, ComparisonOptionsNeedAGolden) {
+  const Outcome run =
+      tumble("render -q " + scene_ + " -o " + path("actual") + " --metric perceptual");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--golden"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(path("actual")));
+}
+
+}  // namespace
