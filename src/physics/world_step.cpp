@@ -712,14 +712,6 @@ void settle(std::span<const BodyModel> models, double dt, int islands, WorldCont
   }
 }
 
-// Whether two bodies of the world can touch each other: if not, every body touching planes is
-// an island of its own, and the step needs no broad phase and no islands.
-bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& settings) {
-  if (!settings.collide_bodies) return false;
-  return std::count_if(models.begin(), models.end(),
-                       [](const BodyModel& model) { return model.collides; }) >= 2;
-}
-
 // step_world for a world in which no two bodies can touch: each body's step among the planes
 // (step_with_planes), and its sleep, exactly as its island of one would have them.
 void step_bodies_alone(Integrator integrator, std::span<const BodyModel> models,
@@ -754,6 +746,12 @@ void step_bodies_alone(Integrator integrator, std::span<const BodyModel> models,
 }
 
 }  // namespace
+
+bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& settings) {
+  if (!settings.collide_bodies) return false;
+  return std::count_if(models.begin(), models.end(),
+                       [](const BodyModel& model) { return model.collides; }) >= 2;
+}
 
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t, double dt,
