@@ -675,6 +675,24 @@ double point_speed_bound(const BodyState& state, const Vec3& half_size) {
   return state.velocity().norm() + state.angular_velocity().norm() * half_size.norm();
 }
 
+// Adds dt (s) to the body's time still if it ended the step still, else restarts it; returns
+// whether it has been still for kTimeToSleep and may sleep.
+bool still_long_enough(const BodyModel& model, const BodyState& end, double dt, double& still_for) {
+  const bool still = point_speed_bound(end, model.half_size) < kSleepSpeed;
+  still_for = still ? still_for + dt : 0.0;
+  return still_for >= kTimeToSleep && can_sleep(model);
+}
+
+// Puts the body to sleep at rest where it stands.
+void fall_asleep(const BodyModel& model, std::size_t i, WorldContacts& contacts,
+                 std::span<BodyState> out) {
+  PrimaryState rest = out[i].primary();
+  rest.momentum.setZero();
+  rest.angular_momentum.setZero();
+  out[i] = BodyState(rest, model.constants);
+  contacts.asleep[i] = 1;
+}
+
 // After the islands' solves: each awake body's time still, and an island whose bodies have all
 // been still for kTimeToSleep (and may sleep) put to sleep at rest where it stands.
 void settle(std::span<const BodyModel> models, double dt, int islands, WorldContacts& contacts,
@@ -687,22 +705,53 @@ void settle(std::span<const BodyModel> models, double dt, int islands, WorldCont
     const auto members = members_of(island, contacts);
     bool sleeps = true;
     for (const std::uint32_t i : members) {
-      const bool still = point_speed_bound(out[i], models[i].half_size) < kSleepSpeed;
-      contacts.still_for[i] = still ? contacts.still_for[i] + dt : 0.0;
-      sleeps = sleeps && contacts.still_for[i] >= kTimeToSleep && can_sleep(models[i]);
+      sleeps = still_long_enough(models[i], out[i], dt, contacts.still_for[i]) && sleeps;
     }
     if (!sleeps) continue;
-    for (const std::uint32_t i : members) {
-      PrimaryState rest = out[i].primary();
-      rest.momentum.setZero();
-      rest.angular_momentum.setZero();
-      out[i] = BodyState(rest, models[i].constants);
-      contacts.asleep[i] = 1;
+    for (const std::uint32_t i : members) fall_asleep(models[i], i, contacts, out);
+  }
+}
+
+// step_world for a world in which no two bodies can touch: each body's step among the planes
+// (step_with_planes), and its sleep, exactly as its island of one would have them.
+void step_bodies_alone(Integrator integrator, std::span<const BodyModel> models,
+                       std::span<const BodyState> in, double t, double dt,
+                       const std::vector<Plane>& planes, const ContactSettings& settings,
+                       WorldContacts& contacts, std::span<BodyState> out) {
+  contacts.planes.resize(in.size());
+  contacts.pairs.clear();
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    if (contacts.asleep[i]) {  // nothing can wake it: only another body could
+      out[i] = in[i];
+      continue;
+    }
+    bool touching = false;
+    if (planes.empty()) {
+      out[i] = step(integrator, models[i], in[i], t, dt);
+    } else {
+      PlaneAdvance advance = advance_among_planes(integrator, models[i], in[i], t, dt, planes,
+                                                  settings, contacts.planes[i]);
+      touching = advance.touching;
+      out[i] = touching ? rest_on_planes(integrator, models[i], advance, planes, settings,
+                                         contacts.planes[i])
+                        : std::move(advance.end);
+    }
+    if (!settings.sleep) continue;
+    if (!touching) {
+      contacts.still_for[i] = 0.0;
+    } else if (still_long_enough(models[i], out[i], dt, contacts.still_for[i])) {
+      fall_asleep(models[i], i, contacts, out);
     }
   }
 }
 
 }  // namespace
+
+bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& settings) {
+  if (!settings.collide_bodies) return false;
+  return std::count_if(models.begin(), models.end(),
+                       [](const BodyModel& model) { return model.collides; }) >= 2;
+}
 
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t, double dt,
@@ -710,6 +759,10 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
                 WorldContacts& contacts, std::span<BodyState> out) {
   contacts.asleep.resize(in.size(), 0);
   contacts.still_for.resize(in.size(), 0.0);
+  if (!pairs_possible(models, settings)) {
+    step_bodies_alone(integrator, models, in, t, dt, planes, settings, contacts, out);
+    return;
+  }
   advance_bodies(integrator, models, in, t, dt, planes, settings, contacts);
   contacts.reaches.resize(in.size());
   for (std::size_t i = 0; i < in.size(); ++i) {

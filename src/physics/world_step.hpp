@@ -114,6 +114,10 @@ struct WorldContacts {
   std::vector<char> asleep;
 };
 
+// Whether two of the bodies can touch each other: both collide (BodyModel::collides), and
+// settings.collide_bodies. If not, every body touching planes is an island of its own.
+bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& settings);
+
 // Advances every body from `in` at t to t + dt (s) into `out`: the free steps, impacts with the
 // planes at their times (plane_contact_step.hpp), then every touching pair of bodies (found by
 // sweep and prune and the box-box narrow phase at the start of the step, with speculative points
@@ -124,7 +128,10 @@ struct WorldContacts {
 // from the start of the step (physics/substep_island.hpp), finding fast pairs' points again
 // before each. Bodies collide when settings.collide_bodies and both models' `collides` say so.
 // With settings.sleep, still islands sleep (kSleepSpeed). A world where nothing touches gives
-// exactly each body's free step.
+// exactly each body's free step. A world in which no two bodies can touch (fewer than two that
+// collide, or settings.collide_bodies false) steps each body alone among the planes, as its
+// island of one would be, with no broad phase and no islands: a scene of one box pays for
+// neither.
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t /* s */, double dt /* s */,
                 const std::vector<Plane>& planes, const ContactSettings& settings,

@@ -1,6 +1,5 @@
 #include "sim/simulation.hpp"
 
-#include <algorithm>
 #include <cassert>
 #include <cstdio>
 #include <utility>
@@ -22,10 +21,8 @@ Simulation::Simulation(std::vector<physics::BodyModel> models,
       contact_(contact) {
   assert(models_.size() == current_.size());
   assert(dt_ > 0.0);
-  const auto colliding = std::count_if(models_.begin(), models_.end(),
-                                       [](const physics::BodyModel& m) { return m.collides; });
   world_step_ = contact_.method == physics::ContactMethod::impulse &&
-                (!planes_.empty() || (contact_.collide_bodies && colliding >= 2));
+                (!planes_.empty() || physics::pairs_possible(models_, contact_));
 }
 
 namespace {

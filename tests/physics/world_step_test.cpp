@@ -378,6 +378,34 @@ TEST(WorldStep, AStillBoxSleepsAndABoxLandingOnItWakesIt) {
   EXPECT_NEAR(sleeping[1].position().y(), 1.5, 1e-3);  // stacked
 }
 
+// A world in which no two bodies can touch steps each body alone, without islands: a cube
+// thrown spinning onto the floor (impacts, sliding, rest, sleep) steps to the same bits, and
+// falls asleep at the same step, as the same cube beside another far away, whose world finds
+// pairs and islands.
+TEST(WorldStep, ABodyAloneStepsAsItsIslandOfOneWould) {
+  const BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 0.3, .friction = 0.5}, true);
+  const BodyState thrown =
+      at_rest(cube, Vec3(0.0, 2.0, 0.0), Vec3(3.0, 0.0, 1.0),
+              Quat(Eigen::AngleAxisd(0.7, Vec3(1.0, 0.3, 0.2).normalized())), Vec3(2.0, 1.0, -3.0));
+  World alone, beside;
+  alone.models = {cube};
+  alone.states = {thrown};
+  beside.models = {cube, cube};
+  beside.states = {thrown, at_rest(cube, Vec3(100.0, 0.5, 0.0))};
+  bool slept = false;
+  while (alone.time < 4.0) {
+    alone.step();
+    beside.step();
+    ASSERT_EQ(alone.states[0].position(), beside.states[0].position()) << alone.time;
+    ASSERT_EQ(alone.states[0].momentum(), beside.states[0].momentum()) << alone.time;
+    ASSERT_EQ(alone.states[0].orientation().coeffs(), beside.states[0].orientation().coeffs());
+    ASSERT_EQ(alone.states[0].angular_momentum(), beside.states[0].angular_momentum());
+    ASSERT_EQ(alone.asleep(0), beside.asleep(0)) << alone.time;
+    slept = slept || alone.asleep(0);
+  }
+  EXPECT_TRUE(slept);  // the run reached the sleeping part
+}
+
 // A body with a law that switches on in time never sleeps, for nothing else would wake it when
 // the push comes: its run is the same to the bit with sleeping on or off.
 TEST(WorldStep, ATimedPushKeepsItsBodyAwake) {
