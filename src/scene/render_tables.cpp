@@ -26,6 +26,8 @@ void read_render(TableReader& in, Scene& scene) {
   }
   r.background = in.optional_color("background", r.background);
   r.shadows = in.optional_bool("shadows", r.shadows);
+  scene.font = in.optional_string("font", scene.font);
+  if (in.has("font") && scene.font.empty()) in.fail("font", "expected a fontconfig family name");
   in.reject_unknown_keys();
 }
 
