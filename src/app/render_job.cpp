@@ -144,8 +144,10 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
     return result;
   }
   result.framing_steps = framing->physics_steps;
-  // No font: no scene draws text yet.
-  render::RenderSettings settings{scene.render, job.backend, std::string()};
+  // A font and the lines' shaders only for a scene whose overlays draw them.
+  render::RenderSettings settings{scene.render, job.backend,
+                                  overlays_need_font(scene) ? overlay_font(scene) : std::string(),
+                                  overlays_need_lines(scene)};
   settings.ground = framing->ground;
   const std::unique_ptr<render::Renderer> renderer =
       render::Renderer::create(settings, job.shader_directory, result.error);
@@ -155,6 +157,7 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
     return result;
   }
   result.renderer = renderer->description();
+  result.warnings = missing_character_warnings(scene, renderer->font());
   SimulatedFrames source(scene, *framing, stop_requested);
   for (const physics::BodyState& state : source.simulation().current()) {
     result.bodies.push_back({.energy_start = physics::kinetic_energy(state),

@@ -73,6 +73,7 @@ struct RenderResult {
   std::int64_t framing_steps = 0;   // physics steps of the framing pass (0 when not run)
   std::int64_t frame_steps = 0;     // physics steps of the frames
   std::vector<BodyDiagnostics> bodies;
+  std::vector<std::string> warnings;  // for the user (characters the font lacks)
 };
 
 // Renders the job's frames into `folder` (which must exist). Asks `stop_requested` before each
