@@ -1,12 +1,15 @@
-// The cost of text over a frame (Google Benchmark; not run by ctest):
-//   build/render_bench --benchmark_filter=TextCost --benchmark_repetitions=5 --benchmark_min_time=1
+// The cost of text and overlays over a frame (Google Benchmark; not run by ctest):
+//   build/render_bench --benchmark_filter=CostPerFrame --benchmark_repetitions=5
+//   --benchmark_min_time=1
 // One cube at 720p with the default ground, shadows and edge filter, drawn without text and
 // with three texts (a boxed two-line live value, a caption, a label), the values changing every
 // frame as a documentation video's do: as two benchmarks, and alternated frame by frame on one
 // renderer (BM_TextCostPerFrame720p), whose counters give the ratios of with to without, the
-// render stage's cost of text.
+// render stage's cost of text. BM_OverlayCostPerFrame720p does the same with the budget
+// case: the three texts, two vectors (ω and L) and a 2 s trail of a corner.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -24,6 +27,7 @@ const std::string kShaders = std::string(TUMBLE_SOURCE_DIR) + "/shaders";
 std::unique_ptr<Renderer> make_renderer() {
   RenderSettings settings;  // 1280 × 720, edge filter, ground and shadows
   settings.font = std::string(kDefaultFontFamily);
+  settings.overlays = true;
   std::string error;
   auto renderer = Renderer::create(settings, kShaders, error);
   if (!renderer) std::fprintf(stderr, "render_bench: %s\n", error.c_str());
@@ -67,6 +71,25 @@ void add_three_texts(FrameView& view, int frame) {
                             .opacity = 0.8});
 }
 
+// Two arrows from the cube's centre (its ω along x, growing, and a fixed L) and the path of a
+// corner over the last 2 s at 60 fps, fading: what app/overlay_view.cpp makes of a scene's
+// vector and trail overlays.
+void add_vectors_and_trail(FrameView& view, int frame) {
+  const double spin = 0.05 * frame;  // rad, as cube_frame turns it
+  view.arrows.push_back(Arrow{.from = Vec3::Zero(),
+                              .to = Vec3(1.0 + 0.002 * frame, 0.0, 0.0),
+                              .color = Rgba(0.84, 0.15, 0.16, 1.0)});
+  view.arrows.push_back(
+      Arrow{.from = Vec3::Zero(), .to = Vec3(0.2, 1.1, 0.3), .color = Rgba(0.13, 0.38, 1.0, 1.0)});
+  Polyline trail{.points = {}, .opacity = {}, .color = Rgba(1.0, 1.0, 1.0, 1.0)};
+  for (int k = std::max(0, frame - 120); k <= frame; ++k) {
+    const double angle = spin - 0.05 * (frame - k);
+    trail.points.push_back(Quat(Eigen::AngleAxisd(angle, Vec3::UnitX())) * Vec3(0.5, 0.5, 0.5));
+    trail.opacity.push_back(1.0 - (frame - k) / 120.0);
+  }
+  view.lines.push_back(std::move(trail));
+}
+
 void draw_frames(benchmark::State& state, bool with_text) {
   const auto renderer = make_renderer();
   if (!renderer) {
@@ -91,11 +114,11 @@ double process_cpu_ms() {
   return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
 }
 
-// The same frame without and with the texts, one after the other on one renderer, so that a
-// shared machine's load falls on both alike. The iteration's time is what the texts add (wall);
-// the counters give the ratios of with to without, wall and CPU: the render stage's cost of
-// text as a fraction.
-void BM_TextCostPerFrame720p(benchmark::State& state) {
+// The same frame without and with `add` (the texts, or every overlay), one after the other on one
+// renderer, so that a shared machine's load falls on both alike. The iteration's time is what they
+// add (wall); the counters give the ratios of with to without, wall and CPU: the render stage's
+// cost of them as a fraction.
+void alternate(benchmark::State& state, void (*add)(FrameView&, int)) {
   const auto renderer = make_renderer();
   if (!renderer) {
     state.SkipWithError("no renderer");
@@ -112,7 +135,7 @@ void BM_TextCostPerFrame720p(benchmark::State& state) {
     renderer->draw(view, image);
     const auto middle = Clock::now();
     const double cpu_middle = process_cpu_ms();
-    add_three_texts(view, frame);
+    add(view, frame);
     renderer->draw(view, image);
     const auto end = Clock::now();
     cpu_without += cpu_middle - cpu_start;
@@ -127,6 +150,17 @@ void BM_TextCostPerFrame720p(benchmark::State& state) {
   state.counters["wall_ratio"] = wall_with / wall_without;
   state.counters["cpu_ratio"] = cpu_with / cpu_without;
   state.counters["ms_without"] = wall_without / frame;
+}
+
+void BM_TextCostPerFrame720p(benchmark::State& state) {
+  alternate(state, add_three_texts);
+}
+
+void BM_OverlayCostPerFrame720p(benchmark::State& state) {
+  alternate(state, [](FrameView& view, int frame) {
+    add_three_texts(view, frame);
+    add_vectors_and_trail(view, frame);
+  });
 }
 
 void BM_Frame720pWithoutText(benchmark::State& state) {
@@ -147,6 +181,7 @@ BENCHMARK(BM_Frame720pWithThreeTexts)
     ->MeasureProcessCPUTime()
     ->UseRealTime();
 BENCHMARK(BM_TextCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_OverlayCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 
 }  // namespace
 

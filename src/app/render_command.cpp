@@ -166,6 +166,11 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
       job, staging, [] { return interrupt_signal() != 0; },
       [&](std::int64_t done) { progress.update(done); });
   progress.finish();
+  if (!options.quiet) {
+    for (const std::string& line : result.warnings) {
+      std::fprintf(err, "tumble: warning: %s\n", line.c_str());
+    }
+  }
   if (options.verbose && !result.renderer.empty()) {
     std::fprintf(err, "tumble: renderer %s\n", result.renderer.c_str());
   }

@@ -82,8 +82,11 @@ Result<FrameRange> frame_range(const RenderOptions& options, std::int64_t total)
 std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Framing& framing,
                                                 RenderResult& result) {
   const double start = process_cpu_seconds();
-  // No font: no scene draws text yet.
-  render::RenderSettings settings{job.scene.render, std::string()};
+  // A font and the lines' shaders only for a scene whose overlays draw them.
+  const scene::Scene& scene = job.scene;
+  render::RenderSettings settings{scene.render,
+                                  overlays_need_font(scene) ? overlay_font(scene) : std::string(),
+                                  overlays_need_lines(scene)};
   settings.ground = framing.ground;
   std::unique_ptr<render::Renderer> renderer =
       render::Renderer::create(settings, job.shader_directory, result.error);
@@ -94,6 +97,7 @@ std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Fram
   }
   result.renderer = renderer->description();
   result.opengl = renderer->opengl();
+  result.warnings = missing_character_warnings(scene, renderer->font());
   result.renderer_seconds = process_cpu_seconds() - start;
   return renderer;
 }

@@ -92,6 +92,7 @@ struct RenderResult {
   double renderer_seconds = 0.0;  // the OpenGL context and the shaders' compilation
   double seek_seconds = 0.0;      // the physics up to the first frame
   std::vector<BodyDiagnostics> bodies;
+  std::vector<std::string> warnings;  // for the user (characters the font lacks)
 };
 
 // Renders the job's frames into `folder` (which must exist). Asks `stop_requested` before each

@@ -205,14 +205,32 @@ SimulatedFrames::SimulatedFrames(const scene::Scene& scene, const Framing& frami
     : scene_(scene),
       framing_(framing),
       stop_requested_(std::move(stop_requested)),
-      simulation_(scene::build_simulation(scene)) {}
+      simulation_(scene::build_simulation(scene)) {
+  if (!scene.overlays.empty()) overlays_.emplace(scene);
+}
 
 Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
   const double t = static_cast<double>(frame) / scene_.fps;  // s
+  if (overlays_ && !started_) {
+    // The trails' past, as a render from frame 0 would have recorded it.
+    for (std::int64_t k = std::max<std::int64_t>(0, frame - overlays_->frames_of_history());
+         k < frame; ++k) {
+      const double past = static_cast<double>(k) / scene_.fps;  // s
+      const auto states = checked_states_at(simulation_, scene_, past, stop_requested_);
+      if (!states) return Error{states.error()};
+      overlays_->record(*states, past);
+    }
+  }
+  started_ = true;
   const Result<std::vector<physics::BodyState>> states =
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};
-  return frame_view(scene_, framing_, *states, t);
+  render::FrameView view = frame_view(scene_, framing_, *states, t);
+  if (overlays_) {
+    overlays_->record(*states, t);
+    overlays_->add_to(*states, t, frame, view);
+  }
+  return view;
 }
 
 Result<std::int64_t> SimulatedFrames::seek(std::int64_t frame) {

@@ -3,9 +3,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "app/frame_pipeline.hpp"
+#include "app/overlay_view.hpp"
 #include "common/result.hpp"
 #include "physics/rigid_body.hpp"
 #include "render/frame.hpp"
@@ -51,7 +53,8 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                              const std::vector<physics::BodyState>& states, double t);
 
 // The frame loop's source for a render: frame k shows the bodies at t = k / fps (s), their states
-// interpolated between the two physics steps around t, on a simulation of its own.
+// interpolated between the two physics steps around t, on a simulation of its own, and the
+// scene's overlays computed from those same states.
 class SimulatedFrames final : public FrameSource {
  public:
   // `scene` and `framing` must outlive it.
@@ -68,6 +71,8 @@ class SimulatedFrames final : public FrameSource {
   const Framing& framing_;
   StopRequested stop_requested_;
   sim::Simulation simulation_;
+  std::optional<OverlayItems> overlays_;  // only for a scene with overlays
+  bool started_ = false;                  // whether a frame was asked for yet
 };
 
 }  // namespace tumble::app

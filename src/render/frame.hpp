@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/anchor.hpp"
 #include "common/render_settings.hpp"
 #include "render/offscreen_context.hpp"
 
@@ -52,20 +53,8 @@ struct Quad {
   double grid_spacing = 1.0;              // m between grid lines, from the centre; 0 = no grid
 };
 
-// Where on the frame a text's box sits: a corner, the middle of an edge or the centre. Lines of
-// several-line text align to the same side (left, centre, right). In reading order, row by row:
-// the layout (text_layout.cpp) takes the column and the row from the value.
-enum class Anchor {
-  kTopLeft,
-  kTop,
-  kTopRight,
-  kLeft,
-  kCentre,
-  kRight,
-  kBottomLeft,
-  kBottom,
-  kBottomRight
-};
+// Where on the frame a text's box sits (common/anchor.hpp).
+using common::Anchor;
 
 // Text over the picture (a title, a caption, a live value), drawn after the scene. Sizes are
 // given for a 720-row frame and scale with the frame's height, so that a render at 180 or 2160
@@ -81,12 +70,41 @@ struct Text {
   double opacity = 1.0;                           // of glyphs and box together, to fade (0-1)
 };
 
+// An arrow in the 3D scene (a body's vector, one of its axes): a shaft and a head of fixed widths
+// on the picture (overlay_geometry.hpp), so that it reads alike near and far.
+struct Arrow {
+  Vec3 from = Vec3::Zero();  // world frame (m)
+  Vec3 to = Vec3::UnitX();   // the tip, world frame (m)
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+};
+
+// A line through points of the 3D scene (a trail), each point with an opacity of its own so that
+// the line can fade along its length. Fixed width on the picture.
+struct Polyline {
+  std::vector<Vec3> points;     // world frame (m)
+  std::vector<double> opacity;  // one per point (0-1), times color's
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+};
+
+// Text at a point of the 3D scene (an arrow's name at its tip): its box's left edge just right of
+// the point on the picture, centred on it vertically. Not drawn when the point is behind the
+// camera.
+struct Label {
+  std::string text;              // UTF-8
+  Vec3 position = Vec3::Zero();  // world frame (m)
+  double height = 28.0;          // em size (px at 720 rows)
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+};
+
 // Fixed for a whole render: what the scene asks for (common/render_settings.hpp, with the back
 // end that draws it), and the font its text is drawn in.
 struct RenderSettings : common::RenderSettings {
   // The fontconfig family FrameView::texts are drawn in (kDefaultFontFamily, render/font.hpp,
   // unless the scene chooses); empty for a render without text, which then loads no font.
   std::string font;
+  // Whether frames may have lines and arrows (FrameView::lines, arrows): only then are their
+  // shaders built.
+  bool overlays = false;
 };
 
 // Changes every frame.
@@ -94,7 +112,12 @@ struct FrameView {
   Camera camera;
   std::vector<Box> boxes;
   std::vector<Quad> quads;
-  std::vector<Text> texts;  // drawn in order, each over the ones before; needs settings' font
+  // Overlays, drawn after the scene in this order: lines and arrows (over the scene, fainter
+  // where it hides them), then labels and texts (over everything; they need settings' font).
+  std::vector<Polyline> lines;
+  std::vector<Arrow> arrows;
+  std::vector<Label> labels;
+  std::vector<Text> texts;  // drawn in order, each over the ones before
 };
 
 }  // namespace tumble::render

@@ -24,11 +24,6 @@ std::optional<AtlasGlyph> GlyphAtlas::find_or_add(Font& font, std::uint32_t glyp
                 &bitmap.coverage[static_cast<std::size_t>(row) * bitmap.width],
                 static_cast<std::size_t>(bitmap.width));
   }
-  if (bitmap.height > 0) {
-    if (changed_first_ == changed_last_) changed_first_ = changed_last_ = placed.y;
-    changed_first_ = std::min(changed_first_, placed.y);
-    changed_last_ = std::max(changed_last_, placed.y + bitmap.height);
-  }
   glyphs_.emplace(key, placed);
   return placed;
 }
@@ -62,12 +57,6 @@ void GlyphAtlas::grow() {
                 static_cast<std::size_t>(old_size));
   }
   texels_ = std::move(grown);
-  resized_ = true;
-}
-
-void GlyphAtlas::mark_uploaded() {
-  changed_first_ = changed_last_ = 0;
-  resized_ = false;
 }
 
 }  // namespace tumble::render

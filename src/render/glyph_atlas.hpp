@@ -1,5 +1,5 @@
 // The glyphs text needs, rasterised once per (glyph, pixel height) and packed into one
-// single-channel picture that text_layer.hpp keeps as a GL texture. Free of GL.
+// single-channel picture that text_layer.hpp blends from. Free of GL.
 #pragma once
 
 #include <cstdint>
@@ -22,7 +22,7 @@ struct AtlasGlyph {
 
 class GlyphAtlas {
  public:
-  // Starts at `size` × `size` texels and doubles when full, up to `max_size` (the GL limit).
+  // Starts at `size` × `size` texels and doubles when full, up to `max_size`.
   GlyphAtlas(int size, int max_size);
 
   // The glyph at `pixel_height`, rasterised by `font` and packed on first use. Nothing when it
@@ -32,11 +32,6 @@ class GlyphAtlas {
   int size() const { return size_; }
   // size × size coverage values, row 0 first.
   const std::vector<std::uint8_t>& texels() const { return texels_; }
-  // The rows written since the last mark_uploaded(), [first, last); empty when first == last.
-  std::pair<int, int> changed_rows() const { return {changed_first_, changed_last_}; }
-  // Whether the atlas grew since the last mark_uploaded(): the texture is then made anew.
-  bool resized() const { return resized_; }
-  void mark_uploaded();
 
  private:
   // The top-left texel for a bitmap of width × height, growing the atlas if needed.
@@ -51,8 +46,6 @@ class GlyphAtlas {
   int shelf_height_ = 0;                                        // its tallest bitmap so far
   int shelf_x_ = 0;                                             // the next free column on it
   std::map<std::pair<std::uint32_t, int>, AtlasGlyph> glyphs_;  // by (glyph, pixel height)
-  int changed_first_ = 0, changed_last_ = 0;
-  bool resized_ = true;  // no texture exists yet
 };
 
 }  // namespace tumble::render

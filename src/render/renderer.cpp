@@ -15,6 +15,8 @@
 #include "render/gl.hpp"
 #include "render/ground_cache.hpp"
 #include "render/offscreen_context.hpp"
+#include "render/overlay_geometry.hpp"
+#include "render/overlay_layer.hpp"
 #include "render/shader_program.hpp"
 #include "render/text_layer.hpp"
 
@@ -116,6 +118,7 @@ struct Renderer::Resources {
   std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
   GroundCache ground;                     // the ground without shadows, while the camera stays
   std::unique_ptr<TextLayer> text;        // when the settings name a font
+  std::unique_ptr<OverlayLayer> overlay;  // when the settings ask for overlays
   GLuint ground_vao = 0, ground_vbo = 0;
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
@@ -143,8 +146,10 @@ struct Renderer::Resources {
   void draw_ground_shadows(const FrameView& view, const FrameSetup& frame);
   void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
   // Reads the frame into `out`, through the edge filter unless multisampled, which leaves
-  // `text_boxes` (from TextLayer::draw) alone.
+  // `text_boxes` (from TextLayer::lay_out) alone.
   void read_pixels(io::Image& out, const std::vector<PixelBox>& text_boxes);
+  // The labels placed on the picture where their points land, then the texts.
+  std::vector<Text> texts_with_labels(const FrameView& view, const FrameSetup& frame) const;
 };
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
@@ -250,9 +255,15 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
   }
   if (!settings.font.empty()) {
     Result<std::unique_ptr<TextLayer>> layer =
-        TextLayer::create(settings.width, settings.height, settings.font, shader_directory);
+        TextLayer::create(settings.width, settings.height, settings.font);
     if (!layer) return layer.error();
     text = std::move(layer).value();
+  }
+  if (settings.overlays) {
+    Result<std::unique_ptr<OverlayLayer>> layer =
+        OverlayLayer::create(settings.width, settings.height, shader_directory);
+    if (!layer) return layer.error();
+    overlay = std::move(layer).value();
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (glGetError() != GL_NO_ERROR) return "OpenGL error while setting up the renderer";
@@ -497,6 +508,29 @@ void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox
   }
 }
 
+std::vector<Text> Renderer::Resources::texts_with_labels(const FrameView& view,
+                                                         const FrameSetup& frame) const {
+  if (view.labels.empty()) return view.texts;
+  std::vector<Text> out;
+  // A gap between the point and the label's box, so that the label clears an arrow's tip.
+  constexpr double kLabelGap = 6.0;  // px at 720 rows
+  const double reference = static_cast<double>(kTextReferenceHeight) / settings.height;
+  for (const Label& label : view.labels) {
+    const auto pixel =
+        project_to_pixel(frame.view_projection, label.position, settings.width, settings.height);
+    if (!pixel) continue;
+    // Anchored left and middle: x from the left edge, y from the frame's middle row.
+    out.push_back(Text{.text = label.text,
+                       .anchor = Anchor::kLeft,
+                       .offset = Eigen::Vector2d(pixel->x() * reference + kLabelGap,
+                                                 (pixel->y() - 0.5 * settings.height) * reference),
+                       .height = label.height,
+                       .color = label.color});
+  }
+  out.insert(out.end(), view.texts.begin(), view.texts.end());
+  return out;
+}
+
 void Renderer::draw(const FrameView& view, io::Image& out) {
   Resources& r = *resources_;
   const RenderSettings& s = r.settings;
@@ -521,15 +555,20 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   if (s.ground.enabled && s.shadows) r.draw_ground_shadows(view, frame);
   r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
-  // Text last, over everything, and left alone by the edge filter (text_layer.hpp says why). A
-  // frame without text never reaches the text layer.
-  std::vector<PixelBox> text_boxes;
-  if (!view.texts.empty()) {
-    assert(r.text && "FrameView::texts needs RenderSettings::font");
-    if (r.text) text_boxes = r.text->draw(view.texts);
+  // Lines and arrows in the scene (overlay_layer.hpp says how they meet it), then text last,
+  // over the picture read back, and left alone by the edge filter (text_layer.hpp says why). A
+  // frame without overlays or text never reaches their layers.
+  if (!view.lines.empty() || !view.arrows.empty()) {
+    assert(r.overlay && "FrameView::lines and arrows need RenderSettings::overlays");
+    if (r.overlay) r.overlay->draw(view.lines, view.arrows, frame.view_projection);
   }
-
+  const bool text = (!view.texts.empty() || !view.labels.empty()) && r.text;
+  assert((text || (view.texts.empty() && view.labels.empty())) &&
+         "FrameView::texts and labels need RenderSettings::font");
+  std::vector<PixelBox> text_boxes;
+  if (text) text_boxes = r.text->lay_out(r.texts_with_labels(view, frame));
   r.read_pixels(out, text_boxes);
+  if (text) r.text->draw(out);
 }
 
 }  // namespace tumble::render

@@ -1,65 +1,65 @@
-// Text over the frame: each Text laid out (text_layout.hpp), its glyphs taken from a GL atlas
-// texture (glyph_atlas.hpp) and drawn with text.vert/text.frag into the frame's framebuffer,
-// after the scene and before the read-back.
+// Text over the frame: each Text laid out (text_layout.hpp), its glyphs rasterised once into a
+// glyph cache (glyph_atlas.hpp) and blended over the picture read back, on the CPU.
 //
-// Where text sits in the frame's order, and why: last of the passes, over everything, into
-// the frame's own framebuffer before the read-back, so that it costs only its glyphs' and
-// boxes' pixels (no layer to clear, read and composite, no second wait for the rasteriser).
-// Then the edge filter (edge_filter.hpp), on the CPU over the picture read back, leaves the
-// pixels text drew on alone: glyph stems are hard luminance edges to it, which it would blend
-// with their neighbours (thicker, blurred strokes) and walk along at its slowest. FreeType's
-// coverage already antialiases the glyphs. Multisampled frames take the same order (the text
-// drawn into every sample) and are not filtered at all.
-//
-// Internal to src/render/; needs a current GL context from create() to destruction.
+// Where text sits in the frame's order, and why: last, over everything, after the read-back (and
+// the edge filter, which leaves the pixels text lies on alone: glyph stems are hard luminance
+// edges to it, which it would blend with their neighbours into thicker, blurred strokes).
+// FreeType's coverage already antialiases the glyphs. Why on the CPU: glyph rectangles are
+// whole pixels, one coverage byte per pixel, so blending them is a few operations a pixel over
+// the glyphs' own pixels; drawn by llvmpipe as textured, blended triangles the same three
+// captions cost 13% of a light 720p frame (render_bench's BM_TextCostPerFrame720p), its
+// rasteriser shading whole 4 × 4 blocks around every small glyph. Multisampled frames get the
+// same text after the resolve: each glyph pixel would have had the same value in every sample.
 #pragma once
 
 #include <memory>
-#include <string>
 #include <string_view>
 #include <vector>
 
 #include "common/result.hpp"
+#include "io/image.hpp"
 #include "render/font.hpp"
 #include "render/frame.hpp"
 #include "render/glyph_atlas.hpp"
-#include "render/shader_program.hpp"
+#include "render/pixel_box.hpp"
 #include "render/text_layout.hpp"
 
 namespace tumble::render {
 
 class TextLayer {
  public:
-  // For frames of width × height px: opens `font_family` (font.hpp) and builds the shaders from
-  // `shader_directory`. An error names the family or the shader file.
+  // For frames of width × height px, in `font_family` (font.hpp); an error names the family.
   static Result<std::unique_ptr<TextLayer>> create(int width, int height,
-                                                   std::string_view font_family,
-                                                   const std::string& shader_directory);
-  ~TextLayer();
-  TextLayer(const TextLayer&) = delete;
-  TextLayer& operator=(const TextLayer&) = delete;
+                                                   std::string_view font_family);
 
-  // Blends `texts` over the bound framebuffer (width × height), each over the ones before, in
-  // sRGB-encoded values as a video compositor does. Returns the rectangles drawn on, within the
+  // Lays out `texts` for the next draw() and returns the rectangles it will draw on, within the
   // frame, for the edge filter to leave: a text's background box, or each of its glyphs' grown
   // by a pixel (the filter's reach across an edge). Fully transparent glyphs and boxes draw
   // nothing and return nothing. Precondition: each text is valid UTF-8 (decode_utf8).
-  std::vector<PixelBox> draw(const std::vector<Text>& texts);
+  std::vector<PixelBox> lay_out(const std::vector<Text>& texts);
+
+  // Blends what lay_out() placed over `image` (width × height), each text over the ones before,
+  // in sRGB-encoded values as a video compositor does: premultiplied "over" (Porter & Duff
+  // 1984).
+  void draw(io::Image& image) const;
 
   const Font& font() const { return *font_; }
 
  private:
   TextLayer() = default;
-  // Two triangles per glyph and per background, kFloatsPerCorner floats per corner (text.vert's
-  // inputs); `drawn_on` gets what they cover, as draw() returns it.
-  std::vector<float> vertices(const std::vector<Text>& texts, std::vector<PixelBox>& drawn_on);
-  void upload_atlas();
+
+  // A rectangle of whole pixels to blend: a glyph's coverage from the atlas, or solid.
+  struct Piece {
+    PixelBox box;                   // within the frame
+    int texel_x = -1, texel_y = 0;  // the atlas texel at the box's top-left; -1: solid
+    Eigen::Vector4f color;          // sRGB-encoded, premultiplied by its opacity (0-1)
+  };
+  void add(const PixelBox& box, int texel_x, int texel_y, const Eigen::Vector4f& color);
 
   int width_ = 0, height_ = 0;  // of the frame (px)
   std::unique_ptr<Font> font_;
   GlyphAtlas atlas_{256, 256};
-  ShaderProgram program_;
-  GLuint texture_ = 0, vao_ = 0, vbo_ = 0;
+  std::vector<Piece> pieces_;  // of the last lay_out(), in drawing order
 };
 
 }  // namespace tumble::render

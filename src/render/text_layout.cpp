@@ -103,17 +103,4 @@ Result<TextLayout> lay_out(Font& font, const Text& text, int frame_width, int fr
   return out;
 }
 
-std::optional<Anchor> anchor_from_name(std::string_view name) {
-  static constexpr std::pair<std::string_view, Anchor> kNames[] = {
-      {"top-left", Anchor::kTopLeft},   {"top", Anchor::kTop},
-      {"top-right", Anchor::kTopRight}, {"left", Anchor::kLeft},
-      {"centre", Anchor::kCentre},      {"center", Anchor::kCentre},
-      {"right", Anchor::kRight},        {"bottom-left", Anchor::kBottomLeft},
-      {"bottom", Anchor::kBottom},      {"bottom-right", Anchor::kBottomRight}};
-  for (const auto& [known, anchor] : kNames) {
-    if (name == known) return anchor;
-  }
-  return std::nullopt;
-}
-
 }  // namespace tumble::render

@@ -44,8 +44,7 @@ int text_pixel_height(double height_at_reference, int frame_height);
 // naming the byte (decode_utf8).
 Result<TextLayout> lay_out(Font& font, const Text& text, int frame_width, int frame_height);
 
-// The anchor a scene names "top-left", "top", "top-right", "left", "centre" (or "center"),
-// "right", "bottom-left", "bottom" or "bottom-right"; nothing for another name.
-std::optional<Anchor> anchor_from_name(std::string_view name);
+// The anchor a scene names (common/anchor.hpp).
+using common::anchor_from_name;
 
 }  // namespace tumble::render

@@ -35,6 +35,8 @@ void read_render(TableReader& in, Scene& scene) {
             "unknown off-screen OpenGL " + in_quotes(backend) + " (auto, osmesa or egl)");
   }
   r.backend = *named;
+  scene.font = in.optional_string("font", scene.font);
+  if (in.has("font") && scene.font.empty()) in.fail("font", "expected a fontconfig family name");
   in.reject_unknown_keys();
 }
 

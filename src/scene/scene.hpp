@@ -13,6 +13,7 @@
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
 #include "physics/shapes.hpp"
+#include "scene/overlays.hpp"
 
 namespace tumble::scene {
 
@@ -81,6 +82,10 @@ struct Scene {
   int fps = 60;                         // video frames per simulated second
   CameraSpec camera;
   OutputSpec output;
+  // Drawn over the bodies in the order written ([[overlays]], scene/overlays.hpp); none means
+  // no overlay code runs.
+  std::vector<OverlaySpec> overlays;
+  std::string font;  // [render] font: the fontconfig family texts are drawn in; "" = the default
 };
 
 }  // namespace tumble::scene

@@ -1,6 +1,7 @@
 #include "scene/scene_loader.hpp"
 
 #include "scene/key_depth.hpp"
+#include "scene/overlay_tables.hpp"
 #include "scene/plane_tables.hpp"
 #include "scene/render_tables.hpp"
 #include "scene/scene_builder.hpp"
@@ -300,6 +301,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
   read_planes(in, scene);
   refuse_overlapping_bodies(in, scene);
   read_render_tables(in, scene);
+  read_overlays(in, scene);
   in.reject_unknown_keys();
   return scene;
 }

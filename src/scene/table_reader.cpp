@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -98,19 +99,30 @@ Vec3 vector_within(TableReader& in, std::string_view key, const Vec3& value, dou
   return value;
 }
 
+namespace {
+
+// "#rrggbb" (or "#rrggbbaa" when `with_alpha`) as components in [0, 1]; nothing for other text.
+std::optional<std::vector<double>> hex_components(const std::string& text, bool with_alpha) {
+  const bool hex = (text.size() == 7 || (with_alpha && text.size() == 9)) && text[0] == '#' &&
+                   text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
+  if (!hex) return std::nullopt;
+  std::vector<double> out;
+  for (std::size_t i = 1; i < text.size(); i += 2) {
+    out.push_back(std::stoi(text.substr(i, 2), nullptr, 16) / 255.0);
+  }
+  return out;
+}
+
+}  // namespace
+
 Vec3 TableReader::optional_color(std::string_view key, const Vec3& fallback) {
   if (!has(key)) return fallback;
   const toml::node& node = *table_.get(key);
   if (node.is_string()) {
     const std::string text = *node.value<std::string>();
-    const bool hex = text.size() == 7 && text[0] == '#' &&
-                     text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
+    const auto hex = hex_components(text, false);
     if (!hex) fail(key, "expected a colour \"#rrggbb\" or [r, g, b], found " + in_quotes(text));
-    Vec3 out;
-    for (int i = 0; i < 3; ++i) {
-      out[i] = std::stoi(text.substr(1 + 2 * static_cast<std::size_t>(i), 2), nullptr, 16) / 255.0;
-    }
-    return out;
+    return Vec3((*hex)[0], (*hex)[1], (*hex)[2]);
   }
   const toml::array* array = node.as_array();
   if (!array || array->size() != 3) {
@@ -122,6 +134,33 @@ Vec3 TableReader::optional_color(std::string_view key, const Vec3& fallback) {
   if (out.minCoeff() < 0.0 || out.maxCoeff() > 1.0) {
     fail(key, "colour components must be from 0 to 1 (got [" + format_number(out.x()) + ", " +
                   format_number(out.y()) + ", " + format_number(out.z()) + "])");
+  }
+  return out;
+}
+
+Eigen::Vector4d TableReader::optional_rgba(std::string_view key, const Eigen::Vector4d& fallback) {
+  if (!has(key)) return fallback;
+  const toml::node& node = *table_.get(key);
+  const char* form =
+      "expected a colour \"#rrggbb\", \"#rrggbbaa\", [r, g, b] or [r, g, b, a], found ";
+  if (node.is_string()) {
+    const std::string text = *node.value<std::string>();
+    const auto hex = hex_components(text, true);
+    if (!hex) fail(key, form + in_quotes(text));
+    return Eigen::Vector4d((*hex)[0], (*hex)[1], (*hex)[2], hex->size() == 4 ? (*hex)[3] : 1.0);
+  }
+  const toml::array* array = node.as_array();
+  if (!array || (array->size() != 3 && array->size() != 4)) {
+    fail(key, form + (array ? "an array of " + std::to_string(array->size())
+                            : std::string(type_name(node))));
+  }
+  Eigen::Vector4d out(0.0, 0.0, 0.0, 1.0);
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    out[static_cast<int>(i)] = number(key, (*array)[i]);
+    if (out[static_cast<int>(i)] < 0.0 || out[static_cast<int>(i)] > 1.0) {
+      fail(key, "colour components must be from 0 to 1 (got " +
+                    format_number(out[static_cast<int>(i)]) + ")");
+    }
   }
   return out;
 }

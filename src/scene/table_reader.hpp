@@ -166,6 +166,9 @@ class TableReader {
 
   // An sRGB colour: [r, g, b] with components in [0, 1], or "#rrggbb".
   Vec3 optional_color(std::string_view key, const Vec3& fallback);
+  // An sRGB colour with a straight opacity: "#rrggbb", "#rrggbbaa", [r, g, b] or [r, g, b, a],
+  // components in [0, 1] (opacity 1 when not given).
+  Eigen::Vector4d optional_rgba(std::string_view key, const Eigen::Vector4d& fallback);
 
   // The sub-table at `key`, or null when absent; an error when `key` holds something else.
   const toml::table* optional_table(std::string_view key) {

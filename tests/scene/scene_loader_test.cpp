@@ -1539,7 +1539,7 @@ mass = 1.0
 samples = 4
 )",
      "test.toml:7:1", "render.samples",
-     "unknown key (allowed here: backend, background, fps, height, msaa, shadows, width)"},
+     "unknown key (allowed here: backend, background, font, fps, height, msaa, shadows, width)"},
     {"ZeroFieldOfView", R"(duration = 1.0
 [[bodies]]
 shape = "cube"

@@ -1,0 +1,57 @@
+// From a scene's [[overlays]] and a frame's body states to the renderer's plain items: texts
+// with their live values formatted, arrows, trails and axes. Only a scene with overlays gets
+// here (SimulatedFrames), so one without runs the code it ran before overlays existed.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "physics/rigid_body.hpp"
+#include "render/font.hpp"
+#include "render/frame.hpp"
+#include "scene/scene.hpp"
+
+namespace tumble::app {
+
+// Whether the scene's overlays draw text (texts, arrow labels): then the renderer needs a font.
+bool overlays_need_font(const scene::Scene& scene);
+// Whether they draw lines or arrows: then the renderer builds their shaders.
+bool overlays_need_lines(const scene::Scene& scene);
+
+// The fontconfig family the scene's text is drawn in: [render] font, else render's default.
+std::string overlay_font(const scene::Scene& scene);
+
+// One warning for each character of the overlays' fixed text (the texts around their
+// placeholders, the labels) that `font` lacks: it is drawn as a gap, never as the font's
+// missing-glyph box. None when `font` is null (a render without text).
+std::vector<std::string> missing_character_warnings(const scene::Scene& scene,
+                                                    const render::Font* font);
+
+class OverlayItems {
+ public:
+  explicit OverlayItems(const scene::Scene& scene);  // `scene` must outlive it
+
+  // Frames before the first frame drawn whose states the trails need: a render that starts at
+  // frame A record()s frames A - frames_of_history() .. A - 1 first (not before 0), so that a
+  // chunk of a video draws the same trail as the whole video.
+  std::int64_t frames_of_history() const;
+
+  // Takes in the bodies' states at time t (s) for the trails. Times increase from call to call.
+  void record(const std::vector<physics::BodyState>& states, double t);
+
+  // Adds the overlays' items for frame `frame` at time t (s), whose states were just record()ed.
+  void add_to(const std::vector<physics::BodyState>& states, double t, std::int64_t frame,
+              render::FrameView& view) const;
+
+ private:
+  struct TrailPoint {
+    double time;             // s
+    physics::Vec3 position;  // world frame (m)
+  };
+  const scene::Scene& scene_;
+  std::vector<std::deque<TrailPoint>> trails_;  // per overlay; empty but for trails
+};
+
+}  // namespace tumble::app

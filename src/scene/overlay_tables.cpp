@@ -1,0 +1,237 @@
+#include "scene/overlay_tables.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+#include <variant>
+
+#include "scene/text_template.hpp"
+#include "sim/simulation.hpp"
+
+namespace tumble::scene::detail {
+namespace {
+
+// Enough for any explanation; beyond it a scene is surely generated wrong.
+constexpr std::size_t kMaxOverlays = 100;
+// A trail keeps a point per frame of its length: a minute at 240 fps is 14 400 points a frame.
+constexpr double kMaxTrailLength = 60.0;  // s
+// Larger than any frame is tall at 720 rows.
+constexpr double kMaxTextSize = 720.0;  // px at 720 rows
+// From the frame's edges the anchor touches, when no offset is written.
+constexpr double kDefaultMargin = 24.0;  // px at 720 rows
+
+// A default colour per quantity, so that two arrows on one body tell apart unasked.
+const Rgba kVelocityColor(0.17, 0.63, 0.17, 1.0);
+const Rgba kAngularVelocityColor(0.84, 0.15, 0.16, 1.0);
+const Rgba kAngularMomentumColor(0.13, 0.38, 1.0, 1.0);
+const Rgba kForceColor(1.0, 0.62, 0.11, 1.0);
+const Rgba kConstantColor(0.35, 0.35, 0.38, 1.0);
+
+// The index of the body `key` names; an error suggests a near name.
+std::size_t read_body(TableReader& in, const Scene& scene, std::string_view key = "body") {
+  const std::string name = in.required_string(key);
+  std::string nearest;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (scene.bodies[i].name == name) return i;
+    if (edit_distance(scene.bodies[i].name, name) <= 2) nearest = scene.bodies[i].name;
+  }
+  in.fail(key, "no body is named " + in_quotes(name) +
+                   (nearest.empty() ? "" : " (did you mean " + in_quotes(nearest) + "?)"));
+}
+
+std::vector<std::string> body_names(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const BodySpec& body : scene.bodies) names.push_back(body.name);
+  return names;
+}
+
+// [x, y] (px at 720 rows).
+Eigen::Vector2d read_offset(TableReader& in) {
+  const toml::node& node = in.required("offset");
+  const toml::array* array = node.as_array();
+  if (!array || array->size() != 2) {
+    in.fail("offset", "expected [x, y] in pixels at 720 rows, found " +
+                          (array ? "an array of " + std::to_string(array->size())
+                                 : std::string(type_name(node))));
+  }
+  return Eigen::Vector2d(in.number("offset", (*array)[0]), in.number("offset", (*array)[1]));
+}
+
+// kDefaultMargin in from each edge the anchor touches: a corner's text clears both edges.
+Eigen::Vector2d default_offset(common::Anchor anchor) {
+  const int column = static_cast<int>(anchor) % 3, row = static_cast<int>(anchor) / 3;
+  return kDefaultMargin * Eigen::Vector2d(column == 0   ? 1.0
+                                          : column == 2 ? -1.0
+                                                        : 0.0,
+                                          row == 0   ? 1.0
+                                          : row == 2 ? -1.0
+                                                     : 0.0);
+}
+
+TextOverlay read_text(TableReader& in, const Scene& scene) {
+  TextOverlay out;
+  const Result<TextTemplate> text =
+      parse_text_template(in.required_string("text"), body_names(scene));
+  if (!text) in.fail("text", text.error());
+  out.text = *text;
+  const std::string anchor = in.optional_string("anchor", "top-left");
+  const std::optional<common::Anchor> known = common::anchor_from_name(anchor);
+  if (!known) {
+    in.fail("anchor", "unknown anchor " + in_quotes(anchor) +
+                          " (expected top-left, top, top-right, left, centre, right, "
+                          "bottom-left, bottom or bottom-right)");
+  }
+  out.anchor = *known;
+  out.offset = in.has("offset") ? read_offset(in) : default_offset(out.anchor);
+  out.size = in.optional_number("size", out.size);
+  if (!(out.size > 0.0 && out.size <= kMaxTextSize)) {
+    in.fail("size", "must be more than 0 and at most " + format_number(kMaxTextSize) +
+                        " px at 720 rows (got " + format_number(out.size) + ")");
+  }
+  out.color = in.optional_rgba("color", out.color);
+  if (in.has("background")) out.background = in.optional_rgba("background", Rgba::Zero());
+  out.start = in.optional_number("start", out.start);
+  out.end = in.optional_number("end", out.end);
+  if (!(out.start < out.end)) {
+    in.fail("start", "start (" + format_number(out.start) + " s) must be before end (" +
+                         format_number(out.end) + " s)");
+  }
+  out.fade = in.optional_number("fade", out.fade);
+  require_non_negative(in, "fade", out.fade);
+  return out;
+}
+
+// The kind name [[bodies.forces]] gives the law (scene_loader.cpp's read_force).
+std::string_view force_kind(const physics::ForceLaw& law) {
+  constexpr std::array<std::string_view, std::variant_size_v<physics::ForceLaw>> kKinds = {
+      "gravity",         "force",          "torque", "linear_damping",
+      "angular_damping", "force_at_point", "spring", "penalty_contact"};
+  return kKinds[law.index()];
+}
+
+// `law` names a kind of the body's [[bodies.forces]]; every law of that kind is summed. Without
+// `law`, every law of the body.
+std::vector<std::size_t> read_laws(TableReader& in, const BodySpec& body) {
+  const std::string kind = in.optional_string("law", "");
+  std::vector<std::size_t> laws;
+  std::string kinds;
+  for (std::size_t i = 0; i < body.forces.size(); ++i) {
+    const std::string_view name = force_kind(body.forces[i]);
+    if (kind.empty() || name == kind) laws.push_back(i);
+    if (kinds.find(name) == std::string::npos)
+      kinds += (kinds.empty() ? "" : ", ") + std::string(name);
+  }
+  if (body.forces.empty()) {
+    in.fail("quantity", "body " + in_quotes(body.name) + " has no [[bodies.forces]] to draw");
+  }
+  if (laws.empty()) {
+    in.fail("law", "body " + in_quotes(body.name) + " has no " + in_quotes(kind) +
+                       " law (its laws: " + kinds + ")");
+  }
+  return laws;
+}
+
+VectorOverlay read_vector(TableReader& in, const Scene& scene) {
+  VectorOverlay out;
+  out.body = read_body(in, scene);
+  const toml::node& quantity = in.required("quantity");
+  const std::string name = quantity.is_string() ? *quantity.value<std::string>() : "";
+  const std::pair<std::string_view, std::pair<VectorQuantity, Rgba>> kNames[] = {
+      {"velocity", {VectorQuantity::velocity, kVelocityColor}},
+      {"angular_velocity", {VectorQuantity::angular_velocity, kAngularVelocityColor}},
+      {"angular_momentum", {VectorQuantity::angular_momentum, kAngularMomentumColor}},
+      {"force", {VectorQuantity::force, kForceColor}}};
+  Rgba color = kConstantColor;
+  if (quantity.is_array()) {
+    out.quantity = VectorQuantity::constant;
+    out.constant = in.vector("quantity", quantity);
+  } else {
+    const auto* known = std::find_if(std::begin(kNames), std::end(kNames),
+                                     [&](const auto& entry) { return entry.first == name; });
+    if (!quantity.is_string() || known == std::end(kNames)) {
+      in.fail("quantity",
+              "expected velocity, angular_velocity, angular_momentum, force or a "
+              "constant vector [x, y, z], found " +
+                  (quantity.is_string() ? in_quotes(name) : std::string(type_name(quantity))));
+    }
+    out.quantity = known->second.first;
+    color = known->second.second;
+  }
+  if (out.quantity == VectorQuantity::force) {
+    out.laws = read_laws(in, scene.bodies[out.body]);
+  } else if (in.has("law")) {
+    in.fail("law", "only a vector of quantity = \"force\" takes a law");
+  }
+  out.point =
+      vector_within(in, "point", in.optional_vector("point", out.point), sim::kMaxPosition, "m");
+  out.scale = in.optional_number("scale", out.scale);
+  require_positive(in, "scale", out.scale);
+  out.color = in.optional_rgba("color", color);
+  out.label = in.optional_string("label", out.label);
+  return out;
+}
+
+TrailOverlay read_trail(TableReader& in, const Scene& scene) {
+  TrailOverlay out;
+  out.body = read_body(in, scene);
+  out.point =
+      vector_within(in, "point", in.optional_vector("point", out.point), sim::kMaxPosition, "m");
+  out.length = in.optional_number("length", out.length);
+  if (!(out.length > 0.0 && out.length <= kMaxTrailLength)) {
+    in.fail("length", "must be more than 0 and at most " + format_number(kMaxTrailLength) +
+                          " s (got " + format_number(out.length) + ")");
+  }
+  const common::Color& body = scene.bodies[out.body].color;
+  out.color = in.optional_rgba("color", Rgba(body.x(), body.y(), body.z(), 1.0));
+  return out;
+}
+
+AxesOverlay read_axes(TableReader& in, const Scene& scene) {
+  AxesOverlay out;
+  out.body = read_body(in, scene);
+  out.length = in.optional_number("length", scene.bodies[out.body].size.maxCoeff());
+  require_positive(in, "length", out.length);
+  return out;
+}
+
+OverlaySpec read_overlay(TableReader& in, const Scene& scene) {
+  const std::string kind = in.required_string("kind");
+  OverlaySpec out;
+  if (kind == "text") {
+    out = read_text(in, scene);
+  } else if (kind == "vector") {
+    out = read_vector(in, scene);
+  } else if (kind == "trail") {
+    out = read_trail(in, scene);
+  } else if (kind == "axes") {
+    out = read_axes(in, scene);
+  } else {
+    in.fail("kind",
+            "unknown overlay kind " + in_quotes(kind) + " (expected text, vector, trail or axes)");
+  }
+  in.reject_unknown_keys();
+  return out;
+}
+
+}  // namespace
+
+void read_overlays(TableReader& root, Scene& scene) {
+  if (!root.has("overlays")) return;
+  const toml::array* overlays = root.table().get("overlays")->as_array();
+  if (!overlays) root.fail("overlays", "expected [[overlays]] tables");
+  if (overlays->size() > kMaxOverlays) {
+    root.fail_at((*overlays)[kMaxOverlays].source(), "overlays",
+                 std::to_string(overlays->size()) + " overlays, more than the limit of " +
+                     std::to_string(kMaxOverlays));
+  }
+  for (std::size_t i = 0; i < overlays->size(); ++i) {
+    const std::string path = "overlays[" + std::to_string(i) + "]";
+    const toml::table* table = (*overlays)[i].as_table();
+    if (!table) root.fail_at((*overlays)[i].source(), path, "expected an [[overlays]] table");
+    TableReader in(*table, path, root.file());
+    scene.overlays.push_back(read_overlay(in, scene));
+  }
+}
+
+}  // namespace tumble::scene::detail

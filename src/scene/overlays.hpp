@@ -1,0 +1,102 @@
+// What a scene's [[overlays]] ask to be drawn over its bodies, as plain data checked at load:
+// texts with live values, arrows of a body's vectors, trails of a body point, a body's axes.
+// The values are computed per frame outside the scene (app/overlay_values.hpp), from the
+// interpolated state the frame shows.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "common/anchor.hpp"
+#include "physics/rigid_body.hpp"
+
+namespace tumble::scene {
+
+// sRGB-encoded colour and a straight (not premultiplied) opacity, each in [0, 1].
+using Rgba = Eigen::Vector4d;
+
+// What a text placeholder reads from a body's state (world frame, SI units).
+enum class BodyQuantity {
+  position,          // of the centre (m)
+  velocity,          // of the centre (m/s)
+  speed,             // |velocity| (m/s)
+  angular_velocity,  // rad/s
+  angular_speed,     // |angular_velocity| (rad/s)
+  angular_momentum,  // about the centre (kg m²/s)
+  kinetic_energy     // translational + rotational (J)
+};
+
+// One {…} of a text overlay, resolved against the scene's bodies at load.
+struct Placeholder {
+  enum class Source { time, frame, body };
+  Source source = Source::time;
+  std::size_t body = 0;  // index into Scene::bodies, for Source::body
+  BodyQuantity quantity = BodyQuantity::position;
+  int component = -1;     // 0, 1, 2 for .x .y .z of a vector quantity; -1 for the whole value
+  int precision = 2;      // printf's precision: digits after the point (f, e), significant (g)
+  char conversion = 'f';  // printf's f, e or g; {frame} is a whole number and takes neither
+};
+
+// A text overlay's text as parsed at load: literal pieces and placeholders in turn, so that a
+// frame only formats numbers. Always pieces.size() == values.size() + 1.
+struct TextTemplate {
+  std::vector<std::string> pieces;  // UTF-8, with {{ and }} already turned into { and }
+  std::vector<Placeholder> values;
+};
+
+// A title, a caption or a live value over the picture, shown while start <= t < end.
+struct TextOverlay {
+  TextTemplate text;
+  common::Anchor anchor = common::Anchor::kTopLeft;
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();  // x right, y down (px at 720 rows)
+  double size = 28.0;                                // em size (px at 720 rows)
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+  std::optional<Rgba> background;                        // a box behind the text
+  double start = 0.0;                                    // s
+  double end = std::numeric_limits<double>::infinity();  // s
+  double fade = 0.0;  // s of fading in after start and out before end
+};
+
+// What a vector overlay's arrow shows.
+enum class VectorQuantity {
+  velocity,          // of the arrow's start point (m/s)
+  angular_velocity,  // rad/s
+  angular_momentum,  // about the centre (kg m²/s)
+  force,             // the sum of some of the body's force laws (N)
+  constant           // a fixed world vector
+};
+
+// An arrow from a body's centre (or a body point) along one of its vectors.
+struct VectorOverlay {
+  std::size_t body = 0;  // index into Scene::bodies
+  VectorQuantity quantity = VectorQuantity::velocity;
+  std::vector<std::size_t> laws;  // for force: indices into the body's forces, summed
+  physics::Vec3 constant = physics::Vec3::Zero();  // for constant: world frame
+  physics::Vec3 point = physics::Vec3::Zero();     // where the arrow starts, body frame (m)
+  double scale = 1.0;                              // m of arrow per unit of the quantity
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+  std::string label;  // UTF-8, drawn at the tip; empty for none
+};
+
+// The path of a body point over the last `length` seconds, fading with age.
+struct TrailOverlay {
+  std::size_t body = 0;                         // index into Scene::bodies
+  physics::Vec3 point = physics::Vec3::Zero();  // body frame (m)
+  double length = 2.0;                          // s
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+};
+
+// The body's own x, y and z axes as arrows from its centre (red, green, blue).
+struct AxesOverlay {
+  std::size_t body = 0;  // index into Scene::bodies
+  double length = 1.0;   // m of each arrow
+};
+
+using OverlaySpec = std::variant<TextOverlay, VectorOverlay, TrailOverlay, AxesOverlay>;
+
+}  // namespace tumble::scene

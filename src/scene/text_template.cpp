@@ -1,0 +1,162 @@
+#include "scene/text_template.hpp"
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <utility>
+
+namespace tumble::scene {
+namespace {
+
+constexpr std::array<std::pair<std::string_view, BodyQuantity>, 7> kQuantities = {{
+    {"position", BodyQuantity::position},
+    {"velocity", BodyQuantity::velocity},
+    {"speed", BodyQuantity::speed},
+    {"angular_velocity", BodyQuantity::angular_velocity},
+    {"angular_speed", BodyQuantity::angular_speed},
+    {"angular_momentum", BodyQuantity::angular_momentum},
+    {"kinetic_energy", BodyQuantity::kinetic_energy},
+}};
+
+constexpr int kMaxPrecision = 17;  // digits: enough for any double, short enough for a frame
+
+std::string quantity_list() {
+  std::string out;
+  for (const auto& [name, quantity] : kQuantities) {
+    out += (out.empty() ? "" : ", ") + std::string(name);
+  }
+  return out;
+}
+
+// ":.Nf", ":.Ne" or ":.Ng" into `out`; false for anything else.
+bool parse_format(std::string_view spec, Placeholder& out) {
+  if (spec.size() < 3 || spec.size() > 4 || spec[0] != '.') return false;
+  const std::string_view digits = spec.substr(1, spec.size() - 2);
+  int precision = 0;
+  for (const char c : digits) {
+    if (c < '0' || c > '9') return false;
+    precision = 10 * precision + (c - '0');
+  }
+  const char conversion = spec.back();
+  if (precision > kMaxPrecision || (conversion != 'f' && conversion != 'e' && conversion != 'g')) {
+    return false;
+  }
+  out.precision = precision;
+  out.conversion = conversion;
+  return true;
+}
+
+// NAME.QUANTITY or NAME.QUANTITY.C; an error says which part is wrong. Body names may hold dots
+// themselves ("cube.1"), and quantity names end in others ("angular_velocity" in "velocity"), so
+// every split is tried; an unknown body is reported as the shortest name a split leaves.
+Result<Placeholder> parse_body_value(std::string_view name,
+                                     const std::vector<std::string>& body_names) {
+  std::optional<std::string_view> unknown_body;
+  for (const auto& [quantity_text, quantity] : kQuantities) {
+    for (int component = -1; component < 3; ++component) {
+      std::string suffix(1, '.');
+      suffix.append(quantity_text);
+      if (component >= 0) suffix.append(".").push_back(static_cast<char>('x' + component));
+      if (name.size() <= suffix.size() || !name.ends_with(suffix)) continue;
+      const std::string_view body = name.substr(0, name.size() - suffix.size());
+      const auto found = std::find(body_names.begin(), body_names.end(), body);
+      if (found == body_names.end()) {
+        if (!unknown_body || body.size() < unknown_body->size()) unknown_body = body;
+        continue;
+      }
+      if (component >= 0 && !is_vector(quantity)) {
+        std::string what(quantity_text);
+        what.append(" is a number, it has no component ").append(suffix, suffix.size() - 2, 2);
+        return Error{what};
+      }
+      Placeholder out{.source = Placeholder::Source::body,
+                      .body = static_cast<std::size_t>(found - body_names.begin()),
+                      .quantity = quantity};
+      out.component = component;
+      return out;
+    }
+  }
+  if (unknown_body) return Error{"no body is named \"" + std::string(*unknown_body) + "\""};
+  if (name.find('.') == std::string_view::npos) {
+    return Error{"expected time, frame or BODY.QUANTITY (QUANTITY one of " + quantity_list() + ")"};
+  }
+  return Error{"unknown quantity (expected one of " + quantity_list() +
+               ", optionally with .x, .y or .z)"};
+}
+
+// The placeholder between the braces: a name, then an optional :format.
+Result<Placeholder> parse_placeholder(std::string_view inside,
+                                      const std::vector<std::string>& body_names) {
+  const std::size_t colon = inside.find(':');
+  const std::string_view name = inside.substr(0, colon);
+  Placeholder out;
+  if (name == "time") {
+    out.source = Placeholder::Source::time;
+  } else if (name == "frame") {
+    out.source = Placeholder::Source::frame;
+  } else {
+    Result<Placeholder> value = parse_body_value(name, body_names);
+    if (!value) return value;
+    out = *value;
+  }
+  if (colon != std::string_view::npos && out.source == Placeholder::Source::frame) {
+    return Error{"frame is a whole number: it takes no format"};
+  }
+  if (colon != std::string_view::npos && !parse_format(inside.substr(colon + 1), out)) {
+    return Error{"unknown format \"" + std::string(inside.substr(colon)) +
+                 "\" (expected :.Nf, :.Ne or :.Ng, N from 0 to " + std::to_string(kMaxPrecision) +
+                 ")"};
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string_view quantity_name(BodyQuantity quantity) {
+  for (const auto& [name, known] : kQuantities) {
+    if (known == quantity) return name;
+  }
+  return "?";
+}
+
+bool is_vector(BodyQuantity quantity) {
+  return quantity == BodyQuantity::position || quantity == BodyQuantity::velocity ||
+         quantity == BodyQuantity::angular_velocity || quantity == BodyQuantity::angular_momentum;
+}
+
+Result<TextTemplate> parse_text_template(std::string_view text,
+                                         const std::vector<std::string>& body_names) {
+  TextTemplate out;
+  out.pieces.emplace_back();
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    const bool doubled = i + 1 < text.size() && text[i + 1] == c;
+    if ((c == '{' || c == '}') && doubled) {
+      out.pieces.back() += c;
+      ++i;
+    } else if (c == '}') {
+      return Error{"a lone \"}\" (write \"}}\" for a brace)"};
+    } else if (c == '{') {
+      const std::size_t close = text.find('}', i);
+      if (close == std::string_view::npos) {
+        return Error{"\"{\" without its \"}\" (write \"{{\" for a brace)"};
+      }
+      const std::string_view inside = text.substr(i + 1, close - i - 1);
+      Result<Placeholder> value = parse_placeholder(inside, body_names);
+      if (!value) {
+        // Appended one by one: GCC 12's -Wrestrict misreads "{" + std::string (a known bug).
+        std::string what(1, '{');
+        what.append(inside).append("}: ").append(value.error());
+        return Error{what};
+      }
+      out.values.push_back(*value);
+      out.pieces.emplace_back();
+      i = close;
+    } else {
+      out.pieces.back() += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace tumble::scene

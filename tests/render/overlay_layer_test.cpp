@@ -1,0 +1,158 @@
+// Lines and arrows drawn by the renderer in the 3D scene: an arrow's tip where the camera
+// projects it, the part a body hides drawn faint, and frames without them on today's path, byte
+// for byte. Goldens of each overlay kind, drawn from a scene, are in app/overlay_view_test.cpp.
+#include "render/overlay_layer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "render/geometry.hpp"
+#include "render/overlay_geometry.hpp"
+#include "render/renderer.hpp"
+#include "support/render_golden.hpp"
+
+namespace tumble::render {
+namespace {
+
+using testing::draw;
+using testing::kShaders;
+
+const Rgba kMagenta(1.0, 0.0, 1.0, 1.0);
+
+RenderSettings overlay_settings(int width, int height) {
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.ground.enabled = false;
+  settings.shadows = false;
+  settings.overlays = true;
+  return settings;
+}
+
+FrameView cube_with_arrow() {
+  FrameView view;
+  view.camera.position = Vec3(2.6, 2.0, 3.6);
+  view.boxes.push_back(Box{.orientation = Quat(Eigen::AngleAxisd(0.4, Vec3::UnitY()))});
+  view.arrows.push_back(Arrow{.from = Vec3::Zero(), .to = Vec3(1.4, 0.9, -0.3), .color = kMagenta});
+  return view;
+}
+
+// The arrow's colour at least half over the background (the edge filter blends its edges).
+bool is_magenta(const std::uint8_t* pixel) {
+  return pixel[0] - pixel[1] > 128 && pixel[2] - pixel[1] > 128;
+}
+
+// The tip, projected with the frame's camera (the renderer's matrices: near and far do not move
+// a point's x and y), against the magenta pixel farthest along the arrow on the picture.
+void expect_tip_within_two_pixels(int width, int height) {
+  const FrameView view = cube_with_arrow();
+  const io::Image image = draw(overlay_settings(width, height), view);
+  ASSERT_EQ(image.width, width);
+  const Camera& camera = view.camera;
+  const Mat4 view_projection = perspective(camera.fov_degrees * M_PI / 180.0,
+                                           static_cast<double>(width) / height, 0.1, 100.0) *
+                               look_at(camera.position, camera.look_at, camera.up);
+  const auto base = project_to_pixel(view_projection, view.arrows[0].from, width, height);
+  const auto tip = project_to_pixel(view_projection, view.arrows[0].to, width, height);
+  ASSERT_TRUE(base && tip);
+  const Eigen::Vector2d direction = (*tip - *base).normalized();
+  double farthest = -1e9;
+  Eigen::Vector2d farthest_pixel;
+  int count = 0;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      if (!is_magenta(image.row(y) + 3 * x)) continue;
+      ++count;
+      const Eigen::Vector2d centre(x + 0.5, y + 0.5);
+      if ((centre - *base).dot(direction) > farthest) {
+        farthest = (centre - *base).dot(direction);
+        farthest_pixel = centre;
+      }
+    }
+  }
+  ASSERT_GT(count, 10) << "no arrow drawn";
+  EXPECT_LE((farthest_pixel - *tip).norm(), 2.0)
+      << width << "x" << height << ": tip projected at (" << tip->x() << ", " << tip->y()
+      << "), farthest arrow pixel at (" << farthest_pixel.x() << ", " << farthest_pixel.y() << ")";
+}
+
+TEST(OverlayLayer, ArrowTipIsWithinTwoPixelsOfItsProjectionAt320x180) {
+  expect_tip_within_two_pixels(320, 180);
+}
+
+TEST(OverlayLayer, ArrowTipIsWithinTwoPixelsOfItsProjectionAt1280x720) {
+  expect_tip_within_two_pixels(1280, 720);
+}
+
+// Where the cube hides the shaft (its start, at the cube's centre) the arrow is drawn at
+// kHiddenOpacity over the cube: neither the cube alone nor the arrow's colour. No edge filter,
+// so the pixels are the blend itself: 0.3 × magenta + 0.7 × cube, within 2 of 255.
+TEST(OverlayLayer, ThePartABodyHidesIsDrawnFaint) {
+  RenderSettings settings = overlay_settings(1280, 720);  // a shaft 5 px wide
+  settings.msaa = 1;
+  const FrameView with = cube_with_arrow();
+  FrameView without = with;
+  without.arrows.clear();
+  const io::Image a = draw(settings, with), b = draw(settings, without);
+  const Mat4 view_projection =
+      perspective(with.camera.fov_degrees * M_PI / 180.0, 1280.0 / 720.0, 0.1, 100.0) *
+      look_at(with.camera.position, with.camera.look_at, with.camera.up);
+  // A tenth of the way along the arrow: inside the cube, seen through its front faces.
+  const auto inside = project_to_pixel(view_projection, 0.1 * with.arrows[0].to, 1280, 720);
+  ASSERT_TRUE(inside);
+  const int x = static_cast<int>(inside->x()), y = static_cast<int>(inside->y());
+  const std::uint8_t* drawn = a.row(y) + 3 * x;
+  const std::uint8_t* cube = b.row(y) + 3 * x;
+  for (int c = 0; c < 3; ++c) {
+    const double expected = kHiddenOpacity * 255.0 * kMagenta[c] + (1.0 - kHiddenOpacity) * cube[c];
+    EXPECT_NEAR(drawn[c], expected, 2.0) << "channel " << c;
+  }
+}
+
+// A renderer that draws overlays gives a frame without any the bytes of one that does not.
+TEST(OverlayLayer, FramesWithoutOverlaysAreThoseOfARendererWithoutThem) {
+  for (const int msaa : {kEdgeFilter, 4}) {
+    RenderSettings settings = overlay_settings(320, 180);
+    settings.msaa = msaa;
+    settings.ground.enabled = true;
+    settings.shadows = true;
+    RenderSettings without = settings;
+    without.overlays = false;
+    std::string error;
+    const auto renderer = Renderer::create(settings, kShaders, error);
+    ASSERT_TRUE(renderer) << error;
+    FrameView plain = cube_with_arrow();
+    plain.arrows.clear();
+    io::Image with_arrow, after;
+    renderer->draw(cube_with_arrow(), with_arrow);
+    renderer->draw(plain, after);
+    EXPECT_EQ(after.rgb, draw(without, plain).rgb) << "msaa " << msaa;
+    EXPECT_NE(with_arrow.rgb, after.rgb) << "msaa " << msaa;
+  }
+}
+
+// Six vertices (two triangles) a line segment; an arrow's shaft and head nine; what is behind
+// the camera nothing; a segment crossing the near plane cut, not dropped.
+TEST(OverlayGeometry, TrianglesPerItemAndTheNearPlane) {
+  const Mat4 view_projection = perspective(M_PI / 4.0, 16.0 / 9.0, 0.1, 100.0) *
+                               look_at(Vec3(0, 0, 5), Vec3::Zero(), Vec3::UnitY());
+  const auto vertices = [&](const std::vector<Polyline>& lines, const std::vector<Arrow>& arrows) {
+    return overlay_triangles(lines, arrows, view_projection, 1280, 720).size() /
+           kOverlayFloatsPerVertex;
+  };
+  const Polyline line{.points = {Vec3(-1, 0, 0), Vec3(0, 0, 0), Vec3(1, 1, 0)},
+                      .opacity = {0.0, 0.5, 1.0}};
+  EXPECT_EQ(vertices({line}, {}), 12u);
+  EXPECT_EQ(vertices({}, {Arrow{.from = Vec3::Zero(), .to = Vec3(1, 0, 0)}}), 9u);
+  EXPECT_EQ(vertices({}, {Arrow{.from = Vec3(0, 0, 6), .to = Vec3(1, 0, 7)}}), 0u);  // behind
+  EXPECT_EQ(vertices({}, {Arrow{.from = Vec3::Zero(), .to = Vec3(0, 0, 0.0001)}}), 0u);
+  // From in front to behind the camera: the shaft to the near plane, no head.
+  EXPECT_EQ(vertices({}, {Arrow{.from = Vec3(0.5, 0, 0), .to = Vec3(0.5, 0, 8)}}), 6u);
+  const Polyline crossing{.points = {Vec3(0, 0, 0), Vec3(0, 1, 9)}, .opacity = {1.0, 1.0}};
+  EXPECT_EQ(vertices({crossing}, {}), 6u);
+}
+
+}  // namespace
+}  // namespace tumble::render
