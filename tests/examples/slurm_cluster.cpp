@@ -4,6 +4,7 @@
 #include <netinet/in.h>
 #include <pwd.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -116,8 +117,9 @@ std::string SlurmCluster::write_config() const {
   // Plugins that need neither systemd nor cgroups: processes tracked through /proc, no task
   // binding, no accounting (that would need slurmdbd and a database).
   conf << "ClusterName=tumbletest\nSlurmctldHost=localhost\nSlurmUser=" << user_name()
-       << "\nSlurmctldPort=" << ports[0] << "\nSlurmdPort=" << ports[1]
-       << "\nAuthType=auth/munge\nAuthInfo=socket=" << d << "/munge.socket"
+       << "\nSlurmdUser=" << user_name() << "\nSlurmctldPort=" << ports[0]
+       << "\nSlurmdPort=" << ports[1] << "\nAuthType=auth/munge\nAuthInfo=socket=" << d
+       << "/munge.socket"
        << "\nProctrackType=proctrack/linuxproc\nTaskPlugin=task/none\nMpiDefault=none"
        << "\nJobAcctGatherType=jobacct_gather/none\nAccountingStorageType=accounting_storage/none"
        << "\nJobCompType=jobcomp/none\nSelectType=select/cons_tres\nSelectTypeParameters=CR_Core"
@@ -138,6 +140,8 @@ pid_t SlurmCluster::spawn(const std::string& program, const std::vector<std::str
   argv.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
+    // A test killed on a timeout takes its daemons with it instead of leaving them running.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int in = ::open("/dev/null", O_RDONLY);
     ::dup2(in, 0);
