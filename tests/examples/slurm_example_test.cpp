@@ -72,7 +72,8 @@ class SlurmExample : public tumble::testing::CommandTest {
     return jobs;
   }
 
-  // Waits for every job to end; the jobs' logs and the daemons' if they did not.
+  // Waits for every job to end (a failure with the queue and the jobs' logs if some did not), and
+  // keeps the jobs' logs for the messages of later checks.
   void wait_for_jobs() {
     const bool idle = cluster_->wait_until_idle(kJobsBound);
     std::string logs;
