@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "app/bench_chunks.hpp"
 #include "app/exit_codes.hpp"
 #include "app/interrupt.hpp"
 #include "app/render_job.hpp"
@@ -48,6 +49,19 @@ std::string shell_quote(const std::string& text) {
   return out + "'";
 }
 
+// The table on `out` and in OUT/pipeline.md.
+int publish(const std::string& table, const BenchPipelineOptions& options, std::FILE* out,
+            std::FILE* err) {
+  std::fputs(table.c_str(), out);
+  const std::string error =
+      io::write_file_atomically((fs::path(options.out) / "pipeline.md").string(), table);
+  if (!error.empty()) {
+    std::fprintf(err, "tumble: %s\n", error.c_str());
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std::FILE* err) {
@@ -82,6 +96,18 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     return kExitBadInput;
   }
   const fs::path root = scratch.path();
+  if (options.chunks > 0) {
+    const Result<std::string> chunk_table = bench_chunks(*job, options.chunks, root, err);
+    if (const int signal = interrupt_signal()) {
+      std::fprintf(err, "tumble: bench pipeline stopped by %s\n", signal_name(signal));
+      return kExitInterrupted + signal;
+    }
+    if (!chunk_table) {
+      std::fprintf(err, "tumble: %s\n", chunk_table.error().c_str());
+      return kExitBadInput;
+    }
+    return publish(*chunk_table, options, out, err);
+  }
   std::error_code error_code;
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
 
@@ -160,15 +186,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
                   r.how.c_str(), r.note.empty() ? "" : "; ", r.note.c_str());
     table << line;
   }
-  std::fputs(table.str().c_str(), out);
-
-  io::AtomicFile report((fs::path(options.out) / "pipeline.md").string());
-  if (report.ok()) std::fputs(table.str().c_str(), report.stream());
-  if (!report.ok() || !report.commit()) {
-    std::fprintf(err, "tumble: %s\n", report.error().c_str());
-    return kExitBadInput;
-  }
-  return kExitOk;
+  return publish(table.str(), options, out, err);
 }
 
 }  // namespace tumble::app

@@ -15,9 +15,12 @@ struct BenchPipelineOptions {
   std::int64_t frames = 300;
   int msaa = 0;  // samples per pixel; 0 = as the scene says, as `tumble render` draws it
   std::string out = "output/bench";  // pipeline.md goes here; frames are written and removed
+  // > 0: instead of the paths, the whole render against this many chunks (app/bench_chunks.hpp)
+  std::int64_t chunks = 0;
 };
 
-// Prints a table of frames/s per path and their ratios; returns the process exit code.
+// Prints a table of frames/s per path and their ratios (or, with `chunks`, of the chunks' costs
+// against the whole render's) and writes it to OUT/pipeline.md; returns the process exit code.
 int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std::FILE* err);
 
 }  // namespace tumble::app

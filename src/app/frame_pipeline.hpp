@@ -31,6 +31,9 @@ struct StageTime {
   double wall = 0.0;  // s between the stage's start and end of work, summed over frames
 };
 
+// CPU time of every thread of this process so far, user and system (s).
+double process_cpu_seconds();
+
 struct PipelineReport {
   std::string error;             // "" when every frame went through every stage
   std::int64_t frames_done = 0;  // frames that finished every stage

@@ -16,10 +16,14 @@ Result<std::unique_ptr<FrameSink>> PngFrames::open(const std::string& folder,
   return std::unique_ptr<FrameSink>(new PngFrames(folder, settings));
 }
 
-std::string PngFrames::write(std::int64_t frame, const io::Image& image) {
+std::string png_frame_name(std::int64_t frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%05lld.png", static_cast<long long>(frame));
-  return io::write_png((fs::path(folder_) / name).string(), image, settings_);
+  return name;
+}
+
+std::string PngFrames::write(std::int64_t frame, const io::Image& image) {
+  return io::write_png((fs::path(folder_) / png_frame_name(frame)).string(), image, settings_);
 }
 
 Result<std::unique_ptr<FrameSink>> Mp4Video::open(const std::string& path,

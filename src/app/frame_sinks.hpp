@@ -26,6 +26,9 @@ class FrameSink {
   virtual std::string finish() { return {}; }
 };
 
+// The file name of frame `frame` in a render's frames/ folder: "frame_00042.png".
+std::string png_frame_name(std::int64_t frame);
+
 // frame_00000.png ... in a folder, which it creates.
 class PngFrames final : public FrameSink {
  public:

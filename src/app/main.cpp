@@ -13,6 +13,8 @@
 #include "app/bench_pipeline.hpp"
 #include "app/check_command.hpp"
 #include "app/diff_command.hpp"
+#include "app/join_command.hpp"
+#include "app/plan_command.hpp"
 #include "app/process.hpp"
 #include "app/render_command.hpp"
 #include "app/simulate_command.hpp"
@@ -90,18 +92,27 @@ int main(int argc, char** argv) {
   render_command->add_option("--height", render.height, "Image height (pixels)")
       ->check(CLI::Range(tumble::scene::kMinImageSide, tumble::scene::kMaxImageSide));
   render_command->add_option("--fps", render.fps, "Frames per second")->check(CLI::Range(1, 240));
-  render_command->add_option("--frames", frame_range, "Render frames A to B-1 only (A:B)")
-      ->check(kNotEmpty);
+  CLI::Option* frames_option =
+      render_command->add_option("--frames", frame_range, "Render frames A to B-1 only (A:B)")
+          ->check(kNotEmpty);
+  std::string chunk_index;
+  render_command
+      ->add_option("--chunk", chunk_index,
+                   "Render chunk I of N (I/N, from 1): the frames of line I of `tumble plan "
+                   "--chunks N`, into OUTPUT/<scene output directory>.chunk-I-of-N/")
+      ->check(kNotEmpty)
+      ->excludes(frames_option);
   render_command->add_flag("!--no-frames", render.frames, "Do not write PNG frames");
   render_command->add_flag("!--no-video", render.video, "Do not write the MP4");
   render_command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");
   render_command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
   render_command->add_flag("--serial", render.serial,
                            "Render, write and encode on one thread (slower; same bytes)");
-  std::string backend = "auto";
+  std::string backend;
   render_command
       ->add_option("--backend", backend,
-                   "Off-screen OpenGL: osmesa, egl (surfaceless) or auto (OSMesa if built in)")
+                   "Off-screen OpenGL: osmesa, egl (surfaceless) or auto (OSMesa if built in); "
+                   "replaces the scene's [render] backend")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
   std::string png_compression = "fast";
   render_command
@@ -110,6 +121,34 @@ int main(int argc, char** argv) {
                    "small (zlib 9, adaptive filter)")
       ->check(CLI::IsMember({"fast", "default", "small"}))
       ->capture_default_str();
+
+  PlanOptions plan;
+  CLI::App* plan_command = app.add_subcommand(
+      "plan", "Print the frame ranges of a render cut into chunks, one A:B per line");
+  plan_command->add_option("scene", plan.render.scene_path, "Scene file (TOML)")->required();
+  CLI::Option* plan_chunks =
+      plan_command->add_option("--chunks", plan.chunks, "Cut into N chunks, as even as possible")
+          ->check(whole_number_in(1, LLONG_MAX, ">= 1"));
+  plan_command
+      ->add_option("--chunk-frames", plan.chunk_frames,
+                   "Cut into as few chunks of at most K frames as cover the scene, as even as "
+                   "possible")
+      ->check(whole_number_in(1, LLONG_MAX, ">= 1"))
+      ->excludes(plan_chunks);
+  plan_command->add_option("--fps", plan.render.fps, "Frames per second (as render --fps)")
+      ->check(CLI::Range(1, 240));
+  plan_command->add_flag("--json", plan.json, "Print the plan as JSON");
+
+  JoinOptions join;
+  CLI::App* join_command = app.add_subcommand(
+      "join", "Join the chunk folders of one render into one render folder (frames, MP4, report)");
+  join_command->add_option("out", join.out, "Render folder to write (replaced as a whole)")
+      ->required()
+      ->check(kNotEmpty);
+  join_command->add_option("chunks", join.chunks, "Chunk folders, in any order")
+      ->required()
+      ->check(kNotEmpty);
+  join_command->add_flag("-q,--quiet", join.quiet, "No summary");
 
   DiffCommandOptions diff;
   std::string diff_frames;
@@ -180,6 +219,11 @@ int main(int argc, char** argv) {
       ->add_option("--msaa", bench_pipeline.msaa,
                    "Samples per pixel (default: the scene's [render] msaa, as tumble render)")
       ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  bench_pipeline_command
+      ->add_option("--chunks", bench_pipeline.chunks,
+                   "Instead: the whole render against N chunks, each a process of its own "
+                   "(per-chunk overhead and total CPU)")
+      ->check(whole_number_in(1, 100000, "from 1 to 100000"));
   bench_pipeline_command->add_option("--out", bench_pipeline.out, "Folder for pipeline.md")
       ->check(kNotEmpty)
       ->capture_default_str();
@@ -237,6 +281,8 @@ int main(int argc, char** argv) {
     if (bench_accuracy_command->parsed()) return run_bench_accuracy(bench_accuracy, stdout, stderr);
     if (bench_contact_command->parsed()) return run_bench_contact(bench_contact, stdout, stderr);
     if (check_command->parsed()) return run_check(check, stdout, stderr);
+    if (plan_command->parsed()) return run_plan(plan, stdout, stderr);
+    if (join_command->parsed()) return run_join(join, stderr);
     if (diff_command->parsed()) {
       if (!diff_frames.empty()) {
         diff.frames = parse_range(diff_frames);
@@ -260,9 +306,17 @@ int main(int argc, char** argv) {
         render.first_frame = range->first;
         render.end_frame = range->second;
       }
+      if (!chunk_index.empty()) {
+        render.chunk = parse_chunk_index(chunk_index);
+        if (!render.chunk) {
+          std::fprintf(stderr,
+                       "tumble: --chunk: expected I/N (chunk I of N, 1 <= I <= N), got %s\n",
+                       chunk_index.c_str());
+          return kExitBadInput;
+        }
+      }
       render.png = *tumble::io::png_settings_named(png_compression);  // checked by IsMember
-      for (const auto each : {tumble::render::Backend::automatic, tumble::render::Backend::osmesa,
-                              tumble::render::Backend::egl}) {
+      for (const auto each : tumble::common::kAllBackends) {
         if (backend == tumble::render::backend_name(each)) render.backend = each;
       }
       return run_render(render, stderr);

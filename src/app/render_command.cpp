@@ -14,6 +14,7 @@
 #include "app/output_folder.hpp"
 #include "app/progress.hpp"
 #include "app/render_job.hpp"
+#include "app/scene_hash.hpp"
 #include "app/stability_report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/staged_directory.hpp"
@@ -36,6 +37,29 @@ std::string stage_json(const StageTime& stage) {
   return out.str();
 }
 
+// What `tumble join` requires to be the same in every chunk (besides the scene's hash): what
+// decides the pixels of the frames and the bytes of the files. The MP4's pixel format (yuv420p)
+// and encoder threads are fixed by the build, and io::join_videos compares the H.264 headers.
+std::string settings_json(const RenderJob& job, const RenderResult& result) {
+  const scene::Scene& scene = job.scene;
+  std::ostringstream out;
+  out << "{\"width\": " << scene.render.width << ", \"height\": " << scene.render.height
+      << ", \"fps\": " << scene.fps << ", \"msaa\": " << scene.render.msaa
+      << ", \"frames\": " << (scene.output.frames ? "true" : "false")
+      << ", \"png_zlib_level\": " << job.png.compression_level
+      << ", \"png_filter\": " << (job.png.filter ? "true" : "false")
+      << ", \"video\": " << (scene.output.video ? "true" : "false")
+      << ", \"crf\": " << scene.output.crf << ", \"preset\": " << json_string(scene.output.preset)
+      << ", \"opengl\": " << json_string(result.opengl) << "}";
+  return out.str();
+}
+
+std::string chunk_json(const RenderJob& job) {
+  if (!job.chunk) return "null";
+  return "{\"index\": " + std::to_string(job.chunk->index) +
+         ", \"count\": " + std::to_string(job.chunk->count) + "}";
+}
+
 std::string report_json(const RenderJob& job, const RenderResult& result, double total_seconds) {
   const scene::Scene& scene = job.scene;
   const PipelineReport& p = result.pipeline;
@@ -49,6 +73,9 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
   // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
   out << "{\n  \"scene\": " << json_string(scene.name)
       << ",\n  \"scene_file\": " << json_string(scene.source_path)
+      << ",\n  \"scene_hash\": " << json_string(job.scene_hash)
+      << ",\n  \"scene_frames\": " << job.frame_count << ",\n  \"chunk\": " << chunk_json(job)
+      << ",\n  \"settings\": " << settings_json(job, result)
       << ",\n  \"width\": " << scene.render.width << ",\n  \"height\": " << scene.render.height
       << ",\n  \"fps\": " << scene.fps << ",\n  \"msaa\": " << scene.render.msaa
       << ",\n  \"antialiasing\": " << json_string(antialiasing_name(scene.render.msaa))
@@ -61,7 +88,8 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
       << ",\n  \"renderer\": " << json_string(result.renderer)
       << ",\n  \"physics_steps\": {\"framing\": " << result.framing_steps
-      << ", \"frames\": " << result.frame_steps << "}"
+      << ", \"frames\": " << result.frame_steps << ", \"to_first_frame\": " << result.seek_steps
+      << "}"
       << ",\n  \"stages\": {\"simulate\": " << stage_json(p.simulate)
       << ", \"render\": " << stage_json(p.render);
   for (std::size_t i = 0; i < result.stages.size(); ++i) {
@@ -69,6 +97,9 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
   }
   out << "},\n  \"seconds\": {\"setup\": " << result.setup_seconds << ", \"frames\": " << p.wall
       << ", \"finish\": " << result.finish_seconds << ", \"total\": " << total_seconds
+      << "},\n  \"cpu_seconds_before_first_frame\": {\"framing\": " << result.framing_seconds
+      << ", \"renderer\": " << result.renderer_seconds
+      << ", \"to_first_frame\": " << result.seek_seconds
       << "},\n  \"frames_per_second\": " << (p.wall > 0 ? p.frames_done / p.wall : 0.0)
       << ",\n  \"cores\": " << cores << ",\n  \"pipeline_efficiency\": " << efficiency
       << ",\n  \"peak_memory_bytes\": " << peak_memory_bytes() << ",\n  \"bodies\": [";
@@ -84,28 +115,27 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
   return out.str();
 }
 
-std::string write_text_file(const std::string& path, const std::string& text) {
-  io::AtomicFile file(path);
-  if (!file.ok()) return file.error();
-  std::fwrite(text.data(), 1, text.size(), file.stream());
-  return file.commit() ? std::string() : file.error();
-}
-
 }  // namespace
 
 int run_render(const RenderOptions& options, std::FILE* err) {
   const auto start = Clock::now();
   install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
-  const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
+  const Result<std::string> text = scene::read_scene_text(options.scene_path);
+  if (!text) {
+    std::fprintf(err, "tumble: %s\n", text.error().c_str());
+    return kExitBadInput;
+  }
+  const scene::SceneOrError loaded = scene::parse_scene(*text, options.scene_path);
   if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
     return kExitBadInput;
   }
-  const Result<RenderJob> made = make_render_job(std::get<scene::Scene>(loaded), options);
+  Result<RenderJob> made = make_render_job(std::get<scene::Scene>(loaded), options);
   if (!made) {
     std::fprintf(err, "tumble: %s\n", made.error().c_str());
     return kExitBadInput;
   }
+  made->scene_hash = scene_hash(*text, made->scene);
   const RenderJob& job = *made;
   if (!options.quiet) print_stability_warnings(job.scene, err);
 
@@ -147,8 +177,8 @@ int run_render(const RenderOptions& options, std::FILE* err) {
   }
 
   const double total_seconds = seconds_since(start);
-  std::string error =
-      write_text_file((staging / "report.json").string(), report_json(job, result, total_seconds));
+  std::string error = io::write_file_atomically((staging / "report.json").string(),
+                                                report_json(job, result, total_seconds));
   // Checked again: the folder may have been made or filled while the frames were drawn.
   if (error.empty()) error = replace_problem(job.output_root, job.scene.output.directory);
   if (error.empty() && !staged.commit()) error = staged.error();

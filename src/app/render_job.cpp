@@ -27,6 +27,7 @@ void apply_overrides(const RenderOptions& options, scene::Scene& scene) {
   if (options.msaa) scene.render.msaa = *options.msaa;
   if (options.duration) scene.duration = *options.duration;
   if (options.preset) scene.output.preset = *options.preset;
+  if (options.backend) scene.render.backend = *options.backend;
   scene.output.frames = scene.output.frames && options.frames;
   scene.output.video = scene.output.video && options.video;
 }
@@ -47,11 +48,54 @@ Result<std::vector<std::unique_ptr<FrameSink>>> open_sinks(const RenderJob& job,
                                                 .height = scene.render.height,
                                                 .fps = scene.fps,
                                                 .crf = scene.output.crf,
+                                                .segment = job.partial(),
+                                                .first_frame = job.partial() ? job.first : 0,
                                                 .preset = scene.output.preset});
     if (!video) return Error{video.error()};
     sinks.push_back(std::move(*video));
   }
   return sinks;
+}
+
+// The frames the options ask for out of the scene's `total`: all, --frames A:B, or --chunk I/N.
+Result<FrameRange> frame_range(const RenderOptions& options, std::int64_t total) {
+  if (options.chunk) {
+    if (options.first_frame || options.end_frame) {
+      return Error{"--chunk and --frames both choose the frames: give one of them"};
+    }
+    const Result<std::vector<FrameRange>> plan = plan_chunks(total, options.chunk->count);
+    if (!plan)
+      return Error{"--chunk " + std::to_string(options.chunk->index) + "/" +
+                   std::to_string(options.chunk->count) + ": " + plan.error()};
+    return (*plan)[static_cast<std::size_t>(options.chunk->index - 1)];
+  }
+  const FrameRange range{options.first_frame.value_or(0), options.end_frame.value_or(total)};
+  if (range.first < 0 || range.end > total || range.first >= range.end) {
+    return Error{"--frames " + range_text(range) +
+                 " is outside the scene's frames 0:" + std::to_string(total)};
+  }
+  return range;
+}
+
+// The renderer of the job's frames on this thread (its context, its shaders compiled), timed and
+// described in `result`; null, with result.error set, when this OpenGL cannot draw the scene.
+std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Framing& framing,
+                                                RenderResult& result) {
+  const double start = process_cpu_seconds();
+  // No font: no scene draws text yet.
+  render::RenderSettings settings{job.scene.render, std::string()};
+  settings.ground = framing.ground;
+  std::unique_ptr<render::Renderer> renderer =
+      render::Renderer::create(settings, job.shader_directory, result.error);
+  if (!renderer) {
+    // Mostly what the scene asks of this OpenGL ([render] msaa beyond its samples): name it.
+    result.error = job.scene.source_path + ": " + result.error;
+    return nullptr;
+  }
+  result.renderer = renderer->description();
+  result.opengl = renderer->opengl();
+  result.renderer_seconds = process_cpu_seconds() - start;
+  return renderer;
 }
 
 }  // namespace
@@ -93,19 +137,26 @@ std::string RenderJob::video_path(const fs::path& folder) const {
   return scene.output.video ? (folder / (scene.name + ".mp4")).string() : std::string();
 }
 
-Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& options) {
+Result<scene::Scene> scene_as_rendered(scene::Scene scene, const RenderOptions& options) {
   apply_overrides(options, scene);
   // The loaded scene kept every rule: what breaks one now is an override.
   if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {
     return Error{scene.source_path + ": " + broken->keys.front() +
                  ", as the command line sets it: " + broken->problem};
   }
+  return scene;
+}
+
+Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& options) {
+  Result<scene::Scene> overridden = scene_as_rendered(std::move(loaded), options);
+  if (!overridden) return Error{overridden.error()};
+  scene::Scene& scene = *overridden;
   const std::int64_t total = scene::frame_count(scene);
-  const std::int64_t first = options.first_frame.value_or(0);
-  const std::int64_t end = options.end_frame.value_or(total);
-  if (first < 0 || end > total || first >= end) {
-    return Error{"--frames " + std::to_string(first) + ":" + std::to_string(end) +
-                 " is outside the scene's frames 0:" + std::to_string(total)};
+  Result<FrameRange> range = frame_range(options, total);
+  if (!range) return Error{range.error()};
+  if (options.chunk) {
+    scene.output.directory += ".chunk-" + std::to_string(options.chunk->index) + "-of-" +
+                              std::to_string(options.chunk->count);
   }
   std::string shader_directory = find_shader_directory();
   if (shader_directory.empty()) {
@@ -117,13 +168,14 @@ Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& optio
   const fs::path directory = root / scene.output.directory;
   return RenderJob{.scene = std::move(scene),
                    .frame_count = total,
-                   .first = first,
-                   .end = end,
+                   .first = range->first,
+                   .end = range->end,
+                   .chunk = options.chunk,
+                   .scene_hash = std::string(),  // set by the caller that read the file
                    .output_root = root,
                    .directory = directory,
                    .png = options.png,
                    .serial = options.serial,
-                   .backend = options.backend,
                    .shader_directory = std::move(shader_directory)};
 }
 
@@ -138,28 +190,29 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
     result.error = sinks.error();
     return result;
   }
+  double start = process_cpu_seconds();
   const Result<Framing> framing = frame_scene(scene, job.frame_count, stop_requested);
   if (!framing) {
     result.error = framing.error();
     return result;
   }
   result.framing_steps = framing->physics_steps;
-  // No font: no scene draws text yet.
-  render::RenderSettings settings{scene.render, job.backend, std::string()};
-  settings.ground = framing->ground;
-  const std::unique_ptr<render::Renderer> renderer =
-      render::Renderer::create(settings, job.shader_directory, result.error);
-  if (!renderer) {
-    // Mostly what the scene asks of this OpenGL ([render] msaa beyond its samples): name it.
-    result.error = scene.source_path + ": " + result.error;
-    return result;
-  }
-  result.renderer = renderer->description();
+  result.framing_seconds = process_cpu_seconds() - start;
+  const std::unique_ptr<render::Renderer> renderer = make_renderer(job, *framing, result);
+  if (!renderer) return result;
   SimulatedFrames source(scene, *framing, stop_requested);
   for (const physics::BodyState& state : source.simulation().current()) {
     result.bodies.push_back({.energy_start = physics::kinetic_energy(state),
                              .angular_momentum_start = state.angular_momentum().norm()});
   }
+  start = process_cpu_seconds();
+  const Result<std::int64_t> seek_steps = source.seek(job.first);
+  if (!seek_steps) {
+    result.error = seek_steps.error();
+    return result;
+  }
+  result.seek_steps = *seek_steps;
+  result.seek_seconds = process_cpu_seconds() - start;
   std::vector<FrameSink*> sink_list;
   for (const std::unique_ptr<FrameSink>& sink : *sinks) {
     sink_list.push_back(sink.get());

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/chunk_plan.hpp"
 #include "app/frame_pipeline.hpp"
 #include "common/result.hpp"
 #include "io/png_io.hpp"
@@ -28,25 +29,34 @@ struct RenderOptions {
   std::optional<double> duration;         // s (bench pipeline's --frames)
   std::optional<std::string> preset;      // [output] preset (bench pipeline's x264 presets)
   std::optional<std::int64_t> first_frame, end_frame;  // --frames A:B renders A .. B-1
+  // --chunk I/N: line I of `tumble plan --chunks N`, into <scene output directory>.chunk-I-of-N
+  std::optional<ChunkIndex> chunk;
   bool frames = true;  // false: no PNG frames, whatever [output] frames says
   bool video = true;   // false: no MP4, whatever [output] video says
   bool quiet = false;
   bool verbose = false;
   bool serial = false;  // one thread: the reference the pipelined path must match byte for byte
   io::PngSettings png;  // fast by default; see io/png_io.hpp
-  render::Backend backend = render::Backend::automatic;  // --backend: which off-screen OpenGL
+  std::optional<render::Backend> backend;  // --backend: replaces [render] backend
 };
 
 struct RenderJob {
-  scene::Scene scene;                 // with the overrides; keeps every rule of scene/video_rules
+  // With the overrides; keeps every rule of scene/video_rules. For a chunk, its
+  // output.directory is the chunk's folder, <the scene's>.chunk-I-of-N.
+  scene::Scene scene;
   std::int64_t frame_count = 0;       // of the whole scene, from scene::frame_count
   std::int64_t first = 0, end = 0;    // frames first .. end-1 are rendered
+  std::optional<ChunkIndex> chunk;    // when rendered as --chunk I/N
+  std::string scene_hash;             // app/scene_hash.hpp, when the scene came from a file
   std::filesystem::path output_root;  // spelt one way ("a/../b" is "b"), as StagedDirectory does
   std::filesystem::path directory;    // the final folder: output_root / [output] directory
   io::PngSettings png;
   bool serial = false;  // one thread, for comparison (same bytes as the pipeline)
-  render::Backend backend = render::Backend::automatic;
   std::string shader_directory;
+
+  // A part of the whole render (a chunk or --frames A:B): its MP4 is then a segment to be
+  // joined (io::VideoSettings::segment).
+  bool partial() const { return first > 0 || end < frame_count; }
 
   // Where the frames and the video go in `folder` (the folder being written, or `directory` in
   // the report): "" for an output that is off.
@@ -55,7 +65,10 @@ struct RenderJob {
 };
 
 // The scene with the options' overrides, held to the video rules once more (an override can
-// break them), with its frame range and shaders. Errors name the scene file and the key.
+// break them). Errors name the scene file and the key.
+Result<scene::Scene> scene_as_rendered(scene::Scene scene, const RenderOptions& options);
+
+// scene_as_rendered, with its frame range (all, --frames or --chunk) and shaders.
 Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& options);
 
 struct BodyDiagnostics {
@@ -68,10 +81,16 @@ struct RenderResult {
   PipelineReport pipeline;      // the frames
   double setup_seconds = 0.0;   // framing, renderer and sinks' set-up (s, wall)
   double finish_seconds = 0.0;  // finishing the sinks: draining the encoder, closing the MP4 (s)
-  std::string renderer;         // the OpenGL implementation
+  std::string renderer;         // the OpenGL implementation and the back end that drew
+  std::string opengl;           // the OpenGL implementation alone: what decides the pixels
   std::vector<const char*> stages;  // each sink's stage name, as in pipeline.sinks
   std::int64_t framing_steps = 0;   // physics steps of the framing pass (0 when not run)
-  std::int64_t frame_steps = 0;     // physics steps of the frames
+  std::int64_t seek_steps = 0;      // physics steps up to the first frame (0 from frame 0)
+  std::int64_t frame_steps = 0;     // physics steps of the frames, from the start of time
+  // What a render pays before its first frame whatever its length (s, CPU of every thread):
+  double framing_seconds = 0.0;   // the framing pass
+  double renderer_seconds = 0.0;  // the OpenGL context and the shaders' compilation
+  double seek_seconds = 0.0;      // the physics up to the first frame
   std::vector<BodyDiagnostics> bodies;
 };
 

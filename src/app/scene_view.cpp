@@ -215,4 +215,13 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
   return frame_view(scene_, framing_, *states, t);
 }
 
+Result<std::int64_t> SimulatedFrames::seek(std::int64_t frame) {
+  const std::int64_t before = simulation_.step_count();
+  const double t = static_cast<double>(frame) / scene_.fps;  // s, as view() computes it
+  const Result<std::vector<physics::BodyState>> states =
+      checked_states_at(simulation_, scene_, t, stop_requested_);
+  if (!states) return Error{states.error()};
+  return simulation_.step_count() - before;
+}
+
 }  // namespace tumble::app

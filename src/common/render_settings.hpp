@@ -30,6 +30,29 @@ struct Ground {
 // the picture.
 inline constexpr int kEdgeFilter = 0;
 
+// Which off-screen OpenGL draws (render/offscreen_context.hpp). Both are Mesa's and draw the same
+// bytes on llvmpipe (tests/render/backend_test.cpp), so the choice is the machine's, not the
+// picture's: a scene may ask for one ([render] backend) where it knows the machine.
+enum class Backend {
+  automatic,  // OSMesa where it was built in and works, else EGL
+  osmesa,
+  egl,
+};
+
+// "auto", "osmesa", "egl": the name in scenes and on the command line.
+constexpr const char* backend_name(Backend backend) {
+  switch (backend) {
+    case Backend::automatic:
+      return "auto";
+    case Backend::osmesa:
+      return "osmesa";
+    case Backend::egl:
+      return "egl";
+  }
+  return "unknown";
+}
+inline constexpr Backend kAllBackends[] = {Backend::automatic, Backend::osmesa, Backend::egl};
+
 // Fixed for a whole render.
 struct RenderSettings {
   int width = 1280;  // pixels
@@ -41,6 +64,7 @@ struct RenderSettings {
   DirectionalLight light;
   Ground ground;
   bool shadows = true;
+  Backend backend = Backend::automatic;  // [render] backend; tumble render's --backend overrides
 };
 
 }  // namespace tumble::common

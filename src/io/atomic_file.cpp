@@ -160,4 +160,11 @@ bool AtomicFile::commit() {
   return true;
 }
 
+std::string write_file_atomically(const std::string& path, const std::string& bytes) {
+  AtomicFile file(path);
+  if (!file.ok()) return file.error();
+  std::fwrite(bytes.data(), 1, bytes.size(), file.stream());
+  return file.commit() ? std::string() : file.error();
+}
+
 }  // namespace tumble::io

@@ -45,4 +45,8 @@ class AtomicFile {
   Durability durability_;
 };
 
+// `bytes` as the whole of the file at `path`, through an AtomicFile (synced). Returns "" on
+// success, else why not, naming the path.
+std::string write_file_atomically(const std::string& path, const std::string& bytes);
+
 }  // namespace tumble::io

@@ -13,6 +13,7 @@
 
 extern "C" {
 #include <libavutil/error.h>
+#include <libavutil/log.h>
 }
 
 namespace tumble::io {
@@ -111,6 +112,9 @@ VideoSegmentInfo read_segment_info(const std::string& path) {
 
 std::string join_videos(const std::vector<std::string>& segments, const std::string& path) {
   if (segments.empty()) return path + ": no segments to join";
+  // libav's notes (the muxer's second pass, a truncated file's warnings) stay off stderr: every
+  // failure comes back as a message naming the segment.
+  av_log_set_level(AV_LOG_FATAL);
   // Every segment read whole and checked before anything is written.
   std::vector<VideoSegmentInfo> infos;
   for (const std::string& segment : segments) {

@@ -81,10 +81,9 @@ struct Text {
   double opacity = 1.0;                           // of glyphs and box together, to fade (0-1)
 };
 
-// Fixed for a whole render: what the scene asks for (common/render_settings.hpp), and what the
-// machine draws it with, which is not the scene's business (yet).
+// Fixed for a whole render: what the scene asks for (common/render_settings.hpp, with the back
+// end that draws it), and the font its text is drawn in.
 struct RenderSettings : common::RenderSettings {
-  Backend backend = Backend::automatic;  // which off-screen OpenGL draws (offscreen_context.hpp)
   // The fontconfig family FrameView::texts are drawn in (kDefaultFontFamily, render/font.hpp,
   // unless the scene chooses); empty for a render without text, which then loads no font.
   std::string font;

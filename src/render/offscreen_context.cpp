@@ -2,18 +2,6 @@
 
 namespace tumble::render {
 
-const char* backend_name(Backend backend) {
-  switch (backend) {
-    case Backend::automatic:
-      return "auto";
-    case Backend::osmesa:
-      return "osmesa";
-    case Backend::egl:
-      return "egl";
-  }
-  return "unknown";
-}
-
 bool backend_built(Backend backend) {
   switch (backend) {
     case Backend::automatic:

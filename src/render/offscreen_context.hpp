@@ -7,16 +7,13 @@
 #include <memory>
 #include <string>
 
+#include "common/render_settings.hpp"
+
 namespace tumble::render {
 
-enum class Backend {
-  automatic,  // OSMesa where it was built in and works, else EGL
-  osmesa,
-  egl,
-};
-
-// "auto", "osmesa", "egl": the name in scenes and on the command line.
-const char* backend_name(Backend backend);
+// The choice, named where scenes can name it too (common/render_settings.hpp).
+using common::Backend;
+using common::backend_name;
 
 class OffscreenContext {
  public:

@@ -276,6 +276,10 @@ std::string Renderer::description() const {
   return resources_->context->description();
 }
 
+std::string Renderer::opengl() const {
+  return gl_description();
+}
+
 const Font* Renderer::font() const {
   return resources_->text ? &resources_->text->font() : nullptr;
 }

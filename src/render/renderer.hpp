@@ -31,8 +31,11 @@ class Renderer {
   // the thread that created the renderer.
   void draw(const FrameView& view, io::Image& out);
 
-  // The GL implementation in use, for --verbose.
+  // The GL implementation in use and the back end that made its context, for --verbose.
   std::string description() const;
+  // The GL implementation alone (GL_RENDERER and GL_VERSION): what decides the pixels, as the
+  // back ends draw the same bytes. On the thread that created the renderer.
+  std::string opengl() const;
 
   // The font FrameView::texts are drawn in, to warn about the characters it lacks
   // (Font::missing_characters); null when the settings name no font.

@@ -26,6 +26,15 @@ void read_render(TableReader& in, Scene& scene) {
   }
   r.background = in.optional_color("background", r.background);
   r.shadows = in.optional_bool("shadows", r.shadows);
+  const std::string backend = in.optional_string("backend", common::backend_name(r.backend));
+  const auto named =
+      std::find_if(std::begin(common::kAllBackends), std::end(common::kAllBackends),
+                   [&](common::Backend each) { return backend == backend_name(each); });
+  if (named == std::end(common::kAllBackends)) {
+    in.fail("backend",
+            "unknown off-screen OpenGL " + in_quotes(backend) + " (auto, osmesa or egl)");
+  }
+  r.backend = *named;
   in.reject_unknown_keys();
 }
 

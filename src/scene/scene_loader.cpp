@@ -325,24 +325,30 @@ SceneOrError parse_scene(std::string_view text, const std::string& path) {
   }
 }
 
-SceneOrError load_scene_file(const std::string& path) {
+Result<std::string> read_scene_text(const std::string& path) {
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
-    return SceneError{path + ": is a folder, not a scene file"};
+    return Error{path + ": is a folder, not a scene file"};
   }
   std::ifstream file(path, std::ios::binary);
-  if (!file) return SceneError{path + ": cannot open scene file: " + std::strerror(errno)};
+  if (!file) return Error{path + ": cannot open scene file: " + std::strerror(errno)};
   std::string text;
   char chunk[1 << 16];
   while (file.read(chunk, sizeof chunk) || file.gcount() > 0) {
     text.append(chunk, static_cast<std::size_t>(file.gcount()));
     if (text.size() > static_cast<std::size_t>(kMaxSceneFileBytes)) {
-      return SceneError{path + ": scene file is larger than the limit of " +
-                        std::to_string(kMaxSceneFileBytes / (1024 * 1024)) + " MB"};
+      return Error{path + ": scene file is larger than the limit of " +
+                   std::to_string(kMaxSceneFileBytes / (1024 * 1024)) + " MB"};
     }
   }
-  if (file.bad()) return SceneError{path + ": error reading scene file"};
-  return parse_scene(text, path);
+  if (file.bad()) return Error{path + ": error reading scene file"};
+  return text;
+}
+
+SceneOrError load_scene_file(const std::string& path) {
+  const Result<std::string> text = read_scene_text(path);
+  if (!text) return SceneError{text.error()};
+  return parse_scene(*text, path);
 }
 
 }  // namespace tumble::scene

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <variant>
 
+#include "common/result.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
@@ -21,6 +22,10 @@ using SceneOrError = std::variant<Scene, SceneError>;
 
 // Loads a scene from a file; the file's stem is the default scene name.
 SceneOrError load_scene_file(const std::string& path);
+
+// A scene file's bytes, as load_scene_file reads them (up to kMaxSceneFileBytes), for a caller
+// that keeps them (a render hashes the scene it drew); errors name the path.
+Result<std::string> read_scene_text(const std::string& path);
 
 // Loads a scene from text; `path` names it in messages and gives the default name.
 SceneOrError parse_scene(std::string_view text, const std::string& path);

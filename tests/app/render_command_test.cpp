@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <string>
 
+#include "app/json_reader.hpp"
 #include "io/image_diff.hpp"
 #include "io/png_io.hpp"
+#include "render/offscreen_context.hpp"
 #include "support/command_test.hpp"
 #include "support/video_reader.hpp"
 
@@ -229,11 +231,11 @@ TEST_F(RenderCommand, AGivenCameraAndGroundNeedNoFramingPass) {
   // 3 frames at 30 frames/s reach t = 2/30 s: 7 steps of 0.01 s. The framing pass of the open
   // scene runs to its last frame, 14/30 s: 47 steps.
   EXPECT_NE(read_file(dir_ / "given/spin/report.json")
-                .find("\"physics_steps\": {\"framing\": 0, \"frames\": 7}"),
+                .find("\"physics_steps\": {\"framing\": 0, \"frames\": 7, \"to_first_frame\": 0}"),
             std::string::npos)
       << read_file(dir_ / "given/spin/report.json");
   EXPECT_NE(read_file(dir_ / "open/spin/report.json")
-                .find("\"physics_steps\": {\"framing\": 47, \"frames\": 7}"),
+                .find("\"physics_steps\": {\"framing\": 47, \"frames\": 7, \"to_first_frame\": 0}"),
             std::string::npos)
       << read_file(dir_ / "open/spin/report.json");
 }
@@ -362,6 +364,77 @@ TEST_F(RenderCommand, BadInputExitsWithTwo) {
   EXPECT_EQ(tumble("render --no-frames --no-video " + scene() + " -o " + path("o")).exit_code, 2);
   EXPECT_EQ(tumble("render --width 0 " + scene() + " -o " + path("o")).exit_code, 2);
   EXPECT_FALSE(fs::exists(dir_ / "o/spin/spin.mp4"));
+}
+
+// report.json names the scene as rendered: the same file and options give the same hash; another
+// file, or --width, another.
+TEST_F(RenderCommand, ReportHashesTheSceneAsRenderedWithItsOverrides) {
+  const auto hash = [&](const std::string& scene_path, const std::string& root,
+                        const std::string& options) {
+    const Outcome run = tumble("render -q --no-video --frames 0:1 " + scene_path + " -o " +
+                               path(root) + " " + options);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    const auto report = tumble::app::parse_json(read_file(dir_ / root / "spin/report.json"));
+    EXPECT_TRUE(report) << report.error();
+    const tumble::app::JsonValue* value = report ? report->find("scene_hash") : nullptr;
+    return value ? value->string : std::string();
+  };
+  const std::string first = hash(scene(), "a", "");
+  EXPECT_EQ(first.size(), 64u);
+  EXPECT_EQ(first.find_first_not_of("0123456789abcdef"), std::string::npos) << first;
+  EXPECT_EQ(hash(scene(), "b", ""), first);
+  EXPECT_NE(hash(scene(), "c", "--width 162"), first);
+  std::string other = kScene;
+  other.replace(other.find("torque = [1.0"), 13, "torque = [2.0");
+  fs::create_directories(dir_ / "other");
+  EXPECT_NE(hash(write("other/spin.toml", other).string(), "d", ""), first);
+}
+
+// A chunk from frame 8 steps the physics to frame 8's time and no further before drawing: at
+// 30 frames/s and dt = 0.01 s, ceil((8 / 30) / 0.01) = 27 steps, the steps a render of frames
+// 0..8 takes; then it ends where the whole render ends (frame 14: ceil(46.67) = 47 steps).
+TEST_F(RenderCommand, AChunkStepsThePhysicsOnlyUpToItsFirstFrame) {
+  fs::create_directories(dir_ / "framed");
+  const std::string framed =
+      write("framed/spin.toml", std::string(kScene) +
+                                    "[camera]\nposition = [0.0, 1.5, 4.0]\nlook_at = [0.0, 0.0, "
+                                    "0.0]\n[ground]\nheight = -1.5\n")
+          .string();
+  const auto steps = [&](const std::string& frames, const std::string& root) {
+    const Outcome run = tumble("render -q --no-video " + framed + " -o " + path(root) +
+                               " --width 64 --height 36 --frames " + frames);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    const auto report = tumble::app::parse_json(read_file(dir_ / root / "spin/report.json"));
+    EXPECT_TRUE(report) << report.error();
+    return report ? *report->find("physics_steps") : tumble::app::JsonValue();
+  };
+  const tumble::app::JsonValue chunk = steps("8:15", "chunk");
+  ASSERT_NE(chunk.find("framing"), nullptr);
+  EXPECT_EQ(chunk.find("framing")->number, 0);  // camera and ground written: no framing pass
+  EXPECT_EQ(chunk.find("to_first_frame")->number, 27);
+  EXPECT_EQ(chunk.find("to_first_frame")->number, steps("0:9", "head").find("frames")->number);
+  EXPECT_EQ(chunk.find("frames")->number, 47);
+  EXPECT_EQ(chunk.find("frames")->number, steps("0:15", "whole").find("frames")->number);
+  EXPECT_EQ(steps("0:15", "again").find("to_first_frame")->number, 0);
+}
+
+// [render] backend chooses the off-screen OpenGL, and --backend overrides it; report.json names
+// the one that drew.
+TEST_F(RenderCommand, SceneBackendKeyChoosesTheOpenGLAndTheOptionOverridesIt) {
+  using tumble::render::Backend;
+  if (!tumble::render::backend_built(Backend::osmesa) ||
+      !tumble::render::backend_built(Backend::egl)) {
+    GTEST_SKIP() << "this build lacks a back end";
+  }
+  const std::string egl = write("egl.toml", std::string(kScene) + "backend = \"egl\"\n").string();
+  const auto renderer = [&](const std::string& root, const std::string& options) {
+    const Outcome run = tumble("render -q --no-video --frames 0:1 --width 64 --height 36 " + egl +
+                               " -o " + path(root) + " " + options);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return read_file(dir_ / root / "spin/report.json");
+  };
+  EXPECT_NE(renderer("scene", "").find("(EGL surfaceless)\""), std::string::npos);
+  EXPECT_NE(renderer("option", "--backend osmesa").find("(OSMesa)\""), std::string::npos);
 }
 
 }  // namespace

@@ -120,6 +120,7 @@ fps = 30
 msaa = 8
 background = [0.1, 0.2, 0.3]
 shadows = false
+backend = "egl"
 
 [camera]
 position = [6.0, 4.0, 8.0]
@@ -279,6 +280,7 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenRenderingValues) {
   EXPECT_EQ(scene.render.msaa, 8);
   EXPECT_EQ(scene.render.background, common::Color(0.1, 0.2, 0.3));
   EXPECT_FALSE(scene.render.shadows);
+  EXPECT_EQ(scene.render.backend, common::Backend::egl);
 
   ASSERT_TRUE(scene.camera.position.has_value());
   EXPECT_EQ(*scene.camera.position, Vec3(6.0, 4.0, 8.0));
@@ -344,6 +346,7 @@ position = [2.0, 0.0, 0.0]
   EXPECT_EQ(scene.fps, 60);
   EXPECT_EQ(scene.render.msaa, common::kEdgeFilter);  // no msaa given: one sample, filtered
   EXPECT_TRUE(scene.render.shadows);
+  EXPECT_EQ(scene.render.backend, common::Backend::automatic);
 
   // Left out, the camera is placed later to frame the whole motion.
   EXPECT_FALSE(scene.camera.position.has_value());
@@ -1536,7 +1539,7 @@ mass = 1.0
 samples = 4
 )",
      "test.toml:7:1", "render.samples",
-     "unknown key (allowed here: background, fps, height, msaa, shadows, width)"},
+     "unknown key (allowed here: backend, background, fps, height, msaa, shadows, width)"},
     {"ZeroFieldOfView", R"(duration = 1.0
 [[bodies]]
 shape = "cube"
