@@ -20,7 +20,7 @@ using tumble::testing::Outcome;
 using tumble::testing::shell_quoted;
 using tumble::testing::SlurmCluster;
 
-// How long the jobs may take, queueing included: about 10 s here (3 tasks, a join, a cleanup).
+// How long the jobs may take, queueing included: 10 to 20 s here (3 tasks, a join, a cleanup).
 constexpr double kJobsBound = 120;  // s
 
 class SlurmExample : public tumble::testing::CommandTest {
