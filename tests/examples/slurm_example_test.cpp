@@ -53,16 +53,23 @@ class SlurmExample : public tumble::testing::CommandTest {
   }
 
   // submit.sh SCENE CHUNKS OUTPUT from the test's folder (where Slurm writes the jobs' logs), with
-  // `tumble` as the executable; the job ids it prints, by name ("array", "join", "cleanup").
+  // `tumble` as the executable and `environment` (NAME=VALUE ...) added to its environment.
+  Outcome run_submit(const std::string& scene, int chunks, const std::string& output,
+                     const std::string& tumble = TUMBLE_EXECUTABLE,
+                     const std::string& environment = "") {
+    const std::string prefix = "cd " + shell_quoted(dir_.string()) +
+                               " && SLURM_CONF=" + shell_quoted(cluster_->config()) +
+                               " TUMBLE=" + shell_quoted(tumble) + " " + environment + " exec ";
+    return wait(
+        start(shell_quoted(scene) + " " + std::to_string(chunks) + " " + shell_quoted(output),
+              prefix, shell_quoted(TUMBLE_SOURCE_DIR "/examples/slurm/submit.sh")));
+  }
+
+  // submit.sh as run_submit() runs it, expected to succeed; the job ids it prints, by name.
   std::map<std::string, std::string> submit(const std::string& scene, int chunks,
                                             const std::string& output,
                                             const std::string& tumble = TUMBLE_EXECUTABLE) {
-    const std::string prefix = "cd " + shell_quoted(dir_.string()) +
-                               " && SLURM_CONF=" + shell_quoted(cluster_->config()) +
-                               " TUMBLE=" + shell_quoted(tumble) + " exec ";
-    const Outcome run =
-        wait(start(shell_quoted(scene) + " " + std::to_string(chunks) + " " + shell_quoted(output),
-                   prefix, shell_quoted(TUMBLE_SOURCE_DIR "/examples/slurm/submit.sh")));
+    const Outcome run = run_submit(scene, chunks, output, tumble);
     EXPECT_EQ(run.exit_code, 0) << run.out << run.err;
     std::map<std::string, std::string> jobs;
     std::istringstream lines(run.out);
@@ -127,6 +134,19 @@ TEST_F(SlurmExample, AFailedChunkCancelsTheJoinAndTheCleanupLeavesNothing) {
   EXPECT_EQ(cluster_->job_state(jobs["join"]), "CANCELLED DependencyNeverSatisfied") << logs_;
   EXPECT_EQ(cluster_->job_state(jobs["cleanup"]), "COMPLETED None") << logs_;
   EXPECT_EQ(tumble::testing::names_in(dir_ / "out"), std::vector<std::string>{});
+}
+
+// sbatch refuses the array (a partition that does not exist, through sbatch's own
+// SBATCH_PARTITION): submit.sh fails with sbatch's message, queues nothing and removes what it
+// made.
+TEST_F(SlurmExample, ARefusedSubmissionLeavesNothingQueuedOrWritten) {
+  const std::string scene = write("tiny.toml", tumble::testing::kTinyScene).string();
+  const Outcome run =
+      run_submit(scene, 3, path("out"), TUMBLE_EXECUTABLE, "SBATCH_PARTITION=nowhere");
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("Invalid partition name specified"), std::string::npos) << run.err;
+  EXPECT_EQ(cluster_->client("squeue -h -o %i"), "");
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
 }  // namespace
