@@ -23,6 +23,15 @@ inline std::string read_file(const fs::path& path) {
   return text.str();
 }
 
+// `text` as one word for sh -c, whatever characters it holds.
+inline std::string shell_quoted(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) {
+    out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  }
+  return out + "'";
+}
+
 struct Outcome {
   int exit_code;    // -1 if the process died by a signal (never expected of tumble)
   std::string out;  // standard output
