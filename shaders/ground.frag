@@ -11,6 +11,9 @@ uniform vec3 u_background;    // linear
 uniform float u_grid_spacing;  // m; 0 = no grid
 uniform vec3 u_center;
 uniform float u_half_extent;
+// For a transparent picture (≥ 0) the ground is not drawn, only its shadows, as black of this
+// opacity where the key light is wholly hidden; negative otherwise (Renderer::draw_ground_with).
+uniform float u_shadow_opacity;
 out vec4 out_color;
 
 void main() {
@@ -32,5 +35,12 @@ void main() {
   vec3 color = grid * mix(u_shadow_color, u_lit_color, visibility);
   float distance_to_center = length(v_world_position.xz - u_center.xz);
   float fade = smoothstep(0.35 * u_half_extent, u_half_extent, distance_to_center);
+  if (u_shadow_opacity >= 0.0) {
+    // Straight alpha: black under the shadow, the background colour where none falls (alpha 0
+    // there, and no dark fringe when the edge filter blends a body's edge with it).
+    float shadow = (1.0 - visibility) * u_shadow_opacity * (1.0 - fade);
+    out_color = vec4(shadow > 0.0 ? vec3(0.0) : encode_srgb(u_background), shadow);
+    return;
+  }
   out_color = vec4(encode_srgb(mix(color, u_background, fade)), 1.0);
 }

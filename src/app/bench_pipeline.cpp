@@ -124,6 +124,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     variant.scene.output.preset = preset;
     variant.png = *io::png_settings_named(png);
     variant.serial = serial;
+    variant.stills = false;  // the paths compared write frames and an MP4, nothing else
     std::fprintf(err, "bench: %s ...\n", name.c_str());
     const RenderResult rendered = render_scene(
         variant, directory, [] { return interrupt_signal() != 0; }, [](std::int64_t) {});

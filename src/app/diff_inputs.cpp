@@ -57,14 +57,13 @@ std::string resolve_diff_input(const std::string& path, DiffInput& out) {
   }
   out.kind = DiffInputKind::folder;
   out.folder = path;
-  out.frames = png_names(path, error);
   std::error_code no_frames_folder;  // not an error: the folder then holds no frames
-  // A render's output folder holds its frames in frames/, beside the video and report.json.
-  if (!error && out.frames.empty() &&
-      fs::is_directory(fs::path(path) / "frames", no_frames_folder)) {
+  // A render's output folder holds its frames in frames/, beside the videos, report.json and
+  // the stills (poster.png, contact_sheet.png), which are not frames.
+  if (fs::is_directory(fs::path(path) / "frames", no_frames_folder)) {
     out.folder = (fs::path(path) / "frames").string();
-    out.frames = png_names(out.folder, error);
   }
+  out.frames = png_names(out.folder, error);
   if (error) return out.folder + ": cannot list the folder: " + error.message();
   if (out.frames.empty()) return path + ": folder holds no PNG frames (*.png, or frames/*.png)";
   return {};

@@ -123,8 +123,8 @@ int main(int argc, char** argv) {
 
   RenderOptions render;
   std::string frame_range;
-  CLI::App* render_command =
-      app.add_subcommand("render", "Render a scene to PNG frames and an MP4, off-screen");
+  CLI::App* render_command = app.add_subcommand(
+      "render", "Render a scene to PNG frames and videos (MP4, WebM, GIF), off-screen");
   render_command->add_option("scene", render.scene_path, "Scene file (TOML)")->required();
   render_command
       ->add_option("-o,--output", render.output_root,
@@ -147,7 +147,16 @@ int main(int argc, char** argv) {
       ->check(kNotEmpty)
       ->excludes(frames_option);
   render_command->add_flag("!--no-frames", render.frames, "Do not write PNG frames");
-  render_command->add_flag("!--no-video", render.video, "Do not write the MP4");
+  render_command->add_option(
+      "--quality", render.quality,
+      "Size and frame rate: low (854x480, 15 fps), medium (1280x720, 30), high (1920x1080, 60), "
+      "production (2560x1440, 60), 4k (3840x2160, 60); --width, --height, --fps win");
+  render_command
+      ->add_option("--format", render.formats,
+                   "Video formats to write, mp4, webm or gif: repeat or separate with commas "
+                   "(replaces [output] formats)")
+      ->delimiter(',');
+  render_command->add_flag("!--no-video", render.video, "Do not write any video");
   render_command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");
   render_command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
   render_command->add_flag("--serial", render.serial,

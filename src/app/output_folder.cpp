@@ -3,6 +3,8 @@
 #include <fstream>
 #include <string_view>
 
+#include "common/video_format.hpp"
+
 namespace tumble::app {
 namespace {
 
@@ -18,8 +20,17 @@ bool is_render_folder(const fs::path& folder) {
   return std::string_view(start, static_cast<std::size_t>(report.gcount())) == kStart;
 }
 
-// The first thing in a render's folder that a render does not write: it writes report.json,
-// <scene name>.mp4 and frames/frame_NNNNN.png, and nothing else. "" when there is none.
+// Whether a render writes a file of this name at the top of its folder: report.json, poster.png,
+// contact_sheet.png and <scene name>.<format> for each video format.
+bool is_render_file(const fs::path& file) {
+  const std::string name = file.filename().string();
+  if (name == "report.json" || name == "poster.png" || name == "contact_sheet.png") return true;
+  const std::string extension = file.extension().string();
+  return !extension.empty() && common::video_format_named(extension.substr(1)).has_value();
+}
+
+// The first thing in a render's folder that a render does not write: it writes the files of
+// is_render_file and frames/frame_NNNNN.png, and nothing else. "" when there is none.
 std::string foreign_entry(const fs::path& directory) {
   std::error_code error;
   for (const fs::directory_entry& entry : fs::directory_iterator(directory, error)) {
@@ -33,8 +44,7 @@ std::string foreign_entry(const fs::path& directory) {
           return "frames/" + frame_name;
         }
       }
-    } else if (!entry.is_regular_file(error) ||
-               (name != "report.json" && entry.path().extension() != ".mp4")) {
+    } else if (!entry.is_regular_file(error) || !is_render_file(entry.path())) {
       return name;
     }
   }

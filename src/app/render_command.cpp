@@ -61,6 +61,18 @@ std::string chunk_json(const RenderJob& job) {
          ", \"count\": " + std::to_string(job.chunk->count) + "}";
 }
 
+// {"mp4": path, "webm": path, ...}: every video the render wrote, in [output] formats order.
+std::string videos_json(const RenderJob& job) {
+  std::string out = "{";
+  for (const io::VideoFormat format : job.scene.output.formats) {
+    const std::string path = job.video_path(job.directory, format);
+    if (path.empty()) continue;
+    out += (out.size() > 1 ? ", " : "") + json_string(io::video_format_name(format)) + ": " +
+           json_string(path);
+  }
+  return out + "}";
+}
+
 std::string report_json(const RenderJob& job, const RenderResult& result, double total_seconds) {
   const scene::Scene& scene = job.scene;
   const PipelineReport& p = result.pipeline;
@@ -86,6 +98,7 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
       << ", \"count\": " << job.end - job.first << "},\n  \"frames_directory\": "
       << (frames_directory.empty() ? "null" : json_string(frames_directory))
       << ",\n  \"video\": " << (video_path.empty() ? "null" : json_string(video_path))
+      << ",\n  \"videos\": " << videos_json(job)
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
       << ",\n  \"renderer\": " << json_string(result.renderer)
       << ",\n  \"physics_steps\": {\"framing\": " << result.framing_steps
@@ -203,8 +216,9 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
   if (!staged.leftover().empty())
     std::fprintf(err, "tumble: warning: %s\n", staged.leftover().c_str());
   if (!options.quiet) {
-    const std::string shown =
-        job.scene.output.video ? job.video_path(job.directory) : job.frames_path(job.directory);
+    const std::string shown = job.scene.output.video
+                                  ? job.video_path(job.directory, job.scene.output.formats.front())
+                                  : job.frames_path(job.directory);
     std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",
                  static_cast<long long>(count), total_seconds,
                  static_cast<double>(count) / total_seconds, shown.c_str());

@@ -2,12 +2,17 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 
+#include "app/contact_sheet.hpp"
+#include "app/poster_sink.hpp"
+#include "app/quality_preset.hpp"
 #include "app/scene_view.hpp"
+#include "app/video_sink.hpp"
 #include "render/renderer.hpp"
 #include "scene/video_rules.hpp"
 
@@ -18,6 +23,31 @@ namespace fs = std::filesystem;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The scene with the command line's --quality and --format, checked.
+Result<scene::Scene> with_choices(const RenderOptions& options, scene::Scene scene) {
+  if (options.quality) {
+    const std::optional<QualityPreset> preset = quality_preset(*options.quality);
+    if (!preset) {
+      return Error{"--quality: unknown preset \"" + *options.quality + "\" (" +
+                   quality_preset_names() + ")"};
+    }
+    scene.render.width = preset->width;
+    scene.render.height = preset->height;
+    scene.fps = preset->fps;
+  }
+  if (options.formats.empty()) return scene;
+  scene.output.formats.clear();
+  for (const std::string& name : options.formats) {
+    const std::optional<io::VideoFormat> format = common::video_format_named(name);
+    if (!format) return Error{"--format: unknown format \"" + name + "\" (mp4, webm, gif)"};
+    if (std::find(scene.output.formats.begin(), scene.output.formats.end(), *format) ==
+        scene.output.formats.end()) {
+      scene.output.formats.push_back(*format);
+    }
+  }
+  return scene;
 }
 
 void apply_overrides(const RenderOptions& options, scene::Scene& scene) {
@@ -42,17 +72,30 @@ Result<std::vector<std::unique_ptr<FrameSink>>> open_sinks(const RenderJob& job,
     if (!png) return Error{png.error()};
     sinks.push_back(std::move(*png));
   }
-  if (scene.output.video) {
-    Result<std::unique_ptr<FrameSink>> video =
-        Mp4Video::open(job.video_path(folder), {.width = scene.render.width,
-                                                .height = scene.render.height,
-                                                .fps = scene.fps,
-                                                .crf = scene.output.crf,
-                                                .segment = job.partial(),
-                                                .first_frame = job.partial() ? job.first : 0,
-                                                .preset = scene.output.preset});
+  for (const io::VideoFormat format :
+       scene.output.video ? scene.output.formats : std::vector<io::VideoFormat>{}) {
+    const io::VideoSettings settings{.format = format,
+                                     .width = scene.render.width,
+                                     .height = scene.render.height,
+                                     .fps = scene.fps,
+                                     .crf = scene.output.crf,
+                                     .loop = scene.output.gif_loop,
+                                     .alpha = scene.render.transparent,
+                                     .segment = job.partial(),
+                                     .first_frame = job.partial() ? job.first : 0,
+                                     .preset = scene.output.preset};
+    const std::string path = job.video_path(folder, format);
+    Result<std::unique_ptr<FrameSink>> video = format == io::VideoFormat::mp4
+                                                   ? Mp4Video::open(path, settings)
+                                                   : VideoSink::open(path, settings);
     if (!video) return Error{video.error()};
     sinks.push_back(std::move(*video));
+  }
+  if (job.stills) {
+    sinks.push_back(std::make_unique<PosterSink>((folder / "poster.png").string(),
+                                                 scene::poster_frame(scene), job.png));
+    sinks.push_back(std::make_unique<ContactSheet>((folder / "contact_sheet.png").string(),
+                                                   job.first, job.end, scene.fps, job.png));
   }
   return sinks;
 }
@@ -138,10 +181,21 @@ std::string RenderJob::frames_path(const fs::path& folder) const {
 }
 
 std::string RenderJob::video_path(const fs::path& folder) const {
-  return scene.output.video ? (folder / (scene.name + ".mp4")).string() : std::string();
+  return video_path(folder, io::VideoFormat::mp4);
 }
 
-Result<scene::Scene> scene_as_rendered(scene::Scene scene, const RenderOptions& options) {
+std::string RenderJob::video_path(const fs::path& folder, io::VideoFormat format) const {
+  const std::vector<io::VideoFormat>& formats = scene.output.formats;
+  if (!scene.output.video || std::find(formats.begin(), formats.end(), format) == formats.end()) {
+    return {};
+  }
+  return (folder / (scene.name + "." + io::video_format_name(format))).string();
+}
+
+Result<scene::Scene> scene_as_rendered(scene::Scene written, const RenderOptions& options) {
+  Result<scene::Scene> chosen = with_choices(options, std::move(written));
+  if (!chosen) return Error{chosen.error()};
+  scene::Scene scene = std::move(*chosen);
   apply_overrides(options, scene);
   // The loaded scene kept every rule: what breaks one now is an override.
   if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {

@@ -14,6 +14,7 @@
 #include "app/frame_pipeline.hpp"
 #include "common/result.hpp"
 #include "io/png_io.hpp"
+#include "io/video_encoder.hpp"
 #include "render/offscreen_context.hpp"
 #include "scene/scene.hpp"
 
@@ -28,11 +29,14 @@ struct RenderOptions {
   std::optional<int> msaa;                // [render] msaa (bench pipeline's --msaa)
   std::optional<double> duration;         // s (bench pipeline's --frames)
   std::optional<std::string> preset;      // [output] preset (bench pipeline's x264 presets)
+  // --quality: a named width, height and fps (app/quality_preset.hpp), under width/height/fps.
+  std::optional<std::string> quality;
+  std::vector<std::string> formats;                    // --format: [output] formats when not empty
   std::optional<std::int64_t> first_frame, end_frame;  // --frames A:B renders A .. B-1
   // --chunk I/N: line I of `tumble plan --chunks N`, into <scene output directory>.chunk-I-of-N
   std::optional<ChunkIndex> chunk;
   bool frames = true;  // false: no PNG frames, whatever [output] frames says
-  bool video = true;   // false: no MP4, whatever [output] video says
+  bool video = true;   // false: no video, whatever [output] video says
   bool quiet = false;
   bool verbose = false;
   bool serial = false;  // one thread: the reference the pipelined path must match byte for byte
@@ -52,16 +56,18 @@ struct RenderJob {
   std::filesystem::path directory;    // the final folder: output_root / [output] directory
   io::PngSettings png;
   bool serial = false;  // one thread, for comparison (same bytes as the pipeline)
+  bool stills = true;  // poster.png and contact_sheet.png (bench pipeline measures without)
   std::string shader_directory;
 
-  // A part of the whole render (a chunk or --frames A:B): its MP4 is then a segment to be
+  // A part of the whole render (a chunk or --frames A:B): its videos are then segments to be
   // joined (io::VideoSettings::segment).
   bool partial() const { return first > 0 || end < frame_count; }
 
-  // Where the frames and the video go in `folder` (the folder being written, or `directory` in
-  // the report): "" for an output that is off.
+  // Where the frames and the videos go in `folder` (the folder being written, or `directory` in
+  // the report): "" for an output that is off. video_path is the MP4's.
   std::string frames_path(const std::filesystem::path& folder) const;
   std::string video_path(const std::filesystem::path& folder) const;
+  std::string video_path(const std::filesystem::path& folder, io::VideoFormat format) const;
 };
 
 // The scene with the options' overrides, held to the video rules once more (an override can

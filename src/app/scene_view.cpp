@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "app/camera_path.hpp"
 #include "app/plane_view.hpp"
 #include "app/stability_report.hpp"
 #include "scene/scene_builder.hpp"
@@ -20,8 +21,9 @@ Result<std::vector<physics::BodyState>> checked_states_at(sim::Simulation& simul
 }
 
 bool framing_needs_motion(const scene::Scene& scene) {
-  return !scene.camera.position || !scene.camera.look_at ||
-         (scene.planes.empty() && !scene.ground_height);
+  const bool camera_given =
+      !scene.camera.keys.empty() || (scene.camera.position && scene.camera.look_at);
+  return !camera_given || (scene.planes.empty() && !scene.ground_height);
 }
 
 namespace {
@@ -126,13 +128,13 @@ Result<Framing> frame_scene(const scene::Scene& scene, std::int64_t frame_count,
     out.camera = *camera;
   } else {
     if (scene.planes.empty()) out.ground.height = *scene.ground_height;
-    out.camera = render::Camera{.position = *scene.camera.position,
-                                .look_at = *scene.camera.look_at,
-                                .up = scene.camera.up,
-                                .fov_degrees = scene.camera.fov_degrees};
+    out.camera = scene.camera.keys.empty() ? render::Camera{.position = *scene.camera.position,
+                                                            .look_at = *scene.camera.look_at,
+                                                            .up = scene.camera.up,
+                                                            .fov_degrees = scene.camera.fov_degrees}
+                                           : keyed_camera(scene.camera.keys, scene.camera.up, 0.0);
   }
-  out.follow_offset = out.camera.position - out.camera.look_at;
-  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+  for (std::size_t i = 0; i < scene.bodies.size() && !scene.camera.follow.empty(); ++i) {
     if (scene.bodies[i].name == scene.camera.follow) out.follow_index = static_cast<int>(i);
   }
   return out;
@@ -183,11 +185,7 @@ void add_force_visuals(const scene::BodySpec& body, const physics::BodyState& st
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                              const std::vector<physics::BodyState>& states, double t) {
   render::FrameView view;
-  view.camera = framing.camera;
-  if (framing.follow_index >= 0) {
-    view.camera.look_at = states[static_cast<std::size_t>(framing.follow_index)].position();
-    view.camera.position = view.camera.look_at + framing.follow_offset;
-  }
+  view.camera = camera_at(scene.camera, framing.camera, framing.follow_index, states, t);
   view.quads = framing.quads;
   view.boxes.reserve(states.size());
   for (std::size_t i = 0; i < states.size(); ++i) {

@@ -18,12 +18,13 @@ namespace tumble::app {
 
 // Where the camera and ground go: as the scene writes them, or chosen from the whole motion.
 struct Framing {
-  render::Camera camera;  // position and look_at as written, or framing every body at all times
+  // Position and look_at as written (the first key's with [[camera.keys]]), or framing every body
+  // at all times; each frame's camera starts from it (app/camera_path.hpp).
+  render::Camera camera;
   // [ground] as written. Without planes its height is as written, or just below the lowest point
   // any body reaches; with planes it is the floor plane (app/plane_view.hpp).
   render::Ground ground;
   std::vector<render::Quad> quads;  // the planes other than the floor, the same every frame
-  render::Vec3 follow_offset;       // camera position - look_at, kept when following a body
   int follow_index = -1;            // the followed body, or -1
   std::int64_t physics_steps = 0;   // steps the framing pass took; 0 when it was not needed
 };

@@ -61,6 +61,10 @@ struct RenderSettings {
   // antialiasing at all; kEdgeFilter (the default) = one sample, then the edge filter.
   int msaa = kEdgeFilter;
   Color background = Color(0.78, 0.84, 0.9);
+  // [render] background = "transparent": alpha 0 wherever no surface is drawn (the colour there
+  // is `background`, unseen), alpha 1 on surfaces; the ground is not drawn, only the shadows on
+  // it, as partly transparent black (README says why).
+  bool transparent = false;
   DirectionalLight light;
   Ground ground;
   bool shadows = true;

@@ -1,5 +1,5 @@
-// An 8-bit RGB image in memory, top row first: what the renderer produces and the PNG and video
-// writers consume.
+// An 8-bit RGB image in memory, top row first, with an optional straight (not premultiplied)
+// alpha plane: what the renderer produces and the PNG and video writers consume.
 #pragma once
 
 #include <cstddef>
@@ -12,6 +12,9 @@ struct Image {
   int width = 0;
   int height = 0;
   std::vector<std::uint8_t> rgb;  // width * height * 3 bytes, rows top to bottom, no padding
+  // Empty for an opaque image; else width * height bytes, 0 transparent to 255 opaque, in the
+  // order of `rgb`'s pixels.
+  std::vector<std::uint8_t> alpha;
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}

@@ -105,19 +105,41 @@ class PngReadStructs {
   png_infop info_ = nullptr;
 };
 
+// Row y of `image` as RGBA: its RGB with its alpha as the fourth byte of each pixel.
+void interleave_alpha(const Image& image, int y, png_byte* out) {
+  const std::uint8_t* rgb = image.row(y);
+  const std::uint8_t* alpha = image.alpha.data() + static_cast<std::size_t>(y) * image.width;
+  for (int x = 0; x < image.width; ++x) {
+    out[4 * x + 0] = rgb[3 * x + 0];
+    out[4 * x + 1] = rgb[3 * x + 1];
+    out[4 * x + 2] = rgb[3 * x + 2];
+    out[4 * x + 3] = alpha[x];
+  }
+}
+
 bool encode_guarded(png_structp png, png_infop info, std::FILE* file, const Image& image,
                     const PngSettings& settings) {
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_write_fn(png, file, write_to_file, flush_nothing);
+  const bool alpha = !image.alpha.empty();
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
-               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               static_cast<png_uint_32>(image.height), 8,
+               alpha ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, settings.compression_level);
   // PNG_ALL_FILTERS is libpng's own default for 8-bit RGB: per row, it keeps the filter whose
   // output bytes, read as signed, have the smallest sum of magnitudes.
   png_set_filter(png, PNG_FILTER_TYPE_BASE, settings.filter ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
   png_write_info(png, info);
-  for (int y = 0; y < image.height; ++y) png_write_row(png, image.row(y));
+  if (!alpha) {
+    for (int y = 0; y < image.height; ++y) png_write_row(png, image.row(y));
+  } else {
+    std::vector<png_byte> rgba(static_cast<std::size_t>(image.width) * 4);
+    for (int y = 0; y < image.height; ++y) {
+      interleave_alpha(image, y, rgba.data());
+      png_write_row(png, rgba.data());
+    }
+  }
   png_write_end(png, nullptr);
   return true;
 }
@@ -179,6 +201,11 @@ std::string write_png(const std::string& path, const Image& image, const PngSett
       image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
     return path + ": cannot write a " + size_text(image.width, image.height) + " image holding " +
            std::to_string(image.rgb.size()) + " bytes as PNG";
+  }
+  if (!image.alpha.empty() &&
+      image.alpha.size() != static_cast<std::size_t>(image.width) * image.height) {
+    return path + ": cannot write a " + size_text(image.width, image.height) +
+           " image with an alpha plane of " + std::to_string(image.alpha.size()) + " bytes as PNG";
   }
   // Unsynced: PNGs are mostly video frames, written by the hundred (see AtomicFile::Durability).
   AtomicFile file(path, AtomicFile::Durability::unsynced);

@@ -25,7 +25,8 @@ struct PngSettings {
 // zlib 6, adaptive filtering) and "small" (zlib 9, adaptive filtering). Nothing for other names.
 std::optional<PngSettings> png_settings_named(std::string_view name);
 
-// Writes `image` as an 8-bit RGB, non-interlaced PNG. The file appears whole or not at all
+// Writes `image` as an 8-bit RGB, non-interlaced PNG (RGBA, straight alpha, when the image has
+// an alpha plane). The file appears whole or not at all
 // (temporary name beside `path`, then rename; not fsynced, see AtomicFile). No time chunk, so equal
 // images give equal bytes.
 std::string write_png(const std::string& path, const Image& image,

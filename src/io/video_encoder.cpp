@@ -39,7 +39,7 @@ std::string invalid_settings(const VideoSettings& settings) {
   // whole blocks only and libx264 refuses odd sizes. Padding or cropping here would silently
   // change the picture the caller rendered, so the caller picks an even size instead. A GIF's
   // palette indices have no chroma planes: any size.
-  if (settings.format != VideoFormat::gif &&
+  if (common::needs_even_size(settings.format) &&
       (settings.width % 2 != 0 || settings.height % 2 != 0)) {
     return std::string("width and height must be even for ") +
            (settings.format == VideoFormat::mp4 ? "H.264" : "VP9") + " yuv420p video (got " + size +
@@ -51,6 +51,9 @@ std::string invalid_settings(const VideoSettings& settings) {
   }
   if (settings.vp9_crf < 0 || settings.vp9_crf > 63) {
     return "vp9_crf must be in 0..63 (got " + std::to_string(settings.vp9_crf) + ")";
+  }
+  if (settings.alpha && !common::carries_alpha(settings.format)) {
+    return std::string("only WebM carries alpha (got ") + video_format_name(settings.format) + ")";
   }
   if (settings.segment && settings.format != VideoFormat::mp4) {
     return std::string("only MP4 is written in segments to join (got ") +
@@ -72,18 +75,6 @@ long long nearest_video_frame(long long j, int n, int fps) {
 }
 
 }  // namespace
-
-const char* video_format_name(VideoFormat format) {
-  switch (format) {
-    case VideoFormat::mp4:
-      return "mp4";
-    case VideoFormat::webm:
-      return "webm";
-    case VideoFormat::gif:
-      return "gif";
-  }
-  return "unknown";
-}
 
 int gif_delay_centiseconds(int fps) {
   return std::max(2, (100 + fps - 1) / fps);
@@ -184,7 +175,7 @@ std::string VideoEncoder::State::set_up_codec() {
     stream->avg_frame_rate = codec->framerate;
     return {};
   }
-  codec->pix_fmt = AV_PIX_FMT_YUV420P;
+  codec->pix_fmt = settings.alpha ? AV_PIX_FMT_YUVA420P : AV_PIX_FMT_YUV420P;
   codec->time_base = AVRational{1, settings.fps};  // one tick per frame: constant frame rate
   codec->framerate = AVRational{settings.fps, 1};
   // BT.709 (HD) limited range is what players assume for untagged HD H.264; tag it as well so
@@ -254,7 +245,8 @@ std::string VideoEncoder::State::set_up_conversion() {
 
   frame.reset(av_frame_alloc());
   if (!frame) return fail("av_frame_alloc", AVERROR(ENOMEM));
-  frame->format = AV_PIX_FMT_YUV420P;
+  // With alpha the first three planes are the same yuv420p; the fourth is copied from the image.
+  frame->format = settings.alpha ? AV_PIX_FMT_YUVA420P : AV_PIX_FMT_YUV420P;
   frame->width = width;
   frame->height = height;
   if (const int code = av_frame_get_buffer(frame.get(), 0); code < 0) {
@@ -465,6 +457,16 @@ std::string VideoEncoder::add_frame(const Image& image) {
   code = sws_scale(state.rgb_to_yuv.get(), source, source_stride, 0, height, state.frame->data,
                    state.frame->linesize);
   if (code < 0) return state.fail("sws_scale", code);
+  if (state.settings.alpha) {
+    if (image.alpha.size() != static_cast<std::size_t>(width) * height) {
+      return state.path + ": frame " + std::to_string(state.frames_added) +
+             " has no alpha, and the video was opened for alpha";
+    }
+    for (int y = 0; y < height; ++y) {
+      std::copy_n(image.alpha.data() + static_cast<std::size_t>(y) * width, width,
+                  state.frame->data[3] + static_cast<std::ptrdiff_t>(y) * state.frame->linesize[3]);
+    }
+  }
   state.frame->pts = state.settings.first_frame + state.frames_added;  // codec->time_base: 1/fps
   if (std::string failure = state.encode(state.frame.get()); !failure.empty()) return failure;
   ++state.frames_added;

@@ -11,16 +11,14 @@
 #include <memory>
 #include <string>
 
+#include "common/video_format.hpp"
 #include "io/image.hpp"
 
 namespace tumble::io {
 
-enum class VideoFormat { mp4, webm, gif };
-
-// "mp4", "webm", "gif": the name in scenes and on the command line, and the file extension.
-const char* video_format_name(VideoFormat format);
-inline constexpr VideoFormat kAllVideoFormats[] = {VideoFormat::mp4, VideoFormat::webm,
-                                                   VideoFormat::gif};
+using common::kAllVideoFormats;
+using common::video_format_name;
+using common::VideoFormat;
 
 // GIF times frames in whole centiseconds, and browsers show delays under 2 cs as 10 cs. So a GIF
 // runs at 100/n frames per second, n = max(2, ceil(100 / fps)): every frame at 50, 25, 20 fps
@@ -41,6 +39,11 @@ struct VideoSettings {
   // 2 levels RMS of its source (tests/io/video_encoder_test.cpp).
   int vp9_crf = 30;
   bool loop = true;  // GIF: play forever (else once)
+  // WebM only: VP9 in yuva420p, its alpha plane from each Image's alpha (which must be there).
+  // libvpx codes the alpha as a second stream that the WebM muxer stores in BlockAdditional
+  // elements (alpha_mode 1); libavcodec's libvpx-vp9 decoder reads it back, its native vp9
+  // decoder does not.
+  bool alpha = false;
   // MP4: a segment of a longer video, to be joined to the others by stream copy
   // (io/video_join.hpp): its first frame is frame `first_frame` of the whole, at first_frame /
   // fps s, and x264 keeps its headers independent of the content (its `stitchable` option), so

@@ -402,6 +402,12 @@ void Renderer::Resources::draw_ground_with(const ShaderProgram& program, const F
   set_vector(program.uniform("u_lit_color"), albedo.cwiseProduct(key_light) * (ambient + diffuse));
   set_vector(program.uniform("u_shadow_color"), albedo.cwiseProduct(key_light) * ambient);
   set_vector(program.uniform("u_background"), linear_from_srgb(s.background));
+  // A transparent picture keeps only the ground's shadows, as black of this opacity at the
+  // darkest: how much darker the ground is in shadow than lit, diffuse / (ambient + diffuse).
+  // Negative: the ground is drawn.
+  const float lit = ambient + diffuse;
+  glUniform1f(program.uniform("u_shadow_opacity"),
+              !s.transparent ? -1.0f : (lit > 0.0f ? diffuse / lit : 0.0f));
   glUniform1f(program.uniform("u_grid_spacing"), static_cast<float>(s.ground.grid_spacing));
   glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
   glBindVertexArray(ground_vao);
@@ -411,12 +417,14 @@ void Renderer::Resources::draw_ground_with(const ShaderProgram& program, const F
 
 void Renderer::Resources::start_frame(const FrameView& view, const FrameSetup& frame,
                                       GLuint target) {
-  // The shaders encode to sRGB themselves, so the clear colour is given encoded too.
+  // The shaders encode to sRGB themselves, so the clear colour is given encoded too. Surfaces
+  // write alpha 1, so alpha 0 is left exactly where nothing was drawn.
   glClearColor(static_cast<float>(settings.background.x()),
                static_cast<float>(settings.background.y()),
-               static_cast<float>(settings.background.z()), 1.0f);
+               static_cast<float>(settings.background.z()), settings.transparent ? 0.0f : 1.0f);
   glViewport(0, 0, settings.width, settings.height);
-  if (!settings.ground.enabled) {
+  // A transparent picture draws no ground; its shadows come later (draw_ground_shadows).
+  if (!settings.ground.enabled || settings.transparent) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     return;
@@ -462,7 +470,9 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
       return (a->center - eye).squaredNorm() > (b->center - eye).squaredNorm();
     });
     glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    // Alpha as "over" (a + (1 − a) × the alpha below), for a transparent picture; the colour is
+    // blended the same either way.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);  // what is behind a translucent quad stays drawable
   }
   use(plane_program, frame, view.camera);
@@ -486,6 +496,15 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
   }
 }
 
+// The alpha of the read-back `rgba` (top row first) into `alpha`, one byte per pixel: the edge
+// filter smooths colours only, so an edge's alpha is the coverage multisampling gives it, or
+// all-or-nothing with one sample per pixel.
+static void copy_alpha(const std::vector<std::uint8_t>& rgba, int width, int height,
+                       std::vector<std::uint8_t>& alpha) {
+  alpha.resize(static_cast<std::size_t>(width) * height);
+  for (std::size_t i = 0; i < alpha.size(); ++i) alpha[i] = rgba[4 * i + 3];
+}
+
 void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox>& text_boxes) {
   // Straight from the frame's own framebuffer (glReadPixels waits for the drawing): copying it
   // into the context's buffer first, with glBlitFramebuffer, costs llvmpipe more than the read.
@@ -495,17 +514,19 @@ void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox
   glReadPixels(0, 0, settings.width, settings.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (settings.msaa == kEdgeFilter) {
     filter_edges(rgba.data(), settings.width, settings.height, out, text_boxes);
-    return;
+  } else {
+    if (out.width != settings.width || out.height != settings.height) {
+      out = io::Image(settings.width, settings.height);
+    }
+    const std::size_t pixel_count = static_cast<std::size_t>(settings.width) * settings.height;
+    for (std::size_t i = 0; i < pixel_count; ++i) {
+      out.rgb[3 * i + 0] = rgba[4 * i + 0];
+      out.rgb[3 * i + 1] = rgba[4 * i + 1];
+      out.rgb[3 * i + 2] = rgba[4 * i + 2];
+    }
   }
-  if (out.width != settings.width || out.height != settings.height) {
-    out = io::Image(settings.width, settings.height);
-  }
-  const std::size_t pixel_count = static_cast<std::size_t>(settings.width) * settings.height;
-  for (std::size_t i = 0; i < pixel_count; ++i) {
-    out.rgb[3 * i + 0] = rgba[4 * i + 0];
-    out.rgb[3 * i + 1] = rgba[4 * i + 1];
-    out.rgb[3 * i + 2] = rgba[4 * i + 2];
-  }
+  // After the colour, which may have made `out` anew.
+  if (settings.transparent) copy_alpha(rgba, settings.width, settings.height, out.alpha);
 }
 
 std::vector<Text> Renderer::Resources::texts_with_labels(const FrameView& view,

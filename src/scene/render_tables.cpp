@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 
+#include "scene/camera_keys.hpp"
 #include "scene/limits.hpp"
+#include "scene/output_tables.hpp"
 #include "scene/video_rules.hpp"
 
 namespace tumble::scene::detail {
@@ -24,7 +26,7 @@ void read_render(TableReader& in, Scene& scene) {
     in.fail("msaa",
             "must be 1, 2, 4, 8 or 16 samples per pixel (got " + std::to_string(r.msaa) + ")");
   }
-  r.background = in.optional_color("background", r.background);
+  read_background(in, r);
   r.shadows = in.optional_bool("shadows", r.shadows);
   const std::string backend = in.optional_string("backend", common::backend_name(r.backend));
   const auto named =
@@ -60,6 +62,7 @@ void read_camera(TableReader& in, Scene& scene) {
   if (c.position && c.look_at && (*c.position - *c.look_at).norm() == 0.0) {
     in.fail("look_at", "the camera cannot look at its own position");
   }
+  read_camera_moves(in, scene);
   in.reject_unknown_keys();
 }
 
@@ -120,6 +123,7 @@ void read_output(TableReader& in, Scene& scene) {
                           " (ultrafast, superfast, veryfast, faster, fast, medium, slow, "
                           "slower, veryslow, placebo)");
   }
+  read_output_choices(in, o);
   in.reject_unknown_keys();
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/render_settings.hpp"
+#include "common/video_format.hpp"
 #include "physics/contact.hpp"
 #include "physics/forces.hpp"
 #include "physics/integrators.hpp"
@@ -51,21 +52,35 @@ struct PhysicsSettings {
   physics::ContactSettings contact;  // used only when the scene has planes
 };
 
+// One [[camera.keys]] entry: where the camera is at `time`; between two keys it moves along an
+// eased path (app/camera_path.hpp).
+struct CameraKey {
+  double time = 0.0;  // s, from 0 to the duration, increasing key to key
+  physics::Vec3 position = physics::Vec3::Zero();  // world frame (m)
+  physics::Vec3 look_at = physics::Vec3::Zero();   // world frame (m)
+  double fov_degrees = 40.0;  // vertical; [camera] fov_degrees when not written
+};
+
 // The camera as written; what is left out is chosen to frame the whole motion.
 struct CameraSpec {
   std::optional<physics::Vec3> position;  // world frame (m)
   std::optional<physics::Vec3> look_at;   // world frame (m)
   physics::Vec3 up = physics::Vec3::UnitY();
-  double fov_degrees = 40.0;  // vertical
-  std::string follow;         // a body name: the camera keeps its offset to that body
+  double fov_degrees = 40.0;           // vertical
+  std::string follow;                  // a body name: the camera keeps its offset to that body
+  std::vector<CameraKey> keys;         // [[camera.keys]], in time order; none: a still camera
+  std::optional<double> orbit_period;  // s per turn about `up` through the look-at point
 };
 
 struct OutputSpec {
   std::string directory;  // below the output root chosen on the command line; default: name
   bool frames = true;     // PNG frames
-  bool video = true;      // MP4
-  int crf = 20;           // x264 constant rate factor, 0 (lossless) to 51
-  std::string preset = "veryfast";  // x264 speed preset
+  bool video = true;      // the videos of `formats`; false: none
+  std::vector<common::VideoFormat> formats = {common::VideoFormat::mp4};  // each once, in order
+  bool gif_loop = true;               // the GIF plays forever (else once)
+  std::optional<double> poster_time;  // s; poster.png shows the frame nearest it (default: middle)
+  int crf = 20;                       // x264 constant rate factor, 0 (lossless) to 51
+  std::string preset = "veryfast";    // x264 speed preset
 };
 
 struct Scene {

@@ -1,5 +1,6 @@
 #include "scene/video_rules.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -40,6 +41,34 @@ std::string frame_count_problem(double duration, int fps) {
   return text;
 }
 
+// The rules each video format of [output] formats brings: an even size for 4:2:0 colour, a place
+// for the alpha of a transparent background.
+std::optional<BrokenRule> broken_format_rule(const Scene& scene) {
+  if (!scene.output.video) return std::nullopt;
+  const common::RenderSettings& r = scene.render;
+  for (const common::VideoFormat format : scene.output.formats) {
+    if (needs_even_size(format) && (r.width % 2 != 0 || r.height % 2 != 0)) {
+      const bool odd_width = r.width % 2 != 0;
+      return BrokenRule{{odd_width ? "render.width" : "render.height"},
+                        "render",
+                        std::string("must be even for ") +
+                            (format == common::VideoFormat::mp4 ? "H.264" : "VP9") +
+                            " yuv420p video, which stores colour per 2×2 pixels (got " +
+                            std::to_string(odd_width ? r.width : r.height) +
+                            "); or set [output] video = false (--no-video) for PNG frames only"};
+    }
+    if (r.transparent && !carries_alpha(format)) {
+      return BrokenRule{{"output.formats", "render.background"},
+                        "render",
+                        std::string("a transparent background needs a format with alpha: ") +
+                            video_format_name(format) +
+                            " has none; write formats = [\"webm\"] (VP9 with alpha), or "
+                            "video = false for RGBA PNG frames only"};
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<BrokenRule> broken_video_rule(const Scene& scene) {
@@ -50,14 +79,12 @@ std::optional<BrokenRule> broken_video_rule(const Scene& scene) {
   if (std::string problem = frame_count_problem(scene.duration, scene.fps); !problem.empty()) {
     return BrokenRule{{"render.fps"}, "duration", std::move(problem)};
   }
-  if (scene.output.video && (r.width % 2 != 0 || r.height % 2 != 0)) {
-    const bool odd_width = r.width % 2 != 0;
-    return BrokenRule{{odd_width ? "render.width" : "render.height"},
-                      "render",
-                      "must be even for H.264 yuv420p video, which stores colour per 2×2 "
-                      "pixels (got " +
-                          std::to_string(odd_width ? r.width : r.height) +
-                          "); or set [output] video = false (--no-video) for PNG frames only"};
+  if (std::optional<BrokenRule> broken = broken_format_rule(scene)) return broken;
+  if (scene.output.poster_time && *scene.output.poster_time > scene.duration) {
+    char problem[96];
+    std::snprintf(problem, sizeof problem, "is after the end of the scene, at %.6g s",
+                  scene.duration);
+    return BrokenRule{{"output.poster_time"}, "output", problem};
   }
   if (!scene.output.frames && !scene.output.video) {
     return BrokenRule{
@@ -68,6 +95,13 @@ std::optional<BrokenRule> broken_video_rule(const Scene& scene) {
 
 std::int64_t frame_count(const Scene& scene) {
   return static_cast<std::int64_t>(rounded_frames(scene.duration, scene.fps));
+}
+
+std::int64_t poster_frame(const Scene& scene) {
+  const std::int64_t count = frame_count(scene);
+  if (!scene.output.poster_time) return count / 2;
+  const double nearest = std::round(*scene.output.poster_time * static_cast<double>(scene.fps));
+  return std::min(static_cast<std::int64_t>(nearest), count - 1);
 }
 
 }  // namespace tumble::scene

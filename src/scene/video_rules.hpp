@@ -20,11 +20,16 @@ struct BrokenRule {
 };
 
 // The first rule no render of `scene` could keep (a frame within kMaxPixels, 1 to kMaxFrames
-// frames, an even size for H.264 video, something to write), or nothing.
+// frames, an even size for H.264 and VP9 video, alpha in every video of a transparent render, a
+// poster time within the scene, something to write), or nothing.
 std::optional<BrokenRule> broken_video_rule(const Scene& scene);
 
 // The scene's frames: duration × fps, rounded to the nearest. Frame k shows t = k / fps (s).
 // Only for a scene with no broken video rule (which bounds it by kMaxFrames).
 std::int64_t frame_count(const Scene& scene);
+
+// The frame poster.png shows: the one nearest [output] poster_time (the last for a time past the
+// last frame's), else the middle one, frame_count / 2. Same precondition as frame_count.
+std::int64_t poster_frame(const Scene& scene);
 
 }  // namespace tumble::scene

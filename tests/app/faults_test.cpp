@@ -69,7 +69,8 @@ class Faults : public tumble::testing::CommandTest {
   }
   void expect_earlier_output_untouched() {
     EXPECT_EQ(read_file(dir_ / "out/spin/spin.mp4"), earlier_video_);
-    EXPECT_EQ(files_below(dir_ / "out"), 15 + 2);  // frames, the MP4 and report.json
+    // Frames, the MP4, report.json, poster.png and contact_sheet.png.
+    EXPECT_EQ(files_below(dir_ / "out"), 15 + 4);
     for (const auto& entry : fs::directory_iterator(dir_ / "out")) {
       EXPECT_EQ(entry.path().filename(), "spin") << "left behind: " << entry.path();
     }
@@ -95,7 +96,7 @@ TEST_F(Faults, SigtermDuringARenderKeepsTheEarlierOutputWhole) {
   render_earlier_output();
   const pid_t render = start("render " + write("long.toml", spin_scene(600.0)).string() + " -o " +
                              path("out") + " -q");
-  ASSERT_TRUE(wait_for_frames(dir_ / "out", 15 + 2 + 3)) << "the render never got going";
+  ASSERT_TRUE(wait_for_frames(dir_ / "out", 15 + 4 + 3)) << "the render never got going";
   ASSERT_EQ(::kill(render, SIGTERM), 0);
   const Outcome run = wait(render);
   EXPECT_EQ(run.exit_code, 143) << run.err;
@@ -226,7 +227,8 @@ TEST_F(Faults, ANewRenderReplacesTheWholeEarlierOutput) {
   const Outcome run = tumble("render " + write("short.toml", spin_scene(0.5)).string() + " -o " +
                              path("out") + " --frames 0:5 -q");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_EQ(files_below(dir_ / "out"), 5 + 2);
+  // The frames, report.json, the MP4 and contact_sheet.png (poster.png shows a frame not rendered).
+  EXPECT_EQ(files_below(dir_ / "out"), 5 + 3);
   EXPECT_TRUE(fs::exists(dir_ / "out/spin/frames/frame_00004.png"));
   EXPECT_FALSE(fs::exists(dir_ / "out/spin/frames/frame_00005.png"));
 }

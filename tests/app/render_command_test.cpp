@@ -352,7 +352,9 @@ TEST_F(RenderCommand, EveryExampleSceneRenders) {
   EXPECT_GE(scenes, 5);
   int frames = 0;
   for (const auto& entry : fs::recursive_directory_iterator(dir_ / "scenes")) {
-    frames += entry.path().extension() == ".png";
+    // Frames only: poster.png and contact_sheet.png are written beside them.
+    frames +=
+        entry.path().extension() == ".png" && entry.path().parent_path().filename() == "frames";
   }
   EXPECT_EQ(frames, 2 * scenes);
 }

@@ -69,6 +69,38 @@ TEST(Renderer, TwoBoxesWithoutGroundOrShadowsOrMsaaMatchGolden) {
   expect_matches_golden(draw(settings, view), "two_boxes_plain");
 }
 
+// A transparent background: the same colours where surfaces are, alpha 255 on the cube and 0
+// where nothing is drawn; the ground is left out but for the cube's shadow, partly transparent
+// black at most diffuse / (ambient + diffuse) opaque; an opaque render has no alpha plane.
+TEST(Renderer, TransparentBackgroundKeepsTheCubeAndItsShadowOnly) {
+  RenderSettings settings = small_settings();
+  const FrameView view = cube_view(Quat::Identity());
+  const io::Image opaque = draw(settings, view);
+  EXPECT_TRUE(opaque.alpha.empty());
+  settings.transparent = true;
+  const io::Image clear = draw(settings, view);
+  ASSERT_EQ(clear.alpha.size(), 160u * 120u);
+  EXPECT_EQ(clear.alpha[0], 0);                // the sky
+  EXPECT_EQ(clear.alpha[119 * 160 + 0], 0);    // lit ground, bottom-left corner
+  EXPECT_EQ(clear.alpha[60 * 160 + 80], 255);  // the cube
+  EXPECT_EQ(std::vector<std::uint8_t>(clear.rgb.begin() + 3 * (60 * 160 + 80),
+                                      clear.rgb.begin() + 3 * (60 * 160 + 81)),
+            std::vector<std::uint8_t>(opaque.rgb.begin() + 3 * (60 * 160 + 80),
+                                      opaque.rgb.begin() + 3 * (60 * 160 + 81)));
+  const double direction_y = settings.light.direction.normalized().y();
+  const double darkest = -direction_y / (settings.light.ambient - direction_y);  // 0.736
+  int partial = 0, most = 0;
+  for (const std::uint8_t alpha : clear.alpha) {
+    if (alpha == 0 || alpha == 255) continue;
+    ++partial;
+    most = std::max<int>(most, alpha);
+  }
+  EXPECT_GT(partial, 100);  // the shadow, over a few hundred pixels
+  // Multisampled: an edge of the shadow may also blend with the cube's own alpha 255, so the
+  // largest partial alpha is the shadow's core within 2 levels, or above it.
+  EXPECT_GE(most, static_cast<int>(std::lround(255 * darkest)) - 2);
+}
+
 // The cube on a floor just under it, with a 4 m × 3 m wall.
 FrameView wall_view(const Vec3& wall_center, const Vec3& wall_front, const Color& color) {
   FrameView view = cube_view(Quat(Eigen::AngleAxisd(0.4, Vec3::UnitY())));

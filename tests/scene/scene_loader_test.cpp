@@ -1595,7 +1595,7 @@ mass = 1.0
 target = [0, 0, 0]
 )",
      "test.toml:7:1", "camera.target",
-     "unknown key (allowed here: follow, fov_degrees, look_at, position, up)"},
+     "unknown key (allowed here: follow, fov_degrees, keys, look_at, orbit_period, position, up)"},
     {"ZeroLightDirection", R"(duration = 1.0
 [[bodies]]
 shape = "cube"
@@ -1705,7 +1705,7 @@ mass = 1.0
 format = "gif"
 )",
      "test.toml:7:1", "output.format",
-     "unknown key (allowed here: crf, directory, frames, preset, video)"},
+     "unknown key (allowed here: crf, directory, formats, frames, gif_loop, poster_time, preset, video)"},
     {"BodyColourNotHex", R"(duration = 1.0
 [[bodies]]
 shape = "cube"

@@ -86,5 +86,46 @@ TEST(VideoRules, TheLoaderBlamesTheFirstKeyTheFileHas) {
       << std::get<SceneError>(without_fps).message;
 }
 
+TEST(VideoRules, EachFormatBringsItsOwnSizeRule) {
+  Scene scene = loaded(kCube);
+  scene.render.width = 161;
+  scene.output.formats = {common::VideoFormat::gif};  // palette indices: any size
+  EXPECT_FALSE(broken_video_rule(scene));
+  scene.output.formats = {common::VideoFormat::gif, common::VideoFormat::webm};
+  ASSERT_TRUE(broken_video_rule(scene));
+  EXPECT_NE(broken_video_rule(scene)->problem.find("must be even for VP9"), std::string::npos);
+  scene.output.formats = {common::VideoFormat::mp4};
+  EXPECT_NE(broken_video_rule(scene)->problem.find("must be even for H.264"), std::string::npos);
+}
+
+TEST(VideoRules, ATransparentBackgroundNeedsEveryVideoToCarryAlpha) {
+  Scene scene = loaded(kCube);
+  scene.render.transparent = true;
+  ASSERT_TRUE(broken_video_rule(scene));  // the default MP4 has no alpha
+  EXPECT_EQ(broken_video_rule(scene)->keys,
+            (std::vector<std::string>{"output.formats", "render.background"}));
+  scene.output.formats = {common::VideoFormat::webm};
+  EXPECT_FALSE(broken_video_rule(scene));
+  scene.output.formats = {common::VideoFormat::webm, common::VideoFormat::gif};
+  EXPECT_TRUE(broken_video_rule(scene));
+  scene.output.video = false;  // RGBA PNG frames only
+  EXPECT_FALSE(broken_video_rule(scene));
+}
+
+TEST(VideoRules, PosterFrameIsTheMiddleOrTheNearestToPosterTime) {
+  Scene scene = loaded(kCube);  // 15 frames at 30 fps
+  EXPECT_EQ(poster_frame(scene), 7);
+  scene.output.poster_time = 0.2;  // 6 frames in
+  EXPECT_EQ(poster_frame(scene), 6);
+  scene.output.poster_time = 0.21;  // 6.3 frames: the nearest is 6
+  EXPECT_EQ(poster_frame(scene), 6);
+  scene.output.poster_time = 0.5;  // the end of the scene, past the last frame's 14/30 s
+  EXPECT_EQ(poster_frame(scene), 14);
+  EXPECT_FALSE(broken_video_rule(scene));
+  scene.output.poster_time = 0.6;
+  ASSERT_TRUE(broken_video_rule(scene));
+  EXPECT_EQ(broken_video_rule(scene)->keys, std::vector<std::string>{"output.poster_time"});
+}
+
 }  // namespace
 }  // namespace tumble::scene

@@ -34,7 +34,7 @@ DecodedVideo::Picture take_picture(const AVFrame& frame, AVRational time_base,
   picture.rgb = Image(frame.width, frame.height);
   std::uint8_t* const destination[] = {picture.rgb.rgb.data()};
   const int destination_stride[] = {static_cast<int>(picture.rgb.row_bytes())};
-  if (frame.format != AV_PIX_FMT_YUV420P) {
+  if (frame.format != AV_PIX_FMT_YUV420P && frame.format != AV_PIX_FMT_YUVA420P) {
     io::av::Scaler as_is(sws_getContext(frame.width, frame.height, picture.pixel_format,
                                         frame.width, frame.height, AV_PIX_FMT_RGB24, SWS_POINT,
                                         nullptr, nullptr, nullptr));
@@ -47,12 +47,18 @@ DecodedVideo::Picture take_picture(const AVFrame& frame, AVRational time_base,
                       mean_plane(frame, 2, frame.width / 2, frame.height / 2)};
   sws_scale(yuv_to_rgb, frame.data, frame.linesize, 0, frame.height, destination,
             destination_stride);
+  if (frame.format == AV_PIX_FMT_YUVA420P) {
+    for (int y = 0; y < frame.height; ++y) {
+      const std::uint8_t* row = frame.data[3] + y * frame.linesize[3];
+      picture.rgb.alpha.insert(picture.rgb.alpha.end(), row, row + frame.width);
+    }
+  }
   return picture;
 }
 
 }  // namespace
 
-DecodedVideo read_video(const std::string& path) {
+DecodedVideo read_video(const std::string& path, const char* decoder_name) {
   DecodedVideo video;
   AVFormatContext* opened = nullptr;
   if (int code = avformat_open_input(&opened, path.c_str(), nullptr, nullptr); code < 0) {
@@ -68,6 +74,11 @@ DecodedVideo read_video(const std::string& path) {
   const int index = av_find_best_stream(format.get(), AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
   if (index < 0) {
     video.error = "av_find_best_stream: " + io::av::error_text(index);
+    return video;
+  }
+  if (decoder_name) decoder = avcodec_find_decoder_by_name(decoder_name);
+  if (!decoder) {
+    video.error = std::string("no decoder ") + (decoder_name ? decoder_name : "");
     return video;
   }
   const AVStream& stream = *format->streams[index];

@@ -40,12 +40,14 @@ struct DecodedVideo {
     AVColorSpace space = AVCOL_SPC_UNSPECIFIED;
     AVColorRange range = AVCOL_RANGE_UNSPECIFIED;
     std::array<double, 3> mean_yuv{};  // mean code value of the Y, Cb and Cr planes
-    Image rgb;                         // back to full-range RGB with the BT.709 matrix
+    Image rgb;  // back to full-range RGB with the BT.709 matrix; yuva420p's alpha plane too
   };
   std::vector<Picture> pictures;
 };
 
-// Decodes every frame of the first video stream; on failure `error` says which call failed.
-DecodedVideo read_video(const std::string& path);
+// Decodes every frame of the first video stream, with the decoder named `decoder_name` (such as
+// "libvpx-vp9", which reads a WebM's alpha) or else libavcodec's choice; on failure `error` says
+// which call failed.
+DecodedVideo read_video(const std::string& path, const char* decoder_name = nullptr);
 
 }  // namespace tumble::testing

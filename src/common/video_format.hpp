@@ -1,0 +1,48 @@
+// The video formats a render writes, as plain data: named in scenes ([output] formats), on the
+// command line (--format) and by the encoder (io/video_encoder.hpp), so that none of them
+// includes another.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace tumble::common {
+
+enum class VideoFormat { mp4, webm, gif };
+
+inline constexpr VideoFormat kAllVideoFormats[] = {VideoFormat::mp4, VideoFormat::webm,
+                                                   VideoFormat::gif};
+
+// "mp4", "webm", "gif": the name in scenes and on the command line, and the file extension.
+constexpr const char* video_format_name(VideoFormat format) {
+  switch (format) {
+    case VideoFormat::mp4:
+      return "mp4";
+    case VideoFormat::webm:
+      return "webm";
+    case VideoFormat::gif:
+      return "gif";
+  }
+  return "?";
+}
+
+// The format named `name`, or nothing.
+constexpr std::optional<VideoFormat> video_format_named(std::string_view name) {
+  for (const VideoFormat format : kAllVideoFormats) {
+    if (name == video_format_name(format)) return format;
+  }
+  return std::nullopt;
+}
+
+// Whether the format stores colour in 4:2:0 (one chroma sample per 2×2 pixels), so that its
+// picture must have an even width and height. A GIF's palette indices have no chroma planes.
+constexpr bool needs_even_size(VideoFormat format) {
+  return format != VideoFormat::gif;
+}
+
+// Whether the format can carry an alpha channel as tumble writes it (VP9 yuva420p in WebM).
+constexpr bool carries_alpha(VideoFormat format) {
+  return format == VideoFormat::webm;
+}
+
+}  // namespace tumble::common

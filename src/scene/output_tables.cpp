@@ -1,0 +1,56 @@
+#include "scene/output_tables.hpp"
+
+#include <algorithm>
+
+namespace tumble::scene::detail {
+namespace {
+
+constexpr const char* kFormatList = "\"mp4\", \"webm\" or \"gif\"";
+
+std::vector<common::VideoFormat> read_formats(TableReader& in) {
+  const toml::array* array = in.table().get("formats")->as_array();
+  if (!array) in.fail("formats", std::string("expected an array of ") + kFormatList);
+  if (array->empty()) {
+    in.fail("formats", "names no format: list one or more, or set video = false for no video");
+  }
+  std::vector<common::VideoFormat> formats;
+  for (const toml::node& node : *array) {
+    const std::optional<std::string_view> name = node.value<std::string_view>();
+    const std::optional<common::VideoFormat> format =
+        name ? common::video_format_named(*name) : std::nullopt;
+    if (!format) {
+      in.fail_at(node.source(), in.qualified("formats"),
+                 (name ? "unknown format " + in_quotes(*name)
+                       : "expected a string, found " + std::string(type_name(node))) +
+                     " (" + kFormatList + ")");
+    }
+    if (std::find(formats.begin(), formats.end(), *format) != formats.end()) {
+      in.fail_at(node.source(), in.qualified("formats"), "lists " + in_quotes(*name) + " twice");
+    }
+    formats.push_back(*format);
+  }
+  return formats;
+}
+
+}  // namespace
+
+void read_output_choices(TableReader& in, OutputSpec& output) {
+  if (in.has("formats")) output.formats = read_formats(in);
+  output.gif_loop = in.optional_bool("gif_loop", output.gif_loop);
+  if (in.has("poster_time")) {
+    output.poster_time = in.required_number("poster_time");
+    require_non_negative(in, "poster_time", *output.poster_time);
+  }
+}
+
+void read_background(TableReader& in, common::RenderSettings& render) {
+  if (in.has("background")) {
+    if (in.table().get("background")->value<std::string_view>() == "transparent") {
+      render.transparent = true;
+      return;
+    }
+  }
+  render.background = in.optional_color("background", render.background);
+}
+
+}  // namespace tumble::scene::detail

@@ -1,0 +1,76 @@
+// [output] formats, gif_loop and poster_time, and [render] background = "transparent", as read
+// from a scene file.
+#include "scene/output_tables.hpp"
+
+#include <gtest/gtest.h>
+
+#include <variant>
+
+#include "scene/scene_loader.hpp"
+
+namespace tumble::scene {
+namespace {
+
+constexpr const char* kCube = R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+)";
+
+SceneOrError parsed(const std::string& tables) {
+  return parse_scene(std::string(kCube) + tables, "test.toml");
+}
+
+std::string error_of(const std::string& tables) {
+  const SceneOrError result = parsed(tables);
+  const auto* error = std::get_if<SceneError>(&result);
+  return error ? error->message : "(no error)";
+}
+
+TEST(OutputTables, DefaultsAreOneMp4LoopingGifAndOpaqueBackground) {
+  const Scene scene = std::get<Scene>(parsed(""));
+  EXPECT_EQ(scene.output.formats, std::vector<common::VideoFormat>{common::VideoFormat::mp4});
+  EXPECT_TRUE(scene.output.gif_loop);
+  EXPECT_FALSE(scene.output.poster_time);
+  EXPECT_FALSE(scene.render.transparent);
+}
+
+TEST(OutputTables, FormatsAreReadInOrder) {
+  const Scene scene = std::get<Scene>(parsed(
+      "[output]\nformats = [\"gif\", \"mp4\", \"webm\"]\ngif_loop = false\nposter_time = 0.25\n"));
+  EXPECT_EQ(scene.output.formats,
+            (std::vector<common::VideoFormat>{common::VideoFormat::gif, common::VideoFormat::mp4,
+                                              common::VideoFormat::webm}));
+  EXPECT_FALSE(scene.output.gif_loop);
+  EXPECT_EQ(scene.output.poster_time, 0.25);
+}
+
+TEST(OutputTables, BadFormatsAreErrorsAtTheirLine) {
+  EXPECT_NE(error_of("[output]\nformats = [\"mp4\", \"avi\"]\n")
+                .find("test.toml:7:19: output.formats: unknown format \"avi\""),
+            std::string::npos)
+      << error_of("[output]\nformats = [\"mp4\", \"avi\"]\n");
+  EXPECT_NE(error_of("[output]\nformats = [\"gif\", \"gif\"]\n").find("lists \"gif\" twice"),
+            std::string::npos);
+  EXPECT_NE(error_of("[output]\nformats = []\n").find("names no format"), std::string::npos);
+  EXPECT_NE(error_of("[output]\nformats = \"mp4\"\n").find("expected an array"), std::string::npos);
+}
+
+TEST(OutputTables, TransparentIsABackgroundAndAColourStillIsOne) {
+  const Scene clear = std::get<Scene>(
+      parsed("[render]\nbackground = \"transparent\"\n[output]\nformats = [\"webm\"]\n"));
+  EXPECT_TRUE(clear.render.transparent);
+  const Scene coloured = std::get<Scene>(parsed("[render]\nbackground = \"#ff0000\"\n"));
+  EXPECT_FALSE(coloured.render.transparent);
+  EXPECT_EQ(coloured.render.background, common::Color(1, 0, 0));
+  // With the default MP4, the loader blames the background (the file has no formats key).
+  EXPECT_NE(error_of("[render]\nbackground = \"transparent\"\n")
+                .find("test.toml:7:14: render.background: a transparent background needs a "
+                      "format with alpha"),
+            std::string::npos)
+      << error_of("[render]\nbackground = \"transparent\"\n");
+}
+
+}  // namespace
+}  // namespace tumble::scene
