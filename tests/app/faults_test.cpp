@@ -49,6 +49,26 @@ class Faults : public tumble::testing::CommandTest {
     return count;
   }
 
+  // Waits (up to a minute) until process `pid` is tumble and catches `signal` (its handler is
+  // installed, as /proc/PID/status's SigCgt mask shows): a signal sent sooner would kill it
+  // outright, and on a loaded machine tumble may take over a second to get there.
+  static bool wait_until_catching(pid_t pid, int signal) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+    const std::string status = "/proc/" + std::to_string(pid) + "/status";
+    while (std::chrono::steady_clock::now() < deadline) {
+      std::ifstream in(status);
+      bool tumble = false;  // not the shell that is about to exec it
+      for (std::string line; std::getline(in, line);) {
+        if (line.rfind("Name:", 0) == 0) tumble = line.find("tumble") != std::string::npos;
+        if (line.rfind("SigCgt:", 0) != 0) continue;
+        const unsigned long long caught = std::stoull(line.substr(7), nullptr, 16);
+        if (tumble && (caught >> (signal - 1) & 1)) return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return false;
+  }
+
   // Waits (up to a minute) until a render into `root` has written `frames` PNG frames.
   bool wait_for_frames(const fs::path& root, int frames) const {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
@@ -129,7 +149,8 @@ TEST_F(Faults, SigintStopsASimulationBlockedOnAFullPipe) {
   // Opened (without waiting for the writer), never read: the pipe fills.
   const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
   ASSERT_GE(reader, 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_TRUE(wait_until_catching(simulate, SIGINT)) << "the simulation never got going";
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // time to fill the pipe
   ASSERT_EQ(::kill(simulate, SIGINT), 0);
   const Outcome run = wait(simulate);
   ::close(reader);
@@ -149,7 +170,7 @@ mass = 1.0
 )");
   const pid_t simulate =
       start("simulate " + scene.string() + " --every 1000000 --out " + path("states.csv"));
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  ASSERT_TRUE(wait_until_catching(simulate, SIGINT)) << "the simulation never got going";
   ASSERT_EQ(::kill(simulate, SIGINT), 0);
   const Outcome run = wait(simulate);
   EXPECT_EQ(run.exit_code, 130) << run.err;
