@@ -201,6 +201,9 @@ int main(int argc, char** argv) {
       ->excludes(plan_chunks);
   plan_command->add_option("--fps", plan.render.fps, "Frames per second (as render --fps)")
       ->check(CLI::Range(1, 240));
+  plan_command->add_option("--quality", plan.render.quality,
+                           "Size and frame rate preset (as render --quality): the frame count "
+                           "follows its rate");
   plan_command->add_flag("--json", plan.json, "Print the plan as JSON");
 
   JoinOptions join;

@@ -56,8 +56,11 @@ TEST_F(PlanCommand, ChunkFramesPlansTheFewestChunksOfAtMostKFrames) {
   expect_plan("--chunk-frames 100", "0:15\n");
 }
 
-TEST_F(PlanCommand, CountsTheFramesAsRenderDoesWithItsFpsOverride) {
+TEST_F(PlanCommand, CountsTheFramesAsRenderDoesWithItsRateOverrides) {
   expect_plan("--chunks 2 --fps 60", "0:15\n15:30\n");
+  // --quality high is 60 frames/s; an --fps beside it wins, as in render.
+  expect_plan("--chunks 2 --quality high", "0:15\n15:30\n");
+  expect_plan("--chunks 2 --quality high --fps 30", "0:8\n8:15\n");
 }
 
 TEST_F(PlanCommand, PrintsJson) {
