@@ -26,20 +26,20 @@ std::string PngFrames::write(std::int64_t frame, const io::Image& image) {
   return io::write_png((fs::path(folder_) / png_frame_name(frame)).string(), image, settings_);
 }
 
-Result<std::unique_ptr<FrameSink>> Mp4Video::open(const std::string& path,
-                                                  const io::VideoSettings& settings) {
+Result<std::unique_ptr<FrameSink>> VideoSink::open(const std::string& path,
+                                                   const io::VideoSettings& settings) {
   std::string error;
   std::unique_ptr<io::VideoEncoder> encoder = io::VideoEncoder::open(path, settings, error);
   if (!encoder) return Error{error};
-  return std::unique_ptr<FrameSink>(new Mp4Video(std::move(encoder)));
+  return std::unique_ptr<FrameSink>(new VideoSink(std::move(encoder), settings.format));
 }
 
 // The encoder numbers frames itself, in the order they come (the loop's order).
-std::string Mp4Video::write(std::int64_t, const io::Image& image) {
+std::string VideoSink::write(std::int64_t, const io::Image& image) {
   return encoder_->add_frame(image);
 }
 
-std::string Mp4Video::finish() {
+std::string VideoSink::finish() {
   return encoder_->finish();
 }
 

@@ -44,18 +44,25 @@ class PngFrames final : public FrameSink {
   io::PngSettings settings_;
 };
 
-// An H.264 MP4; unless finished, its destructor removes the partial file.
-class Mp4Video final : public FrameSink {
+// A video of any format (io::VideoFormat: MP4, WebM, GIF), one io::VideoEncoder fed every frame
+// in order; unless finished, its destructor removes the partial file.
+class VideoSink final : public FrameSink {
  public:
   static Result<std::unique_ptr<FrameSink>> open(const std::string& path,
                                                  const io::VideoSettings& settings);
-  const char* stage() const override { return "video"; }
+  // Its stage in report.json: "video" for the MP4 (as before other formats), else the format's
+  // name ("webm", "gif").
+  const char* stage() const override {
+    return format_ == io::VideoFormat::mp4 ? "video" : io::video_format_name(format_);
+  }
   std::string write(std::int64_t frame, const io::Image& image) override;
   std::string finish() override;
 
  private:
-  explicit Mp4Video(std::unique_ptr<io::VideoEncoder> encoder) : encoder_(std::move(encoder)) {}
+  VideoSink(std::unique_ptr<io::VideoEncoder> encoder, io::VideoFormat format)
+      : encoder_(std::move(encoder)), format_(format) {}
   std::unique_ptr<io::VideoEncoder> encoder_;
+  io::VideoFormat format_;
 };
 
 }  // namespace tumble::app

@@ -12,7 +12,6 @@
 #include "app/poster_sink.hpp"
 #include "app/quality_preset.hpp"
 #include "app/scene_view.hpp"
-#include "app/video_sink.hpp"
 #include "render/renderer.hpp"
 #include "scene/video_rules.hpp"
 
@@ -85,9 +84,7 @@ Result<std::vector<std::unique_ptr<FrameSink>>> open_sinks(const RenderJob& job,
                                      .first_frame = job.partial() ? job.first : 0,
                                      .preset = scene.output.preset};
     const std::string path = job.video_path(folder, format);
-    Result<std::unique_ptr<FrameSink>> video = format == io::VideoFormat::mp4
-                                                   ? Mp4Video::open(path, settings)
-                                                   : VideoSink::open(path, settings);
+    Result<std::unique_ptr<FrameSink>> video = VideoSink::open(path, settings);
     if (!video) return Error{video.error()};
     sinks.push_back(std::move(*video));
   }

@@ -3,7 +3,7 @@
 // 20 fps exactly in whole centiseconds; a transparent render gives RGBA PNGs and a WebM whose
 // alpha, read by libvpx's own VP9 decoder, is 0 off the cube and 255 on it. (What the encoder
 // itself guarantees, palette and timing rules, is tests/io/video_encoder_test.cpp's.)
-#include "app/video_sink.hpp"
+#include "app/frame_sinks.hpp"
 
 #include <gtest/gtest.h>
 #include <png.h>
