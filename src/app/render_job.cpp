@@ -122,12 +122,8 @@ Result<FrameRange> frame_range(const RenderOptions& options, std::int64_t total)
 std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Framing& framing,
                                                 RenderResult& result) {
   const double start = process_cpu_seconds();
-  // A font and the lines' shaders only for a scene whose overlays draw them.
   const scene::Scene& scene = job.scene;
-  render::RenderSettings settings{scene.render,
-                                  overlays_need_font(scene) ? overlay_font(scene) : std::string(),
-                                  overlays_need_lines(scene)};
-  settings.ground = framing.ground;
+  const render::RenderSettings settings = renderer_settings(scene, framing);
   std::unique_ptr<render::Renderer> renderer =
       render::Renderer::create(settings, job.shader_directory, result.error);
   if (!renderer) {

@@ -56,7 +56,7 @@ struct RenderJob {
   std::filesystem::path directory;    // the final folder: output_root / [output] directory
   io::PngSettings png;
   bool serial = false;  // one thread, for comparison (same bytes as the pipeline)
-  bool stills = true;  // poster.png and contact_sheet.png (bench pipeline measures without)
+  bool stills = true;   // poster.png and contact_sheet.png (bench pipeline measures without)
   std::string shader_directory;
 
   // A part of the whole render (a chunk or --frames A:B): its videos are then segments to be

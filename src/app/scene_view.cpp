@@ -240,4 +240,12 @@ Result<std::int64_t> SimulatedFrames::seek(std::int64_t frame) {
   return simulation_.step_count() - before;
 }
 
+render::RenderSettings renderer_settings(const scene::Scene& scene, const Framing& framing) {
+  render::RenderSettings settings{scene.render,
+                                  overlays_need_font(scene) ? overlay_font(scene) : std::string(),
+                                  overlays_need_lines(scene)};
+  settings.ground = framing.ground;
+  return settings;
+}
+
 }  // namespace tumble::app

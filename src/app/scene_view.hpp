@@ -29,6 +29,10 @@ struct Framing {
   std::int64_t physics_steps = 0;   // steps the framing pass took; 0 when it was not needed
 };
 
+// The renderer's settings for `scene` drawn as `framing` places its ground: a font and the lines'
+// shaders only for a scene whose overlays draw them.
+render::RenderSettings renderer_settings(const scene::Scene& scene, const Framing& framing);
+
 // Asked before each frame: true stops the render ("interrupted").
 using StopRequested = std::function<bool()>;
 

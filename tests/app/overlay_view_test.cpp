@@ -56,10 +56,7 @@ io::Image render_frame(scene::Scene scene, int width, int height, std::int64_t f
   const Result<Framing> framing = frame_scene(scene, 120, [] { return false; });
   EXPECT_TRUE(framing) << (framing ? "" : framing.error());
   if (!framing) return {};
-  render::RenderSettings settings{
-      scene.render, overlays_need_font(scene) ? overlay_font(scene) : std::string(),
-      overlays_need_lines(scene)};
-  settings.ground = framing->ground;
+  const render::RenderSettings settings = renderer_settings(scene, *framing);
   SimulatedFrames source(scene, *framing, [] { return false; });
   const Result<render::FrameView> view = source.view(frame);
   EXPECT_TRUE(view) << (view ? "" : view.error());

@@ -1705,7 +1705,8 @@ mass = 1.0
 format = "gif"
 )",
      "test.toml:7:1", "output.format",
-     "unknown key (allowed here: crf, directory, formats, frames, gif_loop, poster_time, preset, video)"},
+     "unknown key (allowed here: crf, directory, formats, frames, gif_loop, poster_time, preset, "
+     "video)"},
     {"BodyColourNotHex", R"(duration = 1.0
 [[bodies]]
 shape = "cube"
