@@ -14,7 +14,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <random>
-#include <regex>
 #include <sstream>
 #include <thread>
 
@@ -243,11 +242,18 @@ bool SlurmCluster::wait_until_idle(double seconds) const {
 
 std::string SlurmCluster::job_state(const std::string& job_id) const {
   const std::string text = client("scontrol show job -o " + shell_quoted(job_id));
-  static const std::regex field(R"(JobState=(\S+) Reason=(\S+))");
+  // "JobState=STATE Reason=REASON" of each job listed (one a line with -o). Read by hand: GCC 12
+  // warns inside std::regex under the sanitizer build (maybe-uninitialized), an error there.
+  const auto word_at = [&](std::size_t from) {
+    return text.substr(from, text.find_first_of(" \t\n", from) - from);
+  };
   std::string states;
-  for (auto match = std::sregex_iterator(text.begin(), text.end(), field);
-       match != std::sregex_iterator(); ++match) {
-    states += (states.empty() ? "" : ", ") + (*match)[1].str() + " " + (*match)[2].str();
+  for (std::size_t at = text.find("JobState="); at != std::string::npos;
+       at = text.find("JobState=", at + 1)) {
+    const std::string state = word_at(at + 9);
+    const std::size_t reason = at + 9 + state.size();
+    if (text.compare(reason, 8, " Reason=") != 0) continue;
+    states += (states.empty() ? "" : ", ") + state + " " + word_at(reason + 8);
   }
   return states.empty() ? text : states;
 }
