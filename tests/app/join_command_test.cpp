@@ -11,6 +11,7 @@
 
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
+#include "support/scene_text.hpp"
 #include "support/test_frames.hpp"
 #include "support/video_reader.hpp"
 
@@ -23,28 +24,9 @@ using tumble::testing::read_file;
 // Half a second at 30 frames/s, 64x36: 15 frames of a cube spun up by a torque. The camera and
 // ground are written out, so no framing pass runs and a chunk steps the physics only up to its
 // first frame.
-constexpr const char* kScene = R"(name = "spin"
-duration = 0.5
-[physics]
-dt = 0.01
-[[bodies]]
-shape = "cube"
-size = 1.0
-mass = 1.0
-angular_velocity = [0.0, 2.0, 1.0]
-[[bodies.forces]]
-kind = "torque"
-torque = [1.0, 0.0, 0.0]
-[render]
-width = 64
-height = 36
-fps = 30
-[camera]
-position = [0.0, 1.5, 4.0]
-look_at = [0.0, 0.0, 0.0]
-[ground]
-height = -1.5
-)";
+const std::string kScene = tumble::testing::spin_scene(
+    64, 36, tumble::testing::kTorqueX,
+    "[camera]\nposition = [0.0, 1.5, 4.0]\nlook_at = [0.0, 0.0, 0.0]\n[ground]\nheight = -1.5\n");
 
 // RMS distance (levels, all channels) of a joined video's decoded frame from the whole render's
 // decoded frame: measured 5.53 at most on this scene (the one-frame chunk; 3.1 to 4.7 for the

@@ -5,25 +5,14 @@
 #include <string>
 
 #include "support/command_test.hpp"
+#include "support/scene_text.hpp"
 
 namespace {
 
 using tumble::testing::Outcome;
 
 // 15 frames: half a second at 30 frames/s.
-constexpr const char* kScene = R"(name = "spin"
-duration = 0.5
-[physics]
-dt = 0.01
-[[bodies]]
-shape = "cube"
-size = 1.0
-mass = 1.0
-[render]
-width = 64
-height = 36
-fps = 30
-)";
+const std::string kScene = tumble::testing::spin_scene(64, 36);
 
 class PlanCommand : public tumble::testing::CommandTest {
  protected:

@@ -11,6 +11,7 @@
 #include "io/png_io.hpp"
 #include "render/offscreen_context.hpp"
 #include "support/command_test.hpp"
+#include "support/scene_text.hpp"
 #include "support/video_reader.hpp"
 
 namespace {
@@ -21,23 +22,7 @@ using tumble::testing::Outcome;
 using tumble::testing::read_file;
 
 // Half a second at 30 frames/s: 15 frames of a cube spinning up, small and quick to render.
-constexpr const char* kScene = R"(name = "spin"
-duration = 0.5
-[physics]
-dt = 0.01
-[[bodies]]
-shape = "cube"
-size = 1.0
-mass = 1.0
-angular_velocity = [0.0, 2.0, 1.0]
-[[bodies.forces]]
-kind = "torque"
-torque = [1.0, 0.0, 0.0]
-[render]
-width = 160
-height = 120
-fps = 30
-)";
+const std::string kScene = tumble::testing::spin_scene(160, 120, tumble::testing::kTorqueX);
 
 class RenderCommand : public tumble::testing::CommandTest {
  protected:

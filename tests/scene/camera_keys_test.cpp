@@ -7,25 +7,17 @@
 #include <variant>
 
 #include "scene/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tumble::scene {
 namespace {
 
-constexpr const char* kCube = R"(duration = 4.0
-[[bodies]]
-shape = "cube"
-size = 1.0
-mass = 1.0
-)";
-
-SceneOrError parsed(const std::string& tables) {
-  return parse_scene(std::string(kCube) + tables, "test.toml");
+// A 4 s cube scene with `tables` appended, parsed; and its error.
+Scene parsed(const std::string& tables) {
+  return testing::parse_valid(testing::cube_scene(4.0) + tables);
 }
-
 std::string error_of(const std::string& tables) {
-  const SceneOrError result = parsed(tables);
-  const auto* error = std::get_if<SceneError>(&result);
-  return error ? error->message : "(no error)";
+  return testing::error_of(testing::cube_scene(4.0) + tables);
 }
 
 constexpr const char* kTwoKeys = R"([camera]
@@ -43,7 +35,7 @@ fov_degrees = 50
 )";
 
 TEST(CameraKeys, KeysAndOrbitAreRead) {
-  const Scene scene = std::get<Scene>(parsed(kTwoKeys));
+  const Scene scene = parsed(kTwoKeys);
   ASSERT_EQ(scene.camera.keys.size(), 2u);
   EXPECT_EQ(scene.camera.keys[0].time, 0.0);
   EXPECT_EQ(scene.camera.keys[0].fov_degrees, 35.0);  // [camera] fov_degrees

@@ -7,29 +7,21 @@
 #include <variant>
 
 #include "scene/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tumble::scene {
 namespace {
 
-constexpr const char* kCube = R"(duration = 1.0
-[[bodies]]
-shape = "cube"
-size = 1.0
-mass = 1.0
-)";
-
-SceneOrError parsed(const std::string& tables) {
-  return parse_scene(std::string(kCube) + tables, "test.toml");
+// A 1 s cube scene with `tables` appended, parsed; and its error.
+Scene parsed(const std::string& tables) {
+  return testing::parse_valid(testing::cube_scene(1.0) + tables);
 }
-
 std::string error_of(const std::string& tables) {
-  const SceneOrError result = parsed(tables);
-  const auto* error = std::get_if<SceneError>(&result);
-  return error ? error->message : "(no error)";
+  return testing::error_of(testing::cube_scene(1.0) + tables);
 }
 
 TEST(OutputTables, DefaultsAreOneMp4LoopingGifAndOpaqueBackground) {
-  const Scene scene = std::get<Scene>(parsed(""));
+  const Scene scene = parsed("");
   EXPECT_EQ(scene.output.formats, std::vector<common::VideoFormat>{common::VideoFormat::mp4});
   EXPECT_TRUE(scene.output.gif_loop);
   EXPECT_FALSE(scene.output.poster_time);
@@ -37,8 +29,8 @@ TEST(OutputTables, DefaultsAreOneMp4LoopingGifAndOpaqueBackground) {
 }
 
 TEST(OutputTables, FormatsAreReadInOrder) {
-  const Scene scene = std::get<Scene>(parsed(
-      "[output]\nformats = [\"gif\", \"mp4\", \"webm\"]\ngif_loop = false\nposter_time = 0.25\n"));
+  const Scene scene = parsed(
+      "[output]\nformats = [\"gif\", \"mp4\", \"webm\"]\ngif_loop = false\nposter_time = 0.25\n");
   EXPECT_EQ(scene.output.formats,
             (std::vector<common::VideoFormat>{common::VideoFormat::gif, common::VideoFormat::mp4,
                                               common::VideoFormat::webm}));
@@ -58,10 +50,10 @@ TEST(OutputTables, BadFormatsAreErrorsAtTheirLine) {
 }
 
 TEST(OutputTables, TransparentIsABackgroundAndAColourStillIsOne) {
-  const Scene clear = std::get<Scene>(
-      parsed("[render]\nbackground = \"transparent\"\n[output]\nformats = [\"webm\"]\n"));
+  const Scene clear =
+      parsed("[render]\nbackground = \"transparent\"\n[output]\nformats = [\"webm\"]\n");
   EXPECT_TRUE(clear.render.transparent);
-  const Scene coloured = std::get<Scene>(parsed("[render]\nbackground = \"#ff0000\"\n"));
+  const Scene coloured = parsed("[render]\nbackground = \"#ff0000\"\n");
   EXPECT_FALSE(coloured.render.transparent);
   EXPECT_EQ(coloured.render.background, common::Color(1, 0, 0));
   // With the default MP4, the loader blames the background (the file has no formats key).

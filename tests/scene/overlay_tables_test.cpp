@@ -7,20 +7,14 @@
 #include <variant>
 
 #include "scene/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tumble::scene {
 namespace {
 
 using physics::Vec3;
 
-Scene parse_valid(const std::string& text) {
-  SceneOrError result = parse_scene(text, "test.toml");
-  if (const SceneError* error = std::get_if<SceneError>(&result)) {
-    ADD_FAILURE() << "unexpected error: " << error->message;
-    return {};
-  }
-  return std::get<Scene>(std::move(result));
-}
+using testing::parse_valid;
 
 constexpr const char* kBodies = R"(duration = 2.0
 [[bodies]]

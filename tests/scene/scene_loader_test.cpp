@@ -1,4 +1,5 @@
 #include "scene/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,15 +15,7 @@ using physics::Vec3;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The scene parsed from `text`, or a test failure carrying the loader's message.
-Scene parse_valid(const std::string& text) {
-  SceneOrError result = parse_scene(text, "test.toml");
-  if (const SceneError* error = std::get_if<SceneError>(&result)) {
-    ADD_FAILURE() << "unexpected error: " << error->message;
-    return {};
-  }
-  return std::get<Scene>(std::move(result));
-}
+using testing::parse_valid;
 
 // The force law at `index` as kind T; a test failure (and a default T) if it is another kind.
 template <typename T>

@@ -7,15 +7,12 @@
 #include <variant>
 
 #include "scene/scene_loader.hpp"
+#include "support/scene_text.hpp"
 
 namespace tumble::scene {
 namespace {
 
-Scene loaded(const std::string& text) {
-  const SceneOrError result = parse_scene(text, "test.toml");
-  if (const auto* error = std::get_if<SceneError>(&result)) ADD_FAILURE() << error->message;
-  return std::get<Scene>(result);
-}
+using testing::parse_valid;
 
 constexpr const char* kCube = R"(duration = 0.5
 [[bodies]]
@@ -29,7 +26,7 @@ fps = 30
 )";
 
 TEST(VideoRules, FrameCountIsDurationTimesFpsToTheNearestFrame) {
-  Scene scene = loaded(kCube);
+  Scene scene = parse_valid(kCube);
   EXPECT_EQ(frame_count(scene), 15);
   scene.duration = 0.51;  // 15.3 frames
   EXPECT_EQ(frame_count(scene), 15);
@@ -41,7 +38,7 @@ TEST(VideoRules, FrameCountIsDurationTimesFpsToTheNearestFrame) {
 }
 
 TEST(VideoRules, ALoadedSceneKeepsThemAndAChangedOneNamesTheKeyItBroke) {
-  const Scene scene = loaded(kCube);
+  const Scene scene = parse_valid(kCube);
   EXPECT_FALSE(broken_video_rule(scene));
 
   Scene odd = scene;
@@ -87,7 +84,7 @@ TEST(VideoRules, TheLoaderBlamesTheFirstKeyTheFileHas) {
 }
 
 TEST(VideoRules, EachFormatBringsItsOwnSizeRule) {
-  Scene scene = loaded(kCube);
+  Scene scene = parse_valid(kCube);
   scene.render.width = 161;
   scene.output.formats = {common::VideoFormat::gif};  // palette indices: any size
   EXPECT_FALSE(broken_video_rule(scene));
@@ -99,7 +96,7 @@ TEST(VideoRules, EachFormatBringsItsOwnSizeRule) {
 }
 
 TEST(VideoRules, ATransparentBackgroundNeedsEveryVideoToCarryAlpha) {
-  Scene scene = loaded(kCube);
+  Scene scene = parse_valid(kCube);
   scene.render.transparent = true;
   ASSERT_TRUE(broken_video_rule(scene));  // the default MP4 has no alpha
   EXPECT_EQ(broken_video_rule(scene)->keys,
@@ -113,7 +110,7 @@ TEST(VideoRules, ATransparentBackgroundNeedsEveryVideoToCarryAlpha) {
 }
 
 TEST(VideoRules, PosterFrameIsTheMiddleOrTheNearestToPosterTime) {
-  Scene scene = loaded(kCube);  // 15 frames at 30 fps
+  Scene scene = parse_valid(kCube);  // 15 frames at 30 fps
   EXPECT_EQ(poster_frame(scene), 7);
   scene.output.poster_time = 0.2;  // 6 frames in
   EXPECT_EQ(poster_frame(scene), 6);
