@@ -96,8 +96,15 @@ std::string joined_report(const std::vector<ChunkReport>& chunks, const fs::path
        << ", \"count\": " << first.scene_frames << "}"
        << ",\n  \"frames_directory\": "
        << (first.has_frames ? json_string((out / "frames").string()) : "null") << ",\n  \"video\": "
-       << (first.video_name.empty() ? "null" : json_string((out / first.video_name).string()))
-       << ",\n  \"renderer\": " << json_string(first.renderer) << ",\n  \"joined_from\": [";
+       << (first.video_names.empty() ? "null"
+                                     : json_string((out / first.video_names.front()).string()))
+       << ",\n  \"videos\": {";
+  for (std::size_t i = 0; i < first.video_names.size(); ++i) {
+    const fs::path name = first.video_names[i];
+    text << (i ? ", " : "") << json_string(name.extension().string().substr(1)) << ": "
+         << json_string((out / name).string());
+  }
+  text << "},\n  \"renderer\": " << json_string(first.renderer) << ",\n  \"joined_from\": [";
   for (std::size_t i = 0; i < chunks.size(); ++i) {
     text << (i ? "," : "") << "\n    {\"folder\": " << json_string(chunks[i].folder.string())
          << ", \"first\": " << chunks[i].frames.first << ", \"end\": " << chunks[i].frames.end
@@ -107,6 +114,19 @@ std::string joined_report(const std::vector<ChunkReport>& chunks, const fs::path
   return text.str();
 }
 
+// Why the video segment at `path` does not hold exactly `frames`, the frames its chunk's report
+// says it holds (a WebM's index does not count its frames, so a copy cut short shows here), or "".
+std::string segment_problem(const std::string& path, const FrameRange& frames) {
+  const io::VideoSegmentInfo info = io::read_segment_info(path);
+  if (!info.error.empty()) return info.error;
+  if (info.first_frame != frames.first || info.first_frame + info.frames != frames.end) {
+    return path + ": holds frames " +
+           range_text({info.first_frame, info.first_frame + info.frames}) + ", its report says " +
+           range_text(frames) + " (a truncated or replaced copy?)";
+  }
+  return {};
+}
+
 // The joined render written into `staging`.
 std::string write_joined(const std::vector<ChunkReport>& chunks, const fs::path& staging,
                          const fs::path& out) {
@@ -114,12 +134,15 @@ std::string write_joined(const std::vector<ChunkReport>& chunks, const fs::path&
   if (first.has_frames) {
     if (std::string error = merge_frames(chunks, staging / "frames"); !error.empty()) return error;
   }
-  if (!first.video_name.empty()) {
+  for (const std::string& name : first.video_names) {
     std::vector<std::string> segments;
-    for (const ChunkReport& chunk : chunks)
-      segments.push_back((chunk.folder / chunk.video_name).string());
-    if (std::string error = io::join_videos(segments, (staging / first.video_name).string());
-        !error.empty()) {
+    for (const ChunkReport& chunk : chunks) {
+      segments.push_back((chunk.folder / name).string());
+      if (std::string error = segment_problem(segments.back(), chunk.frames); !error.empty()) {
+        return error;
+      }
+    }
+    if (std::string error = io::join_videos(segments, (staging / name).string()); !error.empty()) {
       return error;
     }
   }

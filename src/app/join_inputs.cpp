@@ -34,7 +34,7 @@ Result<ChunkReport> chunk_fields(const JsonValue& report, const fs::path& folder
   chunk.folder = folder;
   const JsonValue* frames = report.find("frames");
   const JsonValue* settings = report.find("settings");
-  const JsonValue* video = report.find("video");
+  const JsonValue* videos = report.find("videos");
   const JsonValue* frames_directory = report.find("frames_directory");
   Result<std::string> scene = text(report, "scene"), file = text(report, "scene_file"),
                       hash = text(report, "scene_hash"), renderer = text(report, "renderer");
@@ -49,12 +49,14 @@ Result<ChunkReport> chunk_fields(const JsonValue& report, const fs::path& folder
     if (error) return Error{*error};
   }
   if (!settings || settings->kind != JsonValue::Kind::object) return Error{"no \"settings\""};
-  for (const auto& [key, value] :
-       {std::pair{"video", video}, std::pair{"frames_directory", frames_directory}}) {
-    if (!value ||
-        (value->kind != JsonValue::Kind::string && value->kind != JsonValue::Kind::null)) {
-      return Error{"no \"" + std::string(key) + "\""};
-    }
+  if (!frames_directory || (frames_directory->kind != JsonValue::Kind::string &&
+                            frames_directory->kind != JsonValue::Kind::null)) {
+    return Error{"no \"frames_directory\""};
+  }
+  if (!videos || videos->kind != JsonValue::Kind::object) return Error{"no \"videos\""};
+  for (const auto& [format, path] : videos->members) {
+    if (path.kind != JsonValue::Kind::string) return Error{"no path for its " + format + " video"};
+    chunk.video_names.push_back(fs::path(path.string).filename().string());
   }
   chunk.has_frames = frames_directory->kind == JsonValue::Kind::string;
   chunk.scene = *scene;
@@ -64,9 +66,6 @@ Result<ChunkReport> chunk_fields(const JsonValue& report, const fs::path& folder
   chunk.scene_frames = *total;
   chunk.frames = {*first, *end};
   chunk.settings = *settings;
-  if (video->kind == JsonValue::Kind::string) {
-    chunk.video_name = fs::path(video->string).filename().string();
-  }
   if (chunk.frames.first < 0 || chunk.frames.end > chunk.scene_frames ||
       chunk.frames.first >= chunk.frames.end) {
     return Error{"frames " + range_text(chunk.frames) +

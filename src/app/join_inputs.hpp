@@ -19,13 +19,13 @@ struct ChunkReport {
   std::filesystem::path folder;  // as given on the command line
   std::string scene;             // the scene's name
   std::string scene_file;
-  std::string scene_hash;         // app/scene_hash.hpp
-  std::int64_t scene_frames = 0;  // frames of the whole render
-  FrameRange frames;              // the frames this folder holds
-  JsonValue settings;             // what must agree (render_command.cpp's settings_json)
-  bool has_frames = false;        // frames/ holds its PNG frames
-  std::string video_name;         // the MP4's file name in the folder; "" without video
-  std::string renderer;           // the OpenGL and back end that drew it
+  std::string scene_hash;                // app/scene_hash.hpp
+  std::int64_t scene_frames = 0;         // frames of the whole render
+  FrameRange frames;                     // the frames this folder holds
+  JsonValue settings;                    // what must agree (render_command.cpp's settings_json)
+  bool has_frames = false;               // frames/ holds its PNG frames
+  std::vector<std::string> video_names;  // its videos' file names in the folder ("spin.mp4")
+  std::string renderer;                  // the OpenGL and back end that drew it
 };
 
 // Reads `folder`/report.json; errors name the folder and what is missing or malformed.

@@ -39,8 +39,8 @@ std::string stage_json(const StageTime& stage) {
 }
 
 // What `tumble join` requires to be the same in every chunk (besides the scene's hash): what
-// decides the pixels of the frames and the bytes of the files. The MP4's pixel format (yuv420p)
-// and encoder threads are fixed by the build, and io::join_videos compares the H.264 headers.
+// decides the pixels of the frames and the bytes of the files. The videos' pixel formats and
+// encoder threads are fixed by the build, and io::join_videos compares the stream headers.
 std::string settings_json(const RenderJob& job, const RenderResult& result) {
   const scene::Scene& scene = job.scene;
   std::ostringstream out;
@@ -49,8 +49,11 @@ std::string settings_json(const RenderJob& job, const RenderResult& result) {
       << ", \"frames\": " << (scene.output.frames ? "true" : "false")
       << ", \"png_zlib_level\": " << job.png.compression_level
       << ", \"png_filter\": " << (job.png.filter ? "true" : "false")
-      << ", \"video\": " << (scene.output.video ? "true" : "false")
-      << ", \"crf\": " << scene.output.crf << ", \"preset\": " << json_string(scene.output.preset)
+      << ", \"video\": " << (scene.output.video ? "true" : "false") << ", \"formats\": [";
+  for (std::size_t i = 0; i < scene.output.formats.size(); ++i) {
+    out << (i ? ", " : "") << json_string(io::video_format_name(scene.output.formats[i]));
+  }
+  out << "], \"crf\": " << scene.output.crf << ", \"preset\": " << json_string(scene.output.preset)
       << ", \"opengl\": " << json_string(result.opengl) << "}";
   return out.str();
 }

@@ -205,6 +205,17 @@ Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& opti
   const std::int64_t total = scene::frame_count(scene);
   Result<FrameRange> range = frame_range(options, total);
   if (!range) return Error{range.error()};
+  if (*range != FrameRange{0, total} && scene.output.video) {
+    for (const io::VideoFormat format : scene.output.formats) {
+      if (common::joins_in_segments(format)) continue;
+      const std::string name = io::video_format_name(format);
+      return Error{std::string(options.chunk ? "--chunk" : "--frames") + ": " + name +
+                   " is not written in parts (its palette is chosen for the frames it holds, so "
+                   "parts of one do not join): leave it out with --format mp4 or --format webm, "
+                   "and render the " +
+                   name + " whole"};
+    }
+  }
   if (options.chunk) {
     scene.output.directory += ".chunk-" + std::to_string(options.chunk->index) + "-of-" +
                               std::to_string(options.chunk->count);

@@ -45,4 +45,11 @@ constexpr bool carries_alpha(VideoFormat format) {
   return format == VideoFormat::webm;
 }
 
+// Whether a render of part of the frames writes this format as a segment that `tumble join` joins
+// by stream copy (H.264 in MP4, VP9 in WebM: each segment starts with a key frame). A GIF's
+// palette is chosen for its own frames, so parts of one would not make the whole's GIF.
+constexpr bool joins_in_segments(VideoFormat format) {
+  return format != VideoFormat::gif;
+}
+
 }  // namespace tumble::common

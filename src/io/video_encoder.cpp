@@ -55,8 +55,8 @@ std::string invalid_settings(const VideoSettings& settings) {
   if (settings.alpha && !common::carries_alpha(settings.format)) {
     return std::string("only WebM carries alpha (got ") + video_format_name(settings.format) + ")";
   }
-  if (settings.segment && settings.format != VideoFormat::mp4) {
-    return std::string("only MP4 is written in segments to join (got ") +
+  if (settings.segment && !common::joins_in_segments(settings.format)) {
+    return std::string("only MP4 and WebM are written in segments to join (got ") +
            video_format_name(settings.format) + ")";
   }
   if (settings.first_frame < 0 || (settings.first_frame > 0 && !settings.segment)) {

@@ -44,10 +44,11 @@ struct VideoSettings {
   // elements (alpha_mode 1); libavcodec's libvpx-vp9 decoder reads it back, its native vp9
   // decoder does not.
   bool alpha = false;
-  // MP4: a segment of a longer video, to be joined to the others by stream copy
+  // MP4 or WebM: a segment of a longer video, to be joined to the others by stream copy
   // (io/video_join.hpp): its first frame is frame `first_frame` of the whole, at first_frame /
-  // fps s, and x264 keeps its headers independent of the content (its `stitchable` option), so
-  // every segment of the same settings carries the same SPS and PPS.
+  // fps s, and a key frame (x264's first frame is an IDR frame, libvpx's a key frame). x264
+  // keeps its headers independent of the content (its `stitchable` option), so every segment of
+  // the same settings carries the same SPS and PPS.
   bool segment = false;
   long long first_frame = 0;
   std::string preset = "veryfast";  // x264 speed/size trade-off, "ultrafast" .. "placebo"

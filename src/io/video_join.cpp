@@ -54,7 +54,13 @@ int whole_fps(const AVStream& stream) {
   return rate.den > 0 && rate.num % rate.den == 0 ? rate.num / rate.den : 0;
 }
 
-// The output MP4, removed unless finished.
+std::string codec_name(const AVCodecParameters& parameters) {
+  return parameters.codec_id == AV_CODEC_ID_H264  ? "H.264"
+         : parameters.codec_id == AV_CODEC_ID_VP9 ? "VP9"
+                                                  : avcodec_get_name(parameters.codec_id);
+}
+
+// The output video, removed unless finished.
 struct Output {
   std::string temporary;
   AVFormatContext* format = nullptr;
@@ -131,20 +137,28 @@ std::string join_videos(const std::vector<std::string>& segments, const std::str
     streams.push_back(stream);
     const AVCodecParameters& first = *inputs[0]->streams[streams[0]]->codecpar;
     const AVCodecParameters& each = *inputs[i]->streams[stream]->codecpar;
-    if (each.codec_id != AV_CODEC_ID_H264) return segments[i] + ": not H.264";
+    if (each.codec_id != AV_CODEC_ID_H264 && each.codec_id != AV_CODEC_ID_VP9) {
+      return segments[i] + ": neither H.264 nor VP9";
+    }
+    if (each.codec_id != first.codec_id) {
+      return segments[i] + ": is " + codec_name(each) + ", " + segments[0] + " " +
+             codec_name(first);
+    }
     if (each.width != first.width || each.height != first.height || infos[i].fps != infos[0].fps) {
       return segments[i] + ": is " + std::to_string(each.width) + "x" +
              std::to_string(each.height) + " at " + std::to_string(infos[i].fps) + " fps, " +
              segments[0] + " " + std::to_string(first.width) + "x" + std::to_string(first.height) +
              " at " + std::to_string(infos[0].fps) + " fps";
     }
-    // The stream headers (avcC: SPS and PPS) must be byte for byte the first segment's, or the
-    // joined file's one header would describe some of its frames wrongly.
+    // The stream headers (H.264's avcC: SPS and PPS; VP9's codec private data) must be byte for
+    // byte the first segment's, or the joined file's one header would describe some of its frames
+    // wrongly.
     if (each.extradata_size != first.extradata_size ||
-        std::memcmp(each.extradata, first.extradata,
-                    static_cast<std::size_t>(first.extradata_size)) != 0) {
-      return segments[i] + ": its H.264 stream headers differ from " + segments[0] +
-             "'s (other encoder settings, or not written as a segment)";
+        (first.extradata_size > 0 &&
+         std::memcmp(each.extradata, first.extradata,
+                     static_cast<std::size_t>(first.extradata_size)) != 0)) {
+      return segments[i] + ": its " + codec_name(each) + " stream headers differ from " +
+             segments[0] + "'s (other encoder settings, or not written as a segment)";
     }
     const long long expected = i == 0 ? 0 : infos[i - 1].first_frame + infos[i - 1].frames;
     if (infos[i].first_frame != expected) {
@@ -157,18 +171,20 @@ std::string join_videos(const std::vector<std::string>& segments, const std::str
     }
   }
 
+  const AVStream& model = *inputs[0]->streams[streams[0]];
+  const bool mp4 = model.codecpar->codec_id == AV_CODEC_ID_H264;
+  const char* muxer = mp4 ? "mp4" : "webm";
   Output out;
-  out.temporary = path + ".partial-" + std::to_string(::getpid()) + ".mp4";
+  out.temporary = path + ".partial-" + std::to_string(::getpid()) + "." + muxer;
   const auto fail = [&](const std::string& call, int code) {
     return path + ": " + call + ": " + av::error_text(code);
   };
-  int code = avformat_alloc_output_context2(&out.format, nullptr, "mp4",
+  int code = avformat_alloc_output_context2(&out.format, nullptr, muxer,
                                             ("file:" + out.temporary).c_str());
   if (code < 0) return fail("avformat_alloc_output_context2", code);
   out.format->flags |= AVFMT_FLAG_BITEXACT;  // as VideoEncoder: same input, same bytes
   AVStream* stream = avformat_new_stream(out.format, nullptr);
   if (!stream) return fail("avformat_new_stream", AVERROR(ENOMEM));
-  const AVStream& model = *inputs[0]->streams[streams[0]];
   code = avcodec_parameters_copy(stream->codecpar, model.codecpar);
   if (code < 0) return fail("avcodec_parameters_copy", code);
   stream->codecpar->codec_tag = 0;
@@ -176,8 +192,12 @@ std::string join_videos(const std::vector<std::string>& segments, const std::str
   stream->avg_frame_rate = model.avg_frame_rate;
   code = avio_open(&out.format->pb, out.format->url, AVIO_FLAG_WRITE);
   if (code < 0) return fail("avio_open(" + out.temporary + ")", code);
+  // A WebM with alpha says so in its track (alpha_mode 1), as VideoEncoder writes it.
+  if (const AVDictionaryEntry* alpha = av_dict_get(model.metadata, "alpha_mode", nullptr, 0)) {
+    av_dict_set(&stream->metadata, "alpha_mode", alpha->value, 0);
+  }
   AVDictionary* options = nullptr;
-  av_dict_set(&options, "movflags", "+faststart", 0);
+  if (mp4) av_dict_set(&options, "movflags", "+faststart", 0);
   code = avformat_write_header(out.format, &options);
   av_dict_free(&options);
   if (code < 0) return fail("avformat_write_header", code);

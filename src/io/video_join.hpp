@@ -1,6 +1,6 @@
-// Joining MP4 segments of one video (each written with VideoSettings::segment, a render farm's
-// chunks) into the whole by stream copy, without decoding or encoding again. FFmpeg stays out of
-// this header.
+// Joining MP4 (H.264) or WebM (VP9) segments of one video (each written with
+// VideoSettings::segment, a render farm's chunks) into the whole by stream copy, without decoding
+// or encoding again. FFmpeg stays out of this header.
 #pragma once
 
 #include <string>
@@ -8,7 +8,7 @@
 
 namespace tumble::io {
 
-// What an MP4 holds, read from its index and packets without decoding.
+// What an MP4 or WebM holds, read from its index and packets without decoding.
 struct VideoSegmentInfo {
   std::string error;  // "" when the file could be read whole
   int width = 0, height = 0;
@@ -21,15 +21,17 @@ struct VideoSegmentInfo {
 };
 VideoSegmentInfo read_segment_info(const std::string& path);
 
-// Writes `segments`, in their order, as one MP4 at `path`: their packets copied, each with its
-// own presentation time, and decode times renumbered in one run for the whole (a segment too
-// short for B-frames decodes with no lead, so its own decode times would run into the next
-// segment's). Refuses (with a message naming the segment) anything but H.264 segments of one
-// size, one frame rate and the same stream headers (SPS/PPS; x264's stitchable headers do not show
-// every encoder setting, so the caller checks the settings themselves), each
-// starting at the frame after the last one's, the first at frame 0; and a segment whose index
-// lists more frames than its file holds (a truncated copy). Written beside `path` and renamed
-// into place, so `path` holds a whole video or nothing. Returns "" on success.
+// Writes `segments`, in their order, as one video at `path` (an MP4 for H.264 segments, a WebM
+// for VP9 ones): their packets copied, each with its own presentation time, and decode times
+// renumbered in one run for the whole (a segment too short for B-frames decodes with no lead, so
+// its own decode times would run into the next segment's). Refuses (with a message naming the
+// segment) anything but segments of one codec (H.264 or VP9), one size, one frame rate and the
+// same stream headers (SPS/PPS; x264's stitchable headers do not show every encoder setting, so
+// the caller checks the settings themselves), each starting at the frame after the last one's,
+// the first at frame 0; and a segment whose index lists more frames than its file holds (a
+// truncated copy; a WebM's index does not count frames, so the caller compares each segment's
+// frames with what it should hold). Written beside `path` and renamed into place, so `path` holds
+// a whole video or nothing. Returns "" on success.
 std::string join_videos(const std::vector<std::string>& segments, const std::string& path);
 
 }  // namespace tumble::io

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/json_text.hpp"
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
 #include "support/scene_text.hpp"
@@ -173,6 +174,87 @@ TEST_F(JoinCommand, ChunkIOfNRendersLineIOfThePlanAndTheChunksJoin) {
     EXPECT_EQ(read_file(dir_ / "joined/frames" / name), read_file(whole / "frames" / name)) << name;
   }
   EXPECT_EQ(tumble::testing::read_video(path("joined/spin.mp4")).pictures.size(), 15u);
+}
+
+// A render that writes MP4 and WebM joins both: the WebM's VP9 is stream-copied as the MP4's H.264
+// is, and decodes to the whole render's frame count and times, each frame near its PNG.
+TEST_F(JoinCommand, ChunksWithAnMp4AndAWebmJoinIntoBoth) {
+  const std::string formats = " --format mp4,webm";
+  const fs::path a = render("a", "--frames 0:7" + formats),
+                 b = render("b", "--frames 7:8" + formats),
+                 c = render("c", "--frames 8:15" + formats);
+  const Outcome run = join({a, b, c});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const fs::path joined = dir_ / "joined";
+  EXPECT_EQ(names_in(joined),
+            (std::vector<std::string>{"frames", "report.json", "spin.mp4", "spin.webm"}));
+  const auto webm = tumble::testing::read_video((joined / "spin.webm").string());
+  ASSERT_EQ(webm.error, "");
+  ASSERT_EQ(webm.pictures.size(), 15u);
+  EXPECT_NEAR(webm.duration, 0.5, 1e-3);  // WebM keeps times in milliseconds
+  const std::vector<std::string> frame_names = names_in(joined / "frames");
+  double worst = 0.0;
+  for (std::size_t k = 0; k < 15; ++k) {
+    EXPECT_NEAR(webm.pictures[k].time, static_cast<double>(k) / 30, 1e-3) << k;
+    tumble::io::Image source;
+    ASSERT_EQ(tumble::io::read_png((joined / "frames" / frame_names[k]).string(), source), "");
+    worst = std::max(worst, tumble::testing::rms_difference(webm.pictures[k].rgb, source));
+  }
+  std::printf("[ measured ] joined WebM: RMS at most %.3f from the PNGs\n", worst);
+  EXPECT_LT(worst, kFromSourceTolerance);
+  EXPECT_EQ(tumble::testing::read_video((joined / "spin.mp4").string()).pictures.size(), 15u);
+  const std::string report = read_file(joined / "report.json");
+  EXPECT_NE(report.find("\"videos\": {\"mp4\": " +
+                        tumble::app::json_string((joined / "spin.mp4").string()) +
+                        ", \"webm\": " + tumble::app::json_string((joined / "spin.webm").string())),
+            std::string::npos)
+      << report;
+}
+
+// A transparent render's WebM chunks join into a WebM that keeps its alpha (alpha_mode 1).
+TEST_F(JoinCommand, TransparentWebmChunksKeepTheirAlpha) {
+  std::string transparent = kScene;
+  transparent.replace(transparent.find("fps = 30\n"), 9,
+                      "fps = 30\nbackground = \"transparent\"\n");
+  const std::string clear =
+      write("clear.toml", transparent + "[output]\nformats = [\"webm\"]\n").string();
+  const fs::path a = render("a", "--frames 0:7", clear), c = render("c", "--frames 7:15", clear);
+  const Outcome run = join({a, c});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto webm = tumble::testing::read_video(path("joined/spin.webm"), "libvpx-vp9");
+  ASSERT_EQ(webm.error, "");
+  ASSERT_EQ(webm.pictures.size(), 15u);
+  EXPECT_EQ(webm.alpha_mode, "1");  // players show the alpha only when the track says so
+  for (const auto& picture : webm.pictures) {
+    ASSERT_EQ(picture.pixel_format, AV_PIX_FMT_YUVA420P);
+    ASSERT_EQ(picture.rgb.alpha.size(), 64u * 36u);
+    EXPECT_EQ(picture.rgb.alpha[0], 0);  // top-left corner: nothing there
+    // The cube in the middle: VP9 codes the alpha plane with loss too (measured 250 to 255 at
+    // this tiny size).
+    EXPECT_GE(picture.rgb.alpha[18 * 64 + 32], 240);
+  }
+}
+
+// A WebM's index does not count its frames: a copy cut short is found against the chunk's report.
+TEST_F(JoinCommand, RefusesATruncatedWebmSegment) {
+  const fs::path a = render("a", "--frames 0:7 --format webm"),
+                 c = render("c", "--frames 7:15 --format webm");
+  const fs::path webm = c / "spin.webm";
+  fs::resize_file(webm, fs::file_size(webm) / 2);
+  expect_refused({a, c}, webm.string());
+}
+
+// A GIF's palette is its own frames': --frames and --chunk refuse it before rendering anything.
+TEST_F(JoinCommand, APartOfAGifIsRefusedBeforeRendering) {
+  for (const std::string part : {"--frames 0:7", "--chunk 1/2"}) {
+    const Outcome run =
+        tumble("render " + scene() + " " + part + " --format mp4,gif -o " + path("out"));
+    EXPECT_EQ(run.exit_code, 2) << part;
+    EXPECT_NE(run.err.find(part.substr(0, part.find(' ')) + ": gif is not written in parts"),
+              std::string::npos)
+        << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << part;
+  }
 }
 
 TEST_F(JoinCommand, ChunkRefusesFramesBesideItAndAChunkPastTheFrames) {

@@ -37,11 +37,13 @@ class VideoJoinTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(directory_); }
   std::string path(const std::string& name) const { return (directory_ / name).string(); }
 
-  // Frames [first, end) of the moving pattern as an MP4 at `name`.
+  // Frames [first, end) of the moving pattern as a video at `name` (its format by its extension).
   std::string encode(const std::string& name, int first, int end, bool segment = true) const {
     std::string error;
+    const VideoFormat format = name.ends_with(".webm") ? VideoFormat::webm : VideoFormat::mp4;
     const auto encoder = VideoEncoder::open(path(name),
-                                            {.width = kWidth,
+                                            {.format = format,
+                                             .width = kWidth,
                                              .height = kHeight,
                                              .fps = kFps,
                                              .segment = segment,
@@ -101,6 +103,39 @@ TEST_F(VideoJoinTest, JoinedSegmentsDecodeAsTheWholeVideo) {
   EXPECT_LT(worst_from_source, 2.5);  // measured 2.25
   // The frames are in their places: a frame against its neighbour differs by far more.
   EXPECT_GT(rms_difference(joined.pictures[17].rgb, reference.pictures[20].rgb), 3 * 3.0);
+}
+
+// VP9 segments in WebM, one of a single frame, join into a WebM of the whole's frames and times.
+TEST_F(VideoJoinTest, WebmSegmentsJoinIntoTheWholeWebm) {
+  const std::vector<std::string> parts = {encode("a.webm", 0, 17), encode("b.webm", 17, 18),
+                                          encode("c.webm", 18, kFrames)};
+  const VideoSegmentInfo b = read_segment_info(parts[1]);
+  ASSERT_EQ(b.error, "");
+  EXPECT_EQ(b.first_frame, 17);
+  EXPECT_EQ(b.frames, 1);
+  EXPECT_EQ(b.fps, kFps);
+  ASSERT_EQ(join_videos(parts, path("joined.webm")), "");
+  const testing::DecodedVideo joined = read_video(path("joined.webm"));
+  ASSERT_EQ(joined.error, "");
+  ASSERT_EQ(joined.pictures.size(), static_cast<std::size_t>(kFrames));
+  EXPECT_NEAR(joined.duration, static_cast<double>(kFrames) / kFps, 1e-3);  // milliseconds
+  double worst_from_source = 0.0;
+  for (int k = 0; k < kFrames; ++k) {
+    const auto j = static_cast<std::size_t>(k);
+    EXPECT_NEAR(joined.pictures[j].time, static_cast<double>(k) / kFps, 1e-3) << "frame " << k;
+    worst_from_source =
+        std::max(worst_from_source,
+                 rms_difference(joined.pictures[j].rgb, moving_pattern(kWidth, kHeight, k)));
+  }
+  std::printf("[ measured ] joined WebM frames: RMS at most %.2f from the source\n",
+              worst_from_source);
+  EXPECT_LT(worst_from_source, 4.0);
+  // Each frame is in its place: frame 17 (segment b's one frame) is far from frame 20.
+  EXPECT_GT(rms_difference(joined.pictures[17].rgb, moving_pattern(kWidth, kHeight, 20)), 12.0);
+  // H.264 and VP9 segments do not join.
+  const std::string error = join_videos({encode("a.mp4", 0, 17), parts[1]}, path("mixed.mp4"));
+  EXPECT_NE(error.find("b.webm: is VP9, " + path("a.mp4") + " H.264"), std::string::npos) << error;
+  EXPECT_FALSE(fs::exists(path("mixed.mp4")));
 }
 
 TEST_F(VideoJoinTest, RefusesAGapAnOverlapAnotherEncodeAndATruncatedSegment) {

@@ -89,7 +89,13 @@ DecodedVideo read_video(const std::string& path, const char* decoder_name) {
   video.stream_pixel_format = static_cast<AVPixelFormat>(parameters.format);
   video.avg_frame_rate = stream.avg_frame_rate;
   video.r_frame_rate = stream.r_frame_rate;
-  video.duration = static_cast<double>(stream.duration) * av_q2d(stream.time_base);
+  // A WebM (Matroska) gives its length for the file, not the stream.
+  video.duration = stream.duration != AV_NOPTS_VALUE
+                       ? static_cast<double>(stream.duration) * av_q2d(stream.time_base)
+                       : static_cast<double>(format->duration) / AV_TIME_BASE;
+  if (const AVDictionaryEntry* alpha = av_dict_get(stream.metadata, "alpha_mode", nullptr, 0)) {
+    video.alpha_mode = alpha->value;
+  }
   video.primaries = parameters.color_primaries;
   video.transfer = parameters.color_trc;
   video.space = parameters.color_space;

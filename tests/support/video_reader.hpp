@@ -26,7 +26,8 @@ struct DecodedVideo {
   AVPixelFormat stream_pixel_format = AV_PIX_FMT_NONE;
   AVRational avg_frame_rate{0, 1};
   AVRational r_frame_rate{0, 1};
-  double duration = 0;                                 // s, from the stream
+  double duration = 0;     // s, from the stream (a WebM: the file)
+  std::string alpha_mode;  // a WebM track's alpha_mode ("1": it carries alpha); "" if not said
   AVColorPrimaries primaries = AVCOL_PRI_UNSPECIFIED;  // as the container (colr box) says
   AVColorTransferCharacteristic transfer = AVCOL_TRC_UNSPECIFIED;
   AVColorSpace space = AVCOL_SPC_UNSPECIFIED;
