@@ -2,32 +2,11 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cmath>
 
-extern "C" {
-#include <libswscale/swscale.h>
-}
+#include "io/video_decoder.hpp"
 
 namespace tumble::io {
 namespace {
-
-struct LumaWeights {
-  double kr, kb;
-};
-
-// Kr and Kb of the matrices VideoDecoder names (ITU-R BT.709, BT.601, SMPTE 240M, BT.2020).
-LumaWeights luma_weights(int sws_matrix) {
-  switch (sws_matrix) {
-    case SWS_CS_ITU601:
-      return {0.299, 0.114};
-    case SWS_CS_SMPTE240M:
-      return {0.212, 0.087};
-    case SWS_CS_BT2020:
-      return {0.2627, 0.0593};
-    default:
-      return {0.2126, 0.0722};
-  }
-}
 
 // Sums of squared Y', Cb and Cr differences over one macroblock, and its pixel count.
 struct BlockSums {
@@ -38,7 +17,9 @@ struct BlockSums {
 }  // namespace
 
 double h264_quantiser_step(int qp) {
-  return 0.625 * std::exp2(qp / 6.0);
+  static const double kFirstSix[] = {0.625, 0.6875, 0.8125, 0.875, 1.0, 1.125};
+  const int clamped = std::clamp(qp, 0, 51);
+  return kFirstSix[clamped % 6] * static_cast<double>(1 << (clamped / 6));
 }
 
 int h264_chroma_qp(int qp, int chroma_qp_offset) {
@@ -50,7 +31,7 @@ int h264_chroma_qp(int qp, int chroma_qp_offset) {
 
 QuantisationAllowance h264_allowance(int qp, int chroma_qp_offset, int sws_matrix,
                                      bool full_range) {
-  const LumaWeights weights = luma_weights(sws_matrix);
+  const YuvMatrix weights = yuv_matrix(sws_matrix);
   return {qp,
           h264_quantiser_step(qp),
           h264_quantiser_step(h264_chroma_qp(qp, chroma_qp_offset)),

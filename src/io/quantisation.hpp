@@ -32,7 +32,8 @@ struct QuantisationAllowance {
   bool active() const { return qp >= 0; }
 };
 
-// Qstep(QP) = 0.625 · 2^(QP / 6): 0.625 at QP 0, 1 at QP 4, doubling every 6 (H.264's table).
+// H.264's quantiser step for QP 0-51 (levels): 0.625, 0.6875, 0.8125, 0.875, 1, 1.125 for QP
+// 0-5, doubling with every 6 more (Richardson 2010, Table 7.2).
 double h264_quantiser_step(int qp);
 
 // The chroma QP for luma QP `qp` plus the stream's chroma_qp_index_offset (H.264 Table 8-15:

@@ -39,25 +39,25 @@ int sws_matrix(AVColorSpace space) {
 // decoding adds as little as it can to what the encoder lost.
 constexpr int kToRgbFlags = SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT;
 
-const char* matrix_name(int sws_matrix) {
+}  // namespace
+
+YuvMatrix yuv_matrix(int sws_matrix) {
   switch (sws_matrix) {
     case SWS_CS_ITU601:
-      return "BT.601";
+      return {"BT.601", 0.299, 0.114};
     case SWS_CS_SMPTE240M:
-      return "SMPTE 240M";
+      return {"SMPTE 240M", 0.212, 0.087};
     case SWS_CS_BT2020:
-      return "BT.2020";
+      return {"BT.2020", 0.2627, 0.0593};
     default:
-      return "BT.709";
+      return {"BT.709", 0.2126, 0.0722};
   }
 }
-
-}  // namespace
 
 std::string describe(const VideoPictureFormat& format) {
   if (format.yuv_format < 0) return "RGB";
   const char* name = av_get_pix_fmt_name(static_cast<AVPixelFormat>(format.yuv_format));
-  return std::string(name ? name : "YUV") + " " + matrix_name(format.matrix) +
+  return std::string(name ? name : "YUV") + " " + yuv_matrix(format.matrix).name +
          (format.full_range ? " full range" : " limited range");
 }
 

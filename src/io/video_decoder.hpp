@@ -24,6 +24,14 @@ struct VideoPictureFormat {
   bool full_range = false;
 };
 
+// A VideoPictureFormat's matrix: its name and luma weights Kr, Kb (ITU-R BT.601, BT.709,
+// SMPTE 240M, BT.2020; BT.709 for any other number).
+struct YuvMatrix {
+  const char* name;
+  double kr, kb;
+};
+YuvMatrix yuv_matrix(int sws_matrix);
+
 // "yuv420p BT.709 limited range": the pixel format, matrix and range, for reports.
 std::string describe(const VideoPictureFormat& format);
 
