@@ -154,6 +154,7 @@ int diff_sequences(const DiffCommandOptions& options, const SequenceOptions& set
   }
   std::fprintf(out, "%s (%s)\n", verdict_text(diff).c_str(),
                criteria_text(settings.criteria).c_str());
+  if (!diff.adaptation.empty()) std::fprintf(out, "note: %s\n", diff.adaptation.c_str());
   std::fflush(out);
   if (!write_outputs(options, {options.first_path, options.second_path, settings.criteria}, diff,
                      err)) {

@@ -12,6 +12,8 @@ std::string figures_json(const io::FrameFigures& figures) {
   return "{\"pixels\": " + std::to_string(figures.pixels) +
          ", \"differing_pixels\": " + std::to_string(figures.differing_pixels) +
          ", \"antialiased_pixels\": " + std::to_string(figures.antialiased_pixels) +
+         ", \"quantised_pixels\": " +
+         (figures.quantised_pixels ? std::to_string(*figures.quantised_pixels) : "null") +
          ", \"max_channel_difference\": " + std::to_string(figures.max_channel_difference) +
          ", \"rms\": " + json_number(figures.rms) + ", \"psnr_db\": " + json_number(figures.psnr) +
          ", \"ssim\": " + (figures.ssim ? json_number(*figures.ssim) : "null") + "}";
@@ -40,6 +42,7 @@ std::string write_diff_json(const std::string& path, const DiffSubject& subject,
       (criteria.max_percent < 0 ? "null" : json_number(criteria.max_percent)) +
       ",\n  \"first_frames\": " + std::to_string(diff.first_count) +
       ",\n  \"second_frames\": " + std::to_string(diff.second_count) +
+      ",\n  \"adaptation\": " + (diff.adaptation.empty() ? "null" : json_string(diff.adaptation)) +
       ",\n  \"match\": " + (diff.match() ? "true" : "false") + ",\n  \"frames\": [";
   for (std::size_t n = 0; n < diff.frames.size(); ++n) {
     text += (n ? ",\n" : "\n") + frame_json(diff.frames[n]);

@@ -42,8 +42,11 @@ std::string write_diff_junit(const std::string& path, const DiffSubject& subject
       " errors=\"0\">\n  <testsuite name=\"" + suite + "\" " + counts +
       " errors=\"0\" skipped=\"0\" time=\"0\">\n    <properties>\n      <property "
       "name=\"criteria\" value=\"" +
-      markup_text(criteria_text(subject.criteria)) + "\"/>\n    </properties>\n" + cases +
-      "  </testsuite>\n</testsuites>\n";
+      markup_text(criteria_text(subject.criteria)) + "\"/>\n" +
+      (diff.adaptation.empty() ? std::string()
+                               : "      <property name=\"adaptation\" value=\"" +
+                                     markup_text(diff.adaptation) + "\"/>\n") +
+      "    </properties>\n" + cases + "  </testsuite>\n</testsuites>\n";
   return write_text_atomically(path, text);
 }
 

@@ -32,10 +32,11 @@ std::string table_row(const FrameOutcome& frame) {
                                 : frame.problem.empty() ? "mismatch"
                                                         : frame.problem) +
                     "</td>";
-  if (!frame.figures) return row + "<td colspan=\"6\"></td></tr>\n";
+  if (!frame.figures) return row + "<td colspan=\"7\"></td></tr>\n";
   const io::FrameFigures& f = *frame.figures;
   row += "<td>" + std::to_string(f.differing_pixels) + "</td><td>" +
          std::to_string(f.antialiased_pixels) + "</td><td>" +
+         (f.quantised_pixels ? std::to_string(*f.quantised_pixels) : std::string()) + "</td><td>" +
          std::to_string(f.max_channel_difference) + "</td>" + number_cell("%.4g", f.rms) +
          number_cell("%.2f", f.psnr) +
          (f.ssim ? number_cell("%.5f", *f.ssim) : std::string("<td></td>"));
@@ -45,7 +46,8 @@ std::string table_row(const FrameOutcome& frame) {
 std::string summary_table(const SequenceDiff& diff) {
   std::string table =
       "<table>\n<tr><th>#</th><th class=\"name\">frame</th><th class=\"name\">result</th>"
-      "<th>differing pixels</th><th>anti-aliased</th><th>largest channel difference</th>"
+      "<th>differing pixels</th><th>anti-aliased</th><th>within quantisation</th>"
+      "<th>largest channel difference</th>"
       "<th>RMS</th><th>PSNR (dB)</th><th>SSIM</th></tr>\n";
   for (const FrameOutcome& frame : diff.frames) table += table_row(frame);
   return table + "</table>\n";
@@ -103,6 +105,8 @@ std::string write_diff_report(const std::string& folder, const DiffSubject& subj
       "<br>B (actual): " + markup_text(subject.second_path) + "<br>" +
       markup_text(criteria_text(criteria)) + "</p>\n<p><strong>" + markup_text(verdict_text(diff)) +
       "</strong></p>\n" +
+      (diff.adaptation.empty() ? std::string()
+                               : "<p>Note: " + markup_text(diff.adaptation) + "</p>\n") +
       (diff.worst.empty() ? std::string()
                           : "<h2>Failing frames (the worst " + std::to_string(diff.worst.size()) +
                                 ")</h2>\n" + sections) +

@@ -24,6 +24,8 @@ struct Job {
   std::int64_t index = 0;
   std::string name;
   DiffSide first, second;
+  // A PNG against an H.264 video: what the video's quantiser may have changed (perceptual only)
+  io::QuantisationAllowance allowance;
 };
 
 // The frames of one input in order: the PNGs of a folder, or the pictures of a video.
@@ -61,6 +63,10 @@ class FrameFeed {
   // How the last video frame was stored; not YUV for a folder.
   io::VideoPictureFormat picture_format() const {
     return decoder_ ? decoder_->picture_format() : io::VideoPictureFormat{};
+  }
+  // What the video's quantiser may have changed so far; inactive for a folder.
+  io::QuantisationAllowance quantisation_allowance() const {
+    return decoder_ ? decoder_->quantisation_allowance() : io::QuantisationAllowance{};
   }
 
  private:
@@ -140,11 +146,12 @@ std::string judge(Job& job, const SequenceOptions& options, FrameOutcome& outcom
     return {};
   }
   outcome.problem = timing_problem(job.first, job.second);
-  outcome.figures = io::compare_frame(a, b, options.criteria);
+  outcome.figures = io::compare_frame(a, b, options.criteria, job.allowance);
   outcome.match = outcome.problem.empty() && outcome.figures->match;
   if (!outcome.match && options.keep_images) {
     KeptFrame kept{job.index, std::move(job.first.image), std::move(job.second.image), {}};
-    kept.difference = io::difference_picture(kept.first, kept.second, options.criteria);
+    kept.difference =
+        io::difference_picture(kept.first, kept.second, options.criteria, job.allowance);
     worst.offer(std::move(kept), *outcome.figures);
   }
   return {};
@@ -186,6 +193,22 @@ SequenceDiff run_jobs(const SequenceOptions& options, Produce produce) {
   return diff;
 }
 
+// What was done to a folder's PNGs to compare them with a video, or "" when nothing was.
+std::string adaptation_text(const char* video, const char* folder,
+                            const io::VideoPictureFormat& format,
+                            const io::QuantisationAllowance& allowance, io::DiffMetric metric) {
+  if (format.yuv_format < 0) return {};
+  std::string text = std::string(folder) + "'s frames converted to " + io::describe(format) +
+                     " and back for comparison with video " + video;
+  if (metric != io::DiffMetric::perceptual || !allowance.active()) return text;
+  char quantiser[160];
+  std::snprintf(quantiser, sizeof quantiser,
+                "; differences within %s's H.264 quantisation not counted (coarsest QP %d: "
+                "macroblock RMS up to %.3g Y' and %.3g Cb/Cr levels)",
+                video, allowance.qp, allowance.luma_step / 2.0, allowance.chroma_step / 2.0);
+  return text + quantiser;
+}
+
 std::string video_frame_name(std::int64_t index) {
   return "frame " + std::to_string(index);
 }
@@ -200,7 +223,7 @@ std::string produce_by_name(const DiffInput& first, const DiffInput& second,
   const std::set<std::string> in_second(second.frames.begin(), second.frames.end());
   for (std::int64_t index = 0; const std::string& name : names) {
     if (index >= options.end_frame) break;
-    Job job{index++, name, {}, {}};
+    Job job{index++, name, {}, {}, {}};
     job.first.present = in_first.count(name) == 1;
     job.second.present = in_second.count(name) == 1;
     if (job.index < options.first_frame) continue;
@@ -224,12 +247,18 @@ std::string produce_by_position(const DiffInput& first, const DiffInput& second,
   if (std::string error = second_feed.open(); !error.empty()) return error;
   std::string error;
   for (std::int64_t index = 0; index < options.end_frame; ++index) {
-    Job job{index, {}, first_feed.next(error), {}};
+    Job job{index, {}, first_feed.next(error), {}, {}};
     if (error.empty()) job.second = second_feed.next(error);
     if (!error.empty()) return error;
     if (!job.first.present && !job.second.present) break;
-    if (!job.first.file.empty()) job.first.as_video = second_feed.picture_format();
-    if (!job.second.file.empty()) job.second.as_video = first_feed.picture_format();
+    if (!job.first.file.empty()) {
+      job.first.as_video = second_feed.picture_format();
+      job.allowance = second_feed.quantisation_allowance();
+    }
+    if (!job.second.file.empty()) {
+      job.second.as_video = first_feed.picture_format();
+      job.allowance = first_feed.quantisation_allowance();
+    }
     const bool folder_name = first.kind == DiffInputKind::folder && job.first.present;
     job.name = folder_name ? first.frames[static_cast<std::size_t>(index)]
                : second.kind == DiffInputKind::folder && job.second.present
@@ -239,6 +268,13 @@ std::string produce_by_position(const DiffInput& first, const DiffInput& second,
   }
   diff.first_count = first_feed.count();
   diff.second_count = second_feed.count();
+  const bool video_first = first.kind == DiffInputKind::video;
+  if (first.kind != second.kind) {  // a folder and a video
+    const FrameFeed& video = video_first ? first_feed : second_feed;
+    diff.adaptation =
+        adaptation_text(video_first ? "A" : "B", video_first ? "B" : "A", video.picture_format(),
+                        video.quantisation_allowance(), options.criteria.metric);
+  }
   return {};
 }
 
@@ -263,7 +299,7 @@ SequenceDiff compare_pair(io::Image first, io::Image second, const std::string& 
   SequenceOptions one = options;
   one.threads = 1;
   return run_jobs(one, [&](BoundedQueue<Job>& jobs, SequenceDiff& diff) {
-    Job job{0, name, {}, {}};
+    Job job{0, name, {}, {}, {}};
     job.first.present = job.second.present = true;
     job.first.image = std::move(first);
     job.second.image = std::move(second);

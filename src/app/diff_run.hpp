@@ -58,6 +58,10 @@ struct SequenceDiff {
   // Frames of each input: two folders', within the range; others', up to the range's end.
   std::int64_t first_count = 0;
   std::int64_t second_count = 0;
+  // How a folder's PNGs were brought to a video's terms before comparing ("B's frames converted
+  // to yuv420p BT.709 limited range and back for comparison with video A; ..."), else "": every
+  // output says it.
+  std::string adaptation;
   bool match() const;  // every frame matched and the counts agree
 };
 

@@ -20,6 +20,9 @@ std::string pixel_count_text(const io::FrameFigures& figures, const io::FrameCri
   if (criteria.ignore_antialiasing) {
     text += ", " + std::to_string(figures.antialiased_pixels) + " anti-aliased ignored";
   }
+  if (figures.quantised_pixels) {
+    text += ", " + std::to_string(*figures.quantised_pixels) + " within the video's quantisation";
+  }
   return text;
 }
 

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <vector>
 
 #include "io/perceptual_diff.hpp"
+#include "io/quantisation.hpp"
 #include "io/ssim.hpp"
 
 namespace tumble::io {
@@ -23,28 +25,49 @@ std::uint8_t dim_grey(const std::uint8_t* pixel) {
   return static_cast<std::uint8_t>(luma * 3 / 10);
 }
 
-enum class PixelVerdict { same, differs, antialiased };
+enum class PixelVerdict { same, differs, antialiased, quantised };
+
+// What the pixel test of a counting metric needs besides the two images.
+struct PixelTest {
+  const FrameCriteria& criteria;
+  double max_yiq_distance_squared;
+  // perceptual against a video with an allowance: macroblocks_within's answer, else empty
+  std::vector<std::uint8_t> quantised_blocks;
+
+  PixelTest(const Image& a, const Image& b, const FrameCriteria& frame_criteria,
+            const QuantisationAllowance& allowance)
+      : criteria(frame_criteria),
+        max_yiq_distance_squared(kMaxYiqDistanceSquared * criteria.threshold * criteria.threshold) {
+    // max stays a test of channel levels as they are: only perceptual forgives the codec.
+    if (criteria.metric == DiffMetric::perceptual && allowance.active()) {
+      quantised_blocks = macroblocks_within(a, b, allowance);
+    }
+  }
+};
 
 // Whether a pixel passes the pixel test of a counting metric, and if not whether it is forgiven
-// as an anti-aliased edge in either image (pixelmatch's rule). Pixels at `offset` (bytes).
+// as an anti-aliased edge in either image (pixelmatch's rule) or as within the video's
+// quantisation. Pixels at `offset` (bytes).
 PixelVerdict judge_pixel(const Image& a, const Image& b, std::size_t offset,
-                         const FrameCriteria& criteria, double max_yiq_distance_squared) {
+                         const PixelTest& test) {
   const std::uint8_t* pa = &a.rgb[offset];
   const std::uint8_t* pb = &b.rgb[offset];
   if (pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2]) return PixelVerdict::same;
+  const FrameCriteria& criteria = test.criteria;
   const bool fails = criteria.metric == DiffMetric::perceptual
-                         ? yiq_distance_squared(pa, pb) > max_yiq_distance_squared
+                         ? yiq_distance_squared(pa, pb) > test.max_yiq_distance_squared
                          : pixel_difference(pa, pb) > criteria.threshold;
   if (!fails) return PixelVerdict::same;
-  if (!criteria.ignore_antialiasing) return PixelVerdict::differs;
   const int x = static_cast<int>(offset / 3 % static_cast<std::size_t>(a.width));
   const int y = static_cast<int>(offset / 3 / static_cast<std::size_t>(a.width));
-  return is_antialiased(a, x, y, b) || is_antialiased(b, x, y, a) ? PixelVerdict::antialiased
-                                                                  : PixelVerdict::differs;
-}
-
-double max_yiq_distance_squared(const FrameCriteria& criteria) {
-  return kMaxYiqDistanceSquared * criteria.threshold * criteria.threshold;
+  if (criteria.ignore_antialiasing && (is_antialiased(a, x, y, b) || is_antialiased(b, x, y, a))) {
+    return PixelVerdict::antialiased;
+  }
+  if (test.quantised_blocks.empty()) return PixelVerdict::differs;
+  const int columns = (a.width + kMacroblockSize - 1) / kMacroblockSize;
+  const std::size_t block =
+      static_cast<std::size_t>(y / kMacroblockSize) * columns + x / kMacroblockSize;
+  return test.quantised_blocks[block] ? PixelVerdict::quantised : PixelVerdict::differs;
 }
 
 bool few_enough(std::int64_t differing, std::int64_t pixels, const FrameCriteria& criteria) {
@@ -114,13 +137,15 @@ double default_threshold(DiffMetric metric) {
   return 0.0;
 }
 
-FrameFigures compare_frame(const Image& a, const Image& b, const FrameCriteria& criteria) {
+FrameFigures compare_frame(const Image& a, const Image& b, const FrameCriteria& criteria,
+                           const QuantisationAllowance& allowance) {
   assert(a.width == b.width && a.height == b.height);
   assert(a.rgb.size() == b.rgb.size());
   FrameFigures figures;
   figures.pixels = std::int64_t{a.width} * a.height;
   const bool per_pixel = counts_pixels(criteria.metric);
-  const double max_distance = max_yiq_distance_squared(criteria);
+  const PixelTest test(a, b, criteria, allowance);
+  if (!test.quantised_blocks.empty()) figures.quantised_pixels = 0;
   std::int64_t sum_of_squares = 0;  // at most 3 · 255² per pixel: no overflow below ~4e13 pixels
   for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
     const int d0 = a.rgb[i] - b.rgb[i], d1 = a.rgb[i + 1] - b.rgb[i + 1];
@@ -130,9 +155,10 @@ FrameFigures compare_frame(const Image& a, const Image& b, const FrameCriteria& 
     figures.max_channel_difference =
         std::max({figures.max_channel_difference, std::abs(d0), std::abs(d1), std::abs(d2)});
     if (!per_pixel) continue;
-    const PixelVerdict verdict = judge_pixel(a, b, i, criteria, max_distance);
+    const PixelVerdict verdict = judge_pixel(a, b, i, test);
     figures.differing_pixels += verdict == PixelVerdict::differs;
     figures.antialiased_pixels += verdict == PixelVerdict::antialiased;
+    if (verdict == PixelVerdict::quantised) ++*figures.quantised_pixels;
   }
   const double mean_square =
       a.rgb.empty() ? 0.0 : static_cast<double>(sum_of_squares) / static_cast<double>(a.rgb.size());
@@ -159,17 +185,23 @@ double badness(const FrameFigures& figures, DiffMetric metric) {
   return 0.0;
 }
 
-Image difference_picture(const Image& a, const Image& b, const FrameCriteria& criteria) {
+Image difference_picture(const Image& a, const Image& b, const FrameCriteria& criteria,
+                         const QuantisationAllowance& allowance) {
   assert(a.width == b.width && a.height == b.height);
   Image out = diff_image(a, b, 0);  // red wherever a channel differs, dim grey elsewhere
   if (!counts_pixels(criteria.metric)) return out;
-  const double max_distance = max_yiq_distance_squared(criteria);
+  const PixelTest test(a, b, criteria, allowance);
   for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
-    switch (judge_pixel(a, b, i, criteria, max_distance)) {
+    switch (judge_pixel(a, b, i, test)) {
       case PixelVerdict::differs:
         break;
       case PixelVerdict::antialiased:
         out.rgb[i] = out.rgb[i + 1] = 255;  // yellow, as pixelmatch marks them
+        break;
+      case PixelVerdict::quantised:
+        out.rgb[i] = 0;  // blue: within the video's quantisation
+        out.rgb[i + 1] = 128;
+        out.rgb[i + 2] = 255;
         break;
       case PixelVerdict::same:  // equal, or within the threshold: grey like the rest
         out.rgb[i] = out.rgb[i + 1] = out.rgb[i + 2] = dim_grey(&a.rgb[i]);

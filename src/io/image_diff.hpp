@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "io/image.hpp"
+#include "io/quantisation.hpp"
 
 namespace tumble::io {
 
@@ -63,23 +64,31 @@ struct FrameFigures {
   std::int64_t pixels = 0;
   std::int64_t differing_pixels = 0;    // failing the pixel test and counted
   std::int64_t antialiased_pixels = 0;  // failing it but ignored as anti-aliased edges
-  int max_channel_difference = 0;       // levels (0-255)
-  double rms = 0.0;                     // RMS channel difference over R, G and B (levels)
-  double psnr = 0.0;                    // 10 log10(255² / MSE) (dB); +inf for identical images
-  std::optional<double> ssim;           // mean SSIM (0-1), for the ssim metric
+  // perceptual against a video with an allowance: failing it but ignored as within the video's
+  // quantisation (io/quantisation.hpp); unset otherwise
+  std::optional<std::int64_t> quantised_pixels;
+  int max_channel_difference = 0;  // levels (0-255)
+  double rms = 0.0;                // RMS channel difference over R, G and B (levels)
+  double psnr = 0.0;               // 10 log10(255² / MSE) (dB); +inf for identical images
+  std::optional<double> ssim;      // mean SSIM (0-1), for the ssim metric
   bool match = true;
 };
 
-// Precondition: a and b have the same width and height.
-FrameFigures compare_frame(const Image& a, const Image& b, const FrameCriteria& criteria);
+// Precondition: a and b have the same width and height. For perceptual, an active `allowance`
+// (one of a and b is an H.264 video's frame, the other the picture it was encoded from) also
+// forgives failing pixels in macroblocks whose difference is within the video's quantisation.
+FrameFigures compare_frame(const Image& a, const Image& b, const FrameCriteria& criteria,
+                           const QuantisationAllowance& allowance = {});
 
 // How far past the criteria a frame is, to rank frames worst first: differing pixels for the
 // pixel metrics, the RMS, 1 - SSIM or -PSNR for the others.
 double badness(const FrameFigures& figures, DiffMetric metric);
 
 // A picture of what compare_frame counted: a in dim grey, counted pixels red (brighter for
-// larger channel differences, as diff_image), ignored anti-aliased pixels yellow. For the
-// frame-wide metrics every pixel with a channel difference is red.
-Image difference_picture(const Image& a, const Image& b, const FrameCriteria& criteria);
+// larger channel differences, as diff_image), ignored anti-aliased pixels yellow, pixels ignored
+// as within a video's quantisation blue. For the frame-wide metrics every pixel with a channel
+// difference is red.
+Image difference_picture(const Image& a, const Image& b, const FrameCriteria& criteria,
+                         const QuantisationAllowance& allowance = {});
 
 }  // namespace tumble::io

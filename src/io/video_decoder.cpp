@@ -5,7 +5,10 @@
 extern "C" {
 #include <libavutil/log.h>
 #include <libavutil/pixdesc.h>
+#include <libavutil/video_enc_params.h>
 }
+
+#include <algorithm>
 
 namespace tumble::io {
 namespace {
@@ -37,6 +40,26 @@ int sws_matrix(AVColorSpace space) {
 constexpr int kToRgbFlags = SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT;
 
 }  // namespace
+
+YuvMatrix yuv_matrix(int sws_matrix) {
+  switch (sws_matrix) {
+    case SWS_CS_ITU601:
+      return {"BT.601", 0.299, 0.114};
+    case SWS_CS_SMPTE240M:
+      return {"SMPTE 240M", 0.212, 0.087};
+    case SWS_CS_BT2020:
+      return {"BT.2020", 0.2627, 0.0593};
+    default:
+      return {"BT.709", 0.2126, 0.0722};
+  }
+}
+
+std::string describe(const VideoPictureFormat& format) {
+  if (format.yuv_format < 0) return "RGB";
+  const char* name = av_get_pix_fmt_name(static_cast<AVPixelFormat>(format.yuv_format));
+  return std::string(name ? name : "YUV") + " " + yuv_matrix(format.matrix).name +
+         (format.full_range ? " full range" : " limited range");
+}
 
 Image through_picture_format(const Image& image, const VideoPictureFormat& format) {
   if (format.yuv_format < 0 || image.rgb.empty()) return image;
@@ -78,6 +101,8 @@ struct VideoDecoder::State {
   AVRational time_base{1, 1};
   bool input_ended = false;           // every packet sent, and the flush packet too
   VideoPictureFormat picture_format;  // of the last frame
+  int coarsest_qp = -1;               // H.264: the largest macroblock QP so far; else -1
+  int chroma_qp_offset = 0;           // H.264: the picture parameter set's chroma_qp_index_offset
 
   ~State() { sws_freeContext(scaler); }
 
@@ -85,6 +110,7 @@ struct VideoDecoder::State {
     return path + ": cannot decode video: " + call + ": " + av::error_text(code);
   }
   Image to_rgb(std::string& error);
+  void note_quantisers();
   // Sends packets until the decoder has a frame: 0, AVERROR_EOF at the end, or an error.
   int receive(std::string& error);
 };
@@ -112,6 +138,21 @@ Image VideoDecoder::State::to_rgb(std::string& error) {
   sws_scale(scaler, frame->data, frame->linesize, 0, frame->height, destination,
             destination_stride);
   return image;
+}
+
+// Reads the macroblock QPs libavcodec exports with an H.264 frame (AV_CODEC_EXPORT_DATA_
+// VIDEO_ENC_PARAMS: the picture's base QP plus each macroblock's delta).
+void VideoDecoder::State::note_quantisers() {
+  const AVFrameSideData* side = av_frame_get_side_data(frame.get(), AV_FRAME_DATA_VIDEO_ENC_PARAMS);
+  if (!side) return;
+  const auto* params = reinterpret_cast<const AVVideoEncParams*>(side->data);
+  if (params->type != AV_VIDEO_ENC_PARAMS_H264) return;
+  chroma_qp_offset = std::max(params->delta_qp[1][0], params->delta_qp[2][0]);  // Cb, Cr
+  for (unsigned n = 0; n < params->nb_blocks; ++n) {
+    const AVVideoBlockParams* block =
+        av_video_enc_params_block(const_cast<AVVideoEncParams*>(params), n);
+    coarsest_qp = std::max(coarsest_qp, params->qp + block->delta_qp);
+  }
 }
 
 int VideoDecoder::State::receive(std::string& error) {
@@ -177,6 +218,7 @@ std::unique_ptr<VideoDecoder> VideoDecoder::open(const std::string& path, std::s
   }
   // Decoded pictures do not depend on the thread count; two keep up with the comparison.
   state->codec->thread_count = 2;
+  state->codec->export_side_data |= AV_CODEC_EXPORT_DATA_VIDEO_ENC_PARAMS;
   if (const int code = avcodec_open2(state->codec.get(), decoder, nullptr); code < 0) {
     error = state->fail("avcodec_open2", code);
     return nullptr;
@@ -195,6 +237,7 @@ std::optional<DecodedFrame> VideoDecoder::next(std::string& error) {
   decoded.time =
       timestamp == AV_NOPTS_VALUE ? 0.0 : static_cast<double>(timestamp) * av_q2d(state.time_base);
   decoded.image = state.to_rgb(error);
+  state.note_quantisers();
   av_frame_unref(state.frame.get());
   if (!error.empty()) return std::nullopt;
   return decoded;
@@ -202,6 +245,13 @@ std::optional<DecodedFrame> VideoDecoder::next(std::string& error) {
 
 VideoPictureFormat VideoDecoder::picture_format() const {
   return state_->picture_format;
+}
+
+QuantisationAllowance VideoDecoder::quantisation_allowance() const {
+  const State& state = *state_;
+  if (state.coarsest_qp < 0 || state.picture_format.yuv_format < 0) return {};
+  return h264_allowance(state.coarsest_qp, state.chroma_qp_offset, state.picture_format.matrix,
+                        state.picture_format.full_range);
 }
 
 const std::string& VideoDecoder::path() const {

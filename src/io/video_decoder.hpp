@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/image.hpp"
+#include "io/quantisation.hpp"
 
 namespace tumble::io {
 
@@ -22,6 +23,17 @@ struct VideoPictureFormat {
   int matrix = 0;
   bool full_range = false;
 };
+
+// A VideoPictureFormat's matrix: its name and luma weights Kr, Kb (ITU-R BT.601, BT.709,
+// SMPTE 240M, BT.2020; BT.709 for any other number).
+struct YuvMatrix {
+  const char* name;
+  double kr, kb;
+};
+YuvMatrix yuv_matrix(int sws_matrix);
+
+// "yuv420p BT.709 limited range": the pixel format, matrix and range, for reports.
+std::string describe(const VideoPictureFormat& format);
 
 // `image` converted into `format` and back to RGB, the way VideoEncoder and VideoDecoder convert:
 // what a video in that format can hold of it before any compression (4:2:0 keeps one chroma
@@ -47,6 +59,12 @@ class VideoDecoder {
   const std::string& path() const;
   // The format of the last frame next() returned.
   VideoPictureFormat picture_format() const;
+  // What H.264's quantiser may have changed in the frames returned so far: the allowance for the
+  // coarsest macroblock QP among them. An error can reach a frame by prediction from any frame
+  // decoded before it, so the coarsest step so far bounds it, not the frame's own (a skipped
+  // macroblock keeps its reference's error whatever QP it is labelled with). Inactive for other
+  // codecs.
+  QuantisationAllowance quantisation_allowance() const;
 
  private:
   struct State;

@@ -161,16 +161,36 @@ TEST_F(DiffSequences, AVideoMatchesTheFolderItWasEncodedFromPerceptuallyButNotEx
   render("r", 0.0);
   const std::string video = path("r/cube/cube.mp4");
   const std::string folder = path("r/cube");  // a render's folder: its frames/ are compared
-  // What H.264 at crf 18 leaves, once the PNGs are brought to 4:2:0 as the video holds them, is
-  // a few dozen pixels on the cube's coloured edges (under 0.016% of a frame): allowed here.
+  // The PNGs brought to 4:2:0 as the video holds them, and what H.264's quantiser leaves not
+  // counted: nothing is left at the default threshold, and no allowance is needed.
   const Outcome perceptual =
-      tumble("diff --metric perceptual --max-percent 0.05 " + video + " " + folder);
+      tumble("diff --metric perceptual --json " + path("v.json") + " " + video + " " + folder);
   EXPECT_EQ(perceptual.exit_code, 0) << perceptual.out << perceptual.err;
   EXPECT_NE(perceptual.out.find("match: 0 of 10 frames differ"), std::string::npos)
       << perceptual.out;
+  // The output says what was done to the PNGs, and so does the JSON.
+  EXPECT_NE(perceptual.out.find("\nnote: B's frames converted to yuv420p BT.709 limited range and "
+                                "back for comparison with video A; differences within A's H.264 "
+                                "quantisation not counted (coarsest QP "),
+            std::string::npos)
+      << perceptual.out;
+  const std::string json = read_file(dir_ / "v.json");
+  EXPECT_NE(json.find("\"adaptation\": \"B's frames converted to yuv420p BT.709"),
+            std::string::npos)
+      << json;
+  // Frames with pixels over the threshold say how many the quantisation explained.
+  EXPECT_NE(json.find("\"quantised_pixels\": "), std::string::npos) << json;
+  EXPECT_EQ(json.find("\"quantised_pixels\": null"), std::string::npos) << json;
+  // The same the other way round.
+  EXPECT_EQ(tumble("diff --metric perceptual " + folder + " " + video).exit_code, 0);
+  // max compares levels as they are: the codec's changes all count.
   const Outcome exact = tumble("diff --metric max --threshold 0 " + video + " " + folder);
   EXPECT_EQ(exact.exit_code, 1) << exact.out << exact.err;
   EXPECT_NE(exact.out.find("mismatch: 10 of 10 frames differ"), std::string::npos) << exact.out;
+  EXPECT_NE(exact.out.find("\nnote: B's frames converted to yuv420p BT.709 limited range and back "
+                           "for comparison with video A\n"),
+            std::string::npos)
+      << exact.out;
 }
 
 TEST_F(DiffSequences, ACubeTurnedOneDegreeMoreFailsAtTheDefaultPerceptualThreshold) {
@@ -184,10 +204,11 @@ TEST_F(DiffSequences, ACubeTurnedOneDegreeMoreFailsAtTheDefaultPerceptualThresho
   const Outcome run = tumble("diff --metric perceptual " + turned);
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
   EXPECT_NE(run.out.find("mismatch: 10 of 10 frames differ"), std::string::npos) << run.out;
-  // Also with the allowance that lets a video pass against its frames (about 0.3% differ).
-  const Outcome allowed = tumble("diff --metric perceptual --max-percent 0.05 " + turned);
-  EXPECT_EQ(allowed.exit_code, 1) << allowed.out;
-  EXPECT_NE(allowed.out.find("mismatch: 10 of 10 frames differ"), std::string::npos) << allowed.out;
+  // Against the video of the turned cube, what H.264 may have changed does not hide the turn.
+  const Outcome video = tumble("diff --metric perceptual " + path("straight/cube") + " " +
+                               path("turned/cube/cube.mp4"));
+  EXPECT_EQ(video.exit_code, 1) << video.out << video.err;
+  EXPECT_NE(video.out.find("mismatch: 10 of 10 frames differ"), std::string::npos) << video.out;
 }
 
 TEST_F(DiffSequences, JsonHoldsEveryFigureOfEveryFrame) {
@@ -199,9 +220,11 @@ TEST_F(DiffSequences, JsonHoldsEveryFigureOfEveryFrame) {
   const std::string json = read_file(dir_ / "d.json");
   EXPECT_NE(json.find("\"metric\": \"perceptual\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"ignore_antialiasing\": true"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"adaptation\": null"), std::string::npos) << json;  // two folders
   EXPECT_NE(json.find("{\"index\": 0, \"name\": \"frame_00000.png\", \"match\": true, "
                       "\"problem\": null, \"figures\": {\"pixels\": 3072, \"differing_pixels\": 0, "
-                      "\"antialiased_pixels\": 0, \"max_channel_difference\": 0, \"rms\": 0, "
+                      "\"antialiased_pixels\": 0, \"quantised_pixels\": null, "
+                      "\"max_channel_difference\": 0, \"rms\": 0, "
                       "\"psnr_db\": null, \"ssim\": null}}"),
             std::string::npos)
       << json;

@@ -83,6 +83,27 @@ TEST_F(RenderGolden, ARenderWithoutFramesComparesItsVideo) {
   EXPECT_TRUE(run.out.starts_with("match: 0 of 15 frames differ")) << run.out;
 }
 
+// The golden's video against the new render's PNG frames, at 160x120: the PNGs are converted as
+// the video holds them and H.264's quantisation is not counted, so the same scene passes at the
+// default perceptual threshold, while max 0 and the 1°-turned cube fail.
+TEST_F(RenderGolden, AVideoGoldenMatchesTheSameSceneAndNotACubeTurnedOneDegreeMore) {
+  const std::string video = " --golden " + golden() + "/spin.mp4";
+  const Outcome same =
+      tumble("render -q " + scene_ + " -o " + path("same") + video + " --metric perceptual");
+  EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+  EXPECT_TRUE(same.out.starts_with("match: 0 of 15 frames differ")) << same.out;
+  EXPECT_NE(same.out.find("note: B's frames converted to yuv420p BT.709 limited range"),
+            std::string::npos)
+      << same.out;
+  const Outcome exact = tumble("render -q " + scene_ + " -o " + path("exact") + video +
+                               " --metric max --threshold 0");
+  EXPECT_EQ(exact.exit_code, 1) << exact.out << exact.err;
+  const Outcome turned =
+      tumble("render -q " + turned_ + " -o " + path("turned") + video + " --metric perceptual");
+  EXPECT_EQ(turned.exit_code, 1) << turned.out << turned.err;
+  EXPECT_NE(turned.out.find("mismatch: "), std::string::npos) << turned.out;
+}
+
 TEST_F(RenderGolden, AGoldenInTheFolderTheRenderReplacesIsRefusedBeforeRendering) {
   const std::string before = read_file(golden() + "/frames/frame_00003.png");
   const Outcome run =
