@@ -6,6 +6,7 @@
 #include <string>
 
 #include "support/command_test.hpp"
+#include "support/scene_text.hpp"
 
 namespace {
 
@@ -13,23 +14,9 @@ namespace fs = std::filesystem;
 using tumble::testing::Outcome;
 using tumble::testing::read_file;
 
-// Half a second at 30 frames/s of a cube spinning about a tilted axis: 15 small frames.
-constexpr const char* kBody = R"(name = "spin"
-duration = 0.5
-[physics]
-dt = 0.01
-[[bodies]]
-shape = "cube"
-size = 1.0
-mass = 1.0
-angular_velocity = [0.0, 2.0, 1.0]
-)";
-constexpr const char* kPicture = R"([render]
-width = 160
-height = 120
-fps = 30
-)";
-// The same cube turned 1° more about y at the start: q = (cos 0.5°, 0, sin 0.5°, 0).
+// The golden scene: half a second at 30 frames/s of a cube spinning about a tilted axis, 15 frames
+// of 160x120 (tumble::testing::spin_scene); and the same cube turned 1° more about y at the start:
+// q = (cos 0.5°, 0, sin 0.5°, 0).
 constexpr const char* kTurned =
     "orientation = [0.99996192306417131, 0.0, 0.0087265354983739347, 0.0]\n";
 
@@ -37,8 +24,8 @@ class RenderGolden : public tumble::testing::CommandTest {
  protected:
   void SetUp() override {
     CommandTest::SetUp();
-    scene_ = write("spin.toml", std::string(kBody) + kPicture).string();
-    turned_ = write("turned.toml", std::string(kBody) + kTurned + kPicture).string();
+    scene_ = write("spin.toml", tumble::testing::spin_scene(160, 120)).string();
+    turned_ = write("turned.toml", tumble::testing::spin_scene(160, 120, kTurned)).string();
     const Outcome golden = tumble("render -q " + scene_ + " -o " + path("golden"));
     ASSERT_EQ(golden.exit_code, 0) << golden.err;
   }
