@@ -108,21 +108,12 @@ PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
 void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
                     std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
                     std::span<const PositionPoint> positions, const ContactSettings& settings,
-                    std::span<BodyState> out) {
+                    std::span<ProjectedPose> poses, std::span<BodyState> out) {
   solve_contacts(solver, points, patches,
                  {.iterations = solver_passes(points.size()),
                   .tolerance = kRestingTolerance,
                   .restitution_threshold = settings.restitution_threshold,
                   .warm_start = true});
-  // Small islands (one body on the floor, a short stack) are the common case: no allocation.
-  constexpr std::size_t kInline = 8;
-  ProjectedPose inline_poses[kInline];
-  std::vector<ProjectedPose> heap;
-  ProjectedPose* poses = inline_poses;
-  if (bodies.size() > kInline) {
-    heap.resize(bodies.size());
-    poses = heap.data();
-  }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const IslandBody& body = bodies[i];
     const SolverBody& solved = solver[i];
@@ -139,7 +130,7 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
                 .inverse_inertia = &solved.inverse_inertia};
   }
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
-    if (project_pass({poses, bodies.size()}, positions) == 0.0) break;
+    if (project_pass(poses.first(bodies.size()), positions) == 0.0) break;
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out[i] = BodyState(poses[i].primary, bodies[i].model->constants);

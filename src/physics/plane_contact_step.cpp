@@ -300,9 +300,10 @@ BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const Pl
   contacts.positions.clear();
   add_plane_points(model, 0, body.rotation, solver[0], planes, contacts, contacts.points,
                    contacts.patches, contacts.positions);
+  ProjectedPose pose;
   BodyState out;
   resolve_island({&body, 1}, solver, contacts.points, contacts.patches, contacts.positions,
-                 settings, {&out, 1});
+                 settings, {&pose, 1}, {&out, 1});
   return out;
 }
 
