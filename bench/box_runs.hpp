@@ -20,8 +20,9 @@ inline constexpr double kBenchStep = 1.0 / 60.0;  // s
 // stops after 0.61 s, 36 steps, so every step timed is one of sliding.
 inline constexpr int kSlideSteps = 30;
 
-// A box of mass 1 kg under gravity: shape 0 a unit cube, 1 a 0.3 × 1 × 2 m box (on its long face
-// when resting), its centre `height` (m) above the floor y = 0.
+// A box of mass 1 kg under gravity: shape 0 a unit cube, 1 a 1 × 0.3 × 2 m box (lying on its
+// largest face when it rests: sliding along x it does not tip), its centre `height` (m) above the
+// floor y = 0.
 physics::BodyModel box_under_gravity(std::int64_t shape);
 physics::BodyState box_at(const physics::BodyModel& model, double height /* m */);
 

@@ -80,7 +80,7 @@ void BlowUpCheck(benchmark::State& state) {
 // 3 m/s (restarted every 30 steps, before it stops), against the same box's free fall
 // (StepBoxWithGravity). The ratios are what issue 11 bounds (a step on a plane at most twice the
 // free RK4 step); bench/step_instructions.cpp counts the same runs' instructions with callgrind.
-// range(1): 0 for a unit cube, 1 for a 0.3 × 1 × 2 m box on its long face.
+// range(1): 0 for a unit cube, 1 for a 1 × 0.3 × 2 m box on its largest face.
 void time_run(benchmark::State& state, BoxRun& run) {
   for (auto _ : state) {
     run.step();
@@ -119,7 +119,7 @@ void StepBoxRestingOnPenaltyPlane(benchmark::State& state) {
   const ContactSettings contact{.method = ContactMethod::penalty};
   model = with_penalty_contact(model, {Plane{}}, contact.stiffness, contact.damping);
   const double sink = model.constants.mass * 9.81 / (4.0 * contact.stiffness);  // m
-  const BodyState start = box_at(model, 0.5 - sink);
+  const BodyState start = box_at(model, model.half_size.y() - sink);
   for (auto _ : state) benchmark::DoNotOptimize(step(integrator, model, start, 0.0, kDt));
   state.SetLabel(std::string(integrator_name(integrator)));
 }

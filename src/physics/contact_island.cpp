@@ -15,10 +15,10 @@ constexpr double kRestingTolerance = 1e-6;
 // A resting solve ends after a pass (warm-started, its impulses change by less than the
 // tolerance), so what it leaves of a velocity the physics makes exactly zero (a box at rest on a
 // face) shrinks by a constant factor each step and would go on forever, into subnormal numbers,
-// which the FPU handles up to 100 times slower (a resting cube's step took 1.8 times as long).
-// A momentum component below this size (kg m/s, or kg m²/s) is that residue and is set to zero,
-// 80 orders of magnitude below anything a scene can show and below the round-off of any momentum
-// above 1e-84; its square is still a normal number, so no norm of it is subnormal either.
+// which the FPU handles up to 100 times slower (an awake resting cube's step took about 1.7 times
+// as long). A momentum component below this size (kg m/s, or kg m²/s) is that residue and is set to
+// zero, 80 orders of magnitude below anything a scene can show and below the round-off of any
+// momentum above 1e-84; its square is still a normal number, so no norm of it is subnormal either.
 constexpr double kNegligibleMomentum = 1e-100;
 
 Vec3 without_residue(Vec3 momentum) {
@@ -108,12 +108,13 @@ PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
 void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
                     std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
                     std::span<const PositionPoint> positions, const ContactSettings& settings,
-                    std::span<ProjectedPose> poses, std::span<BodyState> out) {
+                    std::vector<ProjectedPose>& poses, std::span<BodyState> out) {
   solve_contacts(solver, points, patches,
                  {.iterations = solver_passes(points.size()),
                   .tolerance = kRestingTolerance,
                   .restitution_threshold = settings.restitution_threshold,
                   .warm_start = true});
+  poses.resize(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const IslandBody& body = bodies[i];
     const SolverBody& solved = solver[i];
@@ -130,7 +131,7 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
                 .inverse_inertia = &solved.inverse_inertia};
   }
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
-    if (project_pass(poses.first(bodies.size()), positions) == 0.0) break;
+    if (project_pass(poses, positions) == 0.0) break;
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out[i] = BodyState(poses[i].primary, bodies[i].model->constants);

@@ -490,7 +490,6 @@ void solve_converged(Integrator integrator, std::span<const BodyModel> models,
                                           static_cast<std::uint32_t>(count)));
   }
   contacts.island_out.resize(members.size());
-  contacts.poses.resize(members.size());
   resolve_island(contacts.island_bodies, contacts.solver, contacts.points, contacts.patches,
                  contacts.positions, settings, contacts.poses, contacts.island_out);
   for (std::size_t k = 0; k < members.size(); ++k) {
