@@ -8,6 +8,7 @@
 #include <iterator>
 #include <string>
 
+#include "box_runs.hpp"
 #include "physics/integrators.hpp"
 #include "physics/plane_contact_step.hpp"
 #include "physics/world_step.hpp"
@@ -16,6 +17,10 @@
 namespace {
 
 using namespace tumble::physics;
+using tumble::bench::box_at;
+using tumble::bench::box_under_gravity;
+using tumble::bench::BoxRun;
+using tumble::bench::Stepper;
 
 constexpr double kDt = 1.0 / 60.0;  // s
 
@@ -69,59 +74,39 @@ void BlowUpCheck(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(tumble::sim::blow_up_problem(body));
 }
 
-// Contact with a plane (range(0) = integrator), one step from the same state each time: a box
-// resting on a floor under gravity through the world step (impulse contact), the same box sliding
-// at 3 m/s, or resting with penalty contact, against the same box's free step
-// (StepBoxWithGravity); and the box 10 m above the floor, where the world step only finds that
-// nothing touches.
-// range(1): 0 for a unit cube, 1 for a 0.3 × 1 × 2 m box on its long face.
-BodyModel box_under_gravity(std::int64_t shape) {
-  const Vec3 size = shape == 0 ? Vec3::Ones() : Vec3(0.3, 1.0, 2.0);
-  BodyModel model{.constants = box_constants(1.0, size), .forces = {Gravity{}}};
-  model.half_size = 0.5 * size;
-  return model;
-}
-
-BodyState box_at(const BodyModel& model, double height /* m */) {
-  return make_state(model.constants, Vec3(0, height, 0), Vec3::Zero(), Quat::Identity(),
-                    Vec3::Zero());
+// Contact with a plane (range(0) = integrator), each step from the last one's end
+// (bench/box_runs.hpp): a box resting on a floor under gravity (impulse contact), through
+// step_with_planes and through the world step as a scene of one box steps it, or sliding at
+// 3 m/s (restarted every 30 steps, before it stops), against the same box's free fall
+// (StepBoxWithGravity). The ratios are what issue 11 bounds (a step on a plane at most twice the
+// free RK4 step); bench/step_instructions.cpp counts the same runs' instructions with callgrind.
+// range(1): 0 for a unit cube, 1 for a 1 × 0.3 × 2 m box on its largest face.
+void time_run(benchmark::State& state, BoxRun& run) {
+  for (auto _ : state) {
+    run.step();
+    benchmark::DoNotOptimize(run.state());
+  }
 }
 
 void StepBoxWithGravity(benchmark::State& state) {
-  const BodyModel model = box_under_gravity(state.range(1));
   const Integrator integrator = integrator_at(state.range(0));
-  const BodyState start = box_at(model, 0.5);
-  for (auto _ : state) benchmark::DoNotOptimize(step(integrator, model, start, 0.0, kDt));
-  state.SetLabel(std::string(integrator_name(integrator)));
-}
-
-// `speed` (m/s) along x once settled: a sliding box, whose friction works at its limit.
-void step_with_floor_repeatedly(benchmark::State& state, double height /* m */,
-                                double speed = 0.0) {
-  const BodyModel model = box_under_gravity(state.range(1));
-  const Integrator integrator = integrator_at(state.range(0));
-  const std::vector<Plane> floor = {Plane{}};
-  PlaneContacts memory;
-  // Settled first, so that the resting box is timed with its warm-started manifold.
-  BodyState start = box_at(model, height);
-  for (int n = 0; n < 600; ++n) {
-    start = step_with_planes(integrator, model, start, 0.0, kDt, floor, {}, memory);
-  }
-  if (height > 1.0) start = box_at(model, height);
-  if (speed != 0.0) {
-    PrimaryState moving = start.primary();
-    moving.momentum.x() = model.constants.mass * speed;
-    start = BodyState(moving, model.constants);
-  }
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(
-        step_with_planes(integrator, model, start, 0.0, kDt, floor, {}, memory));
-  }
+  BoxRun run(Stepper::free, integrator, state.range(1));
+  time_run(state, run);
   state.SetLabel(std::string(integrator_name(integrator)));
 }
 
 void StepBoxRestingOnPlane(benchmark::State& state) {
-  step_with_floor_repeatedly(state, 0.5);
+  const Integrator integrator = integrator_at(state.range(0));
+  BoxRun run(Stepper::planes, integrator, state.range(1));
+  time_run(state, run);
+  state.SetLabel(std::string(integrator_name(integrator)));
+}
+
+void StepBoxSlidingOnPlane(benchmark::State& state) {
+  const Integrator integrator = integrator_at(state.range(0));
+  BoxRun run(Stepper::planes, integrator, state.range(1), 3.0);
+  time_run(state, run);
+  state.SetLabel(std::string(integrator_name(integrator)));
 }
 
 // The same box resting on the floor with penalty contact instead: the PenaltyContact law (the
@@ -134,67 +119,42 @@ void StepBoxRestingOnPenaltyPlane(benchmark::State& state) {
   const ContactSettings contact{.method = ContactMethod::penalty};
   model = with_penalty_contact(model, {Plane{}}, contact.stiffness, contact.damping);
   const double sink = model.constants.mass * 9.81 / (4.0 * contact.stiffness);  // m
-  const BodyState start = box_at(model, 0.5 - sink);
+  const BodyState start = box_at(model, model.half_size.y() - sink);
   for (auto _ : state) benchmark::DoNotOptimize(step(integrator, model, start, 0.0, kDt));
   state.SetLabel(std::string(integrator_name(integrator)));
 }
-void StepBoxSlidingOnPlane(benchmark::State& state) {
-  step_with_floor_repeatedly(state, 0.5, 3.0);
-}
 
-// The resting unit cube through the world step, as a scene steps it, each step from the last
-// one's end: range(1) = 0 awake (sleep = false), 1 with sleeping on (the default), which the
-// cube has fallen into during the 10 s it settles before it is timed.
+// The resting unit cube through the world step: range(1) = 0 awake (sleep = false), 1 with
+// sleeping on (the default), which the cube has fallen into during the 10 s it settles.
 void StepWorldBoxRestingOnPlane(benchmark::State& state) {
-  const BodyModel model = box_under_gravity(0);
   const Integrator integrator = integrator_at(state.range(0));
-  const std::vector<BodyModel> models = {model};
-  const std::vector<Plane> floor = {Plane{}};
-  const ContactSettings settings{.sleep = state.range(1) != 0};
-  WorldContacts contacts;
-  std::vector<BodyState> states = {box_at(model, 0.5)}, next(1);
-  double t = 0.0;
-  const auto step_once = [&] {
-    step_world(integrator, models, states, t, kDt, floor, settings, contacts, next);
-    states.swap(next);
-    t += kDt;
-  };
-  for (int n = 0; n < 600; ++n) step_once();
-  for (auto _ : state) {
-    step_once();
-    benchmark::DoNotOptimize(states);
-  }
-  state.SetLabel(std::string(integrator_name(integrator)) +
-                 (contacts.asleep[0] ? " asleep" : " awake"));
+  BoxRun run(Stepper::world, integrator, 0, 0.0, state.range(1) != 0);
+  time_run(state, run);
+  state.SetLabel(std::string(integrator_name(integrator)) + (run.asleep() ? " asleep" : " awake"));
 }
 
-// The unit cube sliding at 3 m/s on the floor through the world step, awake (sleep = false),
-// each step from the same state (a box sliding on would stop within 0.6 s): the world step's
+// The unit cube sliding at 3 m/s on the floor through the world step, awake: the world step's
 // counterpart of StepBoxSlidingOnPlane/shape:0.
 void StepWorldBoxSlidingOnPlane(benchmark::State& state) {
-  const BodyModel model = box_under_gravity(0);
   const Integrator integrator = integrator_at(state.range(0));
-  const std::vector<BodyModel> models = {model};
-  const std::vector<Plane> floor = {Plane{}};
-  const ContactSettings settings{.sleep = false};
-  WorldContacts contacts;
-  std::vector<BodyState> start = {box_at(model, 0.5)}, next(1);
-  for (int n = 0; n < 600; ++n) {
-    step_world(integrator, models, start, 0.0, kDt, floor, settings, contacts, next);
-    start.swap(next);
-  }
-  PrimaryState moving = start[0].primary();
-  moving.momentum.x() = model.constants.mass * 3.0;  // m/s
-  start[0] = BodyState(moving, model.constants);
-  for (auto _ : state) {
-    step_world(integrator, models, start, 0.0, kDt, floor, settings, contacts, next);
-    benchmark::DoNotOptimize(next);
-  }
+  BoxRun run(Stepper::world, integrator, 0, 3.0);
+  time_run(state, run);
   state.SetLabel(std::string(integrator_name(integrator)));
 }
 
+// The box 10 m above the floor, one step from the same state each time: the world step only
+// finds that nothing touches.
 void StepBoxAbovePlane(benchmark::State& state) {
-  step_with_floor_repeatedly(state, 10.0);
+  const BodyModel model = box_under_gravity(state.range(1));
+  const Integrator integrator = integrator_at(state.range(0));
+  const std::vector<Plane> floor = {Plane{}};
+  PlaneContacts memory;
+  const BodyState start = box_at(model, 10.0);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        step_with_planes(integrator, model, start, 0.0, kDt, floor, {}, memory));
+  }
+  state.SetLabel(std::string(integrator_name(integrator)));
 }
 
 constexpr std::int64_t kLastIntegrator = std::size(kAllIntegrators) - 1;

@@ -65,11 +65,12 @@ double project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoin
 // each body's pose by weight × its velocity change and projects the positions out of every
 // PositionPoint still inside (non-linear Gauss-Seidel, Catto, Box2D 2.4 "solve position
 // constraints": it moves no momentum, so it adds no kinetic energy). `solver` holds one
-// SolverBody per body, made from its end state. The corrected states go to `out`.
+// SolverBody per body, made from its end state; `poses` is scratch for the projection (a pose per
+// body). The corrected states go to `out`.
 void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
                     std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
                     std::span<const PositionPoint> positions, const ContactSettings& settings,
-                    std::span<BodyState> out);
+                    std::vector<ProjectedPose>& poses, std::span<BodyState> out);
 
 // The centre of the points at `arms` (m, world, from one body's centre) and their mean distance
 // from it across `normal` (unit): what a friction patch needs.

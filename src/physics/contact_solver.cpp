@@ -54,14 +54,14 @@ ImpulseDirection direction(const Vec3& along, const SolverBody& a, const Vec3& a
 ContactConstraint constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
                              std::uint32_t b, const SolverBody* body_b, const Vec3& arm_b,
                              const Vec3& normal, const Material& material) {
-  ContactConstraint c{
-      .a = a,
-      .b = b,
-      .normal = direction(normal, body_a, arm_a, body_b, arm_b),
-      .restitution = material.restitution,
-  };
-  c.approach_speed = speed(c.normal, body_a, body_b);
-  return c;
+  // The direction into a local first: built in place, it had the whole constraint zeroed before
+  // the call (a `rep stos` of 23 words, a fifth of building a constraint).
+  const ImpulseDirection along = direction(normal, body_a, arm_a, body_b, arm_b);
+  return {.a = a,
+          .b = b,
+          .normal = along,
+          .restitution = material.restitution,
+          .approach_speed = speed(along, body_a, body_b)};
 }
 
 // The turning direction about the unit `axis`: no linear part, the same moment on both bodies.

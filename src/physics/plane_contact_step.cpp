@@ -240,20 +240,21 @@ void add_plane_points_within(const BodyModel& model, std::uint32_t body, const M
                    contacts.found, points, patches);
   // Warm start from the last step's impulses of the same corners, and of the same plane's
   // friction.
+  // (Through local references: the pushes onto `positions` would otherwise have every access to
+  // the two manifolds reload them.)
   for (std::size_t p = 0; p < planes.size(); ++p) {
-    if (contacts.found[p].count > 0 && contacts.manifolds[p].count > 0) {
-      contacts.found[p].friction = contacts.manifolds[p].friction;
-    }
-    for (int i = 0; i < contacts.found[p].count; ++i) {
-      ContactPoint& now = contacts.found[p].points[static_cast<std::size_t>(i)];
-      for (int j = 0; j < contacts.manifolds[p].count; ++j) {
-        const ContactPoint& before = contacts.manifolds[p].points[static_cast<std::size_t>(j)];
+    Manifold& found = contacts.found[p];
+    const Manifold& last = contacts.manifolds[p];
+    if (found.count > 0 && last.count > 0) found.friction = last.friction;
+    const Plane& plane = planes[p];
+    for (int i = 0; i < found.count; ++i) {
+      ContactPoint& now = found.points[static_cast<std::size_t>(i)];
+      for (int j = 0; j < last.count; ++j) {
+        const ContactPoint& before = last.points[static_cast<std::size_t>(j)];
         if (before.feature == now.feature) now.impulses = before.impulses;
       }
-      positions.push_back({.a = body,
-                           .anchor_a = now.body_point,
-                           .normal = planes[p].normal,
-                           .base = -planes[p].offset});
+      positions.push_back(
+          {.a = body, .anchor_a = now.body_point, .normal = plane.normal, .base = -plane.offset});
     }
   }
   // The points' sources stay where they are: swapping vectors keeps their buffers.
@@ -302,7 +303,7 @@ BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const Pl
                    contacts.patches, contacts.positions);
   BodyState out;
   resolve_island({&body, 1}, solver, contacts.points, contacts.patches, contacts.positions,
-                 settings, {&out, 1});
+                 settings, contacts.poses, {&out, 1});
   return out;
 }
 

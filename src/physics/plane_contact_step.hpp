@@ -35,6 +35,7 @@ struct PlaneContacts {
   std::vector<PositionPoint> positions;        // scratch
   std::vector<FrictionPatch> patches;          // scratch
   std::vector<ImpactCorner> impact_corners;    // scratch
+  std::vector<ProjectedPose> poses;            // scratch
 };
 
 // How far an impulse applied over a step of h moves the body in that step, as a multiple of the

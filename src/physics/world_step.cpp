@@ -491,7 +491,7 @@ void solve_converged(Integrator integrator, std::span<const BodyModel> models,
   }
   contacts.island_out.resize(members.size());
   resolve_island(contacts.island_bodies, contacts.solver, contacts.points, contacts.patches,
-                 contacts.positions, settings, contacts.island_out);
+                 contacts.positions, settings, contacts.poses, contacts.island_out);
   for (std::size_t k = 0; k < members.size(); ++k) {
     out[members[k]] = std::move(contacts.island_out[k]);
   }

@@ -101,6 +101,7 @@ struct WorldContacts {
   std::vector<std::uint32_t> next_slot;                 // per island, while bucketing
   std::vector<IslandBody> island_bodies;
   std::vector<BodyState> island_out;
+  std::vector<ProjectedPose> poses;  // of a converged island's projection
   std::vector<SubstepBody> substep_bodies;
   std::vector<SolverBody> solver;
   std::vector<ContactConstraint> points;
