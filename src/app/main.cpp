@@ -163,10 +163,17 @@ int main(int argc, char** argv) {
                            "Render, write and encode on one thread (slower; same bytes)");
   std::string backend;
   render_command
-      ->add_option("--backend", backend,
-                   "Off-screen OpenGL: osmesa, egl (surfaceless) or auto (OSMesa if built in); "
-                   "replaces the scene's [render] backend")
+      ->add_option(
+          "--backend", backend,
+          "Off-screen OpenGL: osmesa, egl (a GPU's EGL device, else surfaceless) or auto (EGL "
+          "on a GPU, else OSMesa if built in); "
+          "replaces the scene's [render] backend")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
+  render_command
+      ->add_option("--egl-device", render.egl_device,
+                   "Draw with EGL on device N of EGL's list (EGL_EXT_platform_device; a wrong N "
+                   "lists them); replaces the scene's [render] egl_device")
+      ->check(CLI::Range(0, tumble::common::kMaxEglDevice));
   std::string png_compression = "fast";
   render_command
       ->add_option("--png-compression", png_compression,

@@ -104,6 +104,8 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
       << ",\n  \"videos\": " << videos_json(job)
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
       << ",\n  \"renderer\": " << json_string(result.renderer)
+      << ",\n  \"backend\": " << json_string(result.backend)
+      << ",\n  \"device\": " << (result.device.empty() ? "null" : json_string(result.device))
       << ",\n  \"physics_steps\": {\"framing\": " << result.framing_steps
       << ", \"frames\": " << result.frame_steps << ", \"to_first_frame\": " << result.seek_steps
       << "}"
@@ -222,9 +224,11 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
     const std::string shown = job.scene.output.video
                                   ? job.video_path(job.directory, job.scene.output.formats.front())
                                   : job.frames_path(job.directory);
-    std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s) -> %s\n",
+    const std::string drawn_by =
+        result.backend + (result.device.empty() ? "" : ", " + result.device);
+    std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s, %s) -> %s\n",
                  static_cast<long long>(count), total_seconds,
-                 static_cast<double>(count) / total_seconds, shown.c_str());
+                 static_cast<double>(count) / total_seconds, drawn_by.c_str(), shown.c_str());
   }
   return golden ? compare_with_golden(*golden, job, out, err) : kExitOk;
 }

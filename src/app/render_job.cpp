@@ -57,6 +57,7 @@ void apply_overrides(const RenderOptions& options, scene::Scene& scene) {
   if (options.duration) scene.duration = *options.duration;
   if (options.preset) scene.output.preset = *options.preset;
   if (options.backend) scene.render.backend = *options.backend;
+  if (options.egl_device) scene.render.egl_device = *options.egl_device;
   scene.output.frames = scene.output.frames && options.frames;
   scene.output.video = scene.output.video && options.video;
 }
@@ -132,6 +133,8 @@ std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Fram
     return nullptr;
   }
   result.renderer = renderer->description();
+  result.backend = render::backend_name(renderer->backend());
+  result.device = renderer->device();
   result.opengl = renderer->opengl();
   result.warnings = missing_character_warnings(scene, renderer->font());
   result.renderer_seconds = process_cpu_seconds() - start;
@@ -190,6 +193,12 @@ Result<scene::Scene> scene_as_rendered(scene::Scene written, const RenderOptions
   if (!chosen) return Error{chosen.error()};
   scene::Scene scene = std::move(*chosen);
   apply_overrides(options, scene);
+  if (scene.render.backend == render::Backend::osmesa &&
+      scene.render.egl_device != render::kAutomaticEglDevice) {
+    return Error{scene.source_path + ": the EGL device " + std::to_string(scene.render.egl_device) +
+                 " ([render] egl_device or --egl-device) is for the egl back end, not osmesa "
+                 "([render] backend or --backend)"};
+  }
   // The loaded scene kept every rule: what breaks one now is an override.
   if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {
     return Error{scene.source_path + ": " + broken->keys.front() +

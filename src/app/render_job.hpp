@@ -42,6 +42,7 @@ struct RenderOptions {
   bool serial = false;  // one thread: the reference the pipelined path must match byte for byte
   io::PngSettings png;  // fast by default; see io/png_io.hpp
   std::optional<render::Backend> backend;  // --backend: replaces [render] backend
+  std::optional<int> egl_device;           // --egl-device: replaces [render] egl_device
 };
 
 struct RenderJob {
@@ -88,6 +89,8 @@ struct RenderResult {
   double setup_seconds = 0.0;   // framing, renderer and sinks' set-up (s, wall)
   double finish_seconds = 0.0;  // finishing the sinks: draining the encoder, closing the MP4 (s)
   std::string renderer;         // the OpenGL implementation and the back end that drew
+  std::string backend;          // "osmesa" or "egl": the back end that drew
+  std::string device;           // EGL's: "surfaceless" or "device I of N: <name>"; "" for OSMesa
   std::string opengl;           // the OpenGL implementation alone: what decides the pixels
   std::vector<const char*> stages;  // each sink's stage name, as in pipeline.sinks
   std::int64_t framing_steps = 0;   // physics steps of the framing pass (0 when not run)

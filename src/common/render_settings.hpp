@@ -53,6 +53,12 @@ constexpr const char* backend_name(Backend backend) {
 }
 inline constexpr Backend kAllBackends[] = {Backend::automatic, Backend::osmesa, Backend::egl};
 
+// RenderSettings::egl_device when none is named: EGL draws on the first device of EGL's list that
+// is a GPU (not Mesa's software device), else on Mesa's surfaceless platform; and the automatic
+// back end takes EGL first when there is such a GPU, else OSMesa first.
+inline constexpr int kAutomaticEglDevice = -1;
+inline constexpr int kMaxEglDevice = 255;  // the largest index a scene or --egl-device may name
+
 // Fixed for a whole render.
 struct RenderSettings {
   int width = 1280;  // pixels
@@ -69,6 +75,9 @@ struct RenderSettings {
   Ground ground;
   bool shadows = true;
   Backend backend = Backend::automatic;  // [render] backend; tumble render's --backend overrides
+  // [render] egl_device; --egl-device overrides: an index into EGL's device list
+  // (eglQueryDevicesEXT's order), drawn on through EGL's device platform; or kAutomaticEglDevice.
+  int egl_device = kAutomaticEglDevice;
 };
 
 }  // namespace tumble::common

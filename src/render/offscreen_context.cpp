@@ -1,6 +1,21 @@
 #include "render/offscreen_context.hpp"
 
+#include "render/gl_loader.hpp"
+
 namespace tumble::render {
+
+std::string OffscreenContext::description() const {
+  return gl_description() +
+         (backend() == Backend::osmesa ? " (OSMesa)" : " (EGL " + device() + ")");
+}
+
+bool egl_has_gpu() {
+#ifdef TUMBLE_HAVE_EGL
+  return egl_hardware_device() != kAutomaticEglDevice;
+#else
+  return false;
+#endif
+}
 
 bool backend_built(Backend backend) {
   switch (backend) {
@@ -23,7 +38,7 @@ bool backend_built(Backend backend) {
 }
 
 std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height, Backend backend,
-                                                           std::string& error) {
+                                                           int egl_device, std::string& error) {
   const auto unbuilt = [&](Backend wanted) {
     error = std::string("this tumble was built without the ") + backend_name(wanted) +
             " back end (CMake did not find " +
@@ -37,17 +52,24 @@ std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height
       return create_osmesa_context(width, height, error);
     case Backend::egl:
       if (!backend_built(backend)) return unbuilt(backend);
-      return create_egl_context(width, height, error);
+      return create_egl_context(width, height, egl_device, error);
     case Backend::automatic:
       break;
   }
-  // OSMesa first: the back end every frame was drawn with before EGL came (the two give the same
-  // bytes on llvmpipe, tested), then EGL, which newer Mesas keep.
+  // A named EGL device asks for EGL. Else EGL first when it has a GPU; else OSMesa first, the back
+  // end every frame was drawn with before EGL came (the two give the same bytes on llvmpipe,
+  // tested), then EGL, which newer Mesas keep.
+  if (egl_device != kAutomaticEglDevice) {
+    return create_offscreen_context(width, height, Backend::egl, egl_device, error);
+  }
+  const bool egl_first = egl_has_gpu();
   std::string tried;
-  for (const Backend each : {Backend::osmesa, Backend::egl}) {
+  const Backend order[2] = {egl_first ? Backend::egl : Backend::osmesa,
+                            egl_first ? Backend::osmesa : Backend::egl};
+  for (const Backend each : order) {
     if (!backend_built(each)) continue;
     std::string failure;
-    auto context = create_offscreen_context(width, height, each, failure);
+    auto context = create_offscreen_context(width, height, each, egl_device, failure);
     if (context) return context;
     tried += std::string(tried.empty() ? "" : "; ") + backend_name(each) + ": " + failure;
   }

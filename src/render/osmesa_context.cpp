@@ -29,7 +29,7 @@ class OsmesaContext final : public OffscreenContext {
   int width() const override { return width_; }
   int height() const override { return height_; }
   Backend backend() const override { return Backend::osmesa; }
-  std::string description() const override { return gl_description() + " (OSMesa)"; }
+  std::string device() const override { return {}; }
 
  private:
   OSMesaContext context_;

@@ -154,7 +154,8 @@ struct Renderer::Resources {
 
 std::string Renderer::Resources::create(const std::string& shader_directory) {
   std::string error;
-  context = create_offscreen_context(settings.width, settings.height, settings.backend, error);
+  context = create_offscreen_context(settings.width, settings.height, settings.backend,
+                                     settings.egl_device, error);
   if (!context) return error;
 
   body_program =
@@ -285,6 +286,14 @@ std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
 
 std::string Renderer::description() const {
   return resources_->context->description();
+}
+
+common::Backend Renderer::backend() const {
+  return resources_->context->backend();
+}
+
+std::string Renderer::device() const {
+  return resources_->context->device();
 }
 
 std::string Renderer::opengl() const {

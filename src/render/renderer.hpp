@@ -33,6 +33,9 @@ class Renderer {
 
   // The GL implementation in use and the back end that made its context, for --verbose.
   std::string description() const;
+  // The back end that made the context, and its device (OffscreenContext::device).
+  common::Backend backend() const;
+  std::string device() const;
   // The GL implementation alone (GL_RENDERER and GL_VERSION): what decides the pixels, as the
   // back ends draw the same bytes. On the thread that created the renderer.
   std::string opengl() const;

@@ -37,6 +37,12 @@ void read_render(TableReader& in, Scene& scene) {
             "unknown off-screen OpenGL " + in_quotes(backend) + " (auto, osmesa or egl)");
   }
   r.backend = *named;
+  r.egl_device =
+      static_cast<int>(in.optional_integer("egl_device", r.egl_device, 0, common::kMaxEglDevice));
+  if (in.has("egl_device") && r.backend == common::Backend::osmesa) {
+    in.fail("egl_device",
+            "names an EGL device, but backend is \"osmesa\" (use \"egl\" or \"auto\")");
+  }
   scene.font = in.optional_string("font", scene.font);
   if (in.has("font") && scene.font.empty()) in.fail("font", "expected a fontconfig family name");
   in.reject_unknown_keys();

@@ -84,5 +84,47 @@ TEST_F(LlvmpipeSettings, BackendOptionChoosesTheOffscreenOpenGLAndTheFramesAgree
       << bad.err;
 }
 
+// --egl-device N draws through EGL's device platform on device N (here Mesa's software device,
+// the one EGL lists on a machine without a GPU): report.json and the summary name the back end
+// and the device, the frame is OSMesa's byte for byte, and nothing needs a display (DISPLAY and
+// WAYLAND_DISPLAY name ones that do not exist). A device EGL does not list, or one named for
+// OSMesa, is an error (exit 2) that leaves no output.
+TEST_F(LlvmpipeSettings, EglDeviceOptionDrawsOnThatDeviceWithoutADisplay) {
+  write("scene.toml", cube_in_a_box(false));
+  const std::string render =
+      "render " + path("scene.toml") + " --width 320 --height 180 --frames 20:21 --no-video -o ";
+  const std::string no_display = "exec env DISPLAY=:97 WAYLAND_DISPLAY=tumble-none ";
+  const Outcome osmesa = tumble(render + path("osmesa") + " -q --backend osmesa");
+  ASSERT_EQ(osmesa.exit_code, 0) << osmesa.err;
+  const Outcome device = tumble(render + path("device") + " --egl-device 0", no_display);
+  ASSERT_EQ(device.exit_code, 0) << device.err;
+  const fs::path folder = fs::path(path("device")) / "cube_in_a_box";
+  const std::string report = read_file(folder / "report.json");
+  EXPECT_NE(report.find("\"backend\": \"egl\""), std::string::npos) << report;
+  EXPECT_NE(report.find("\"device\": \"device 0 of "), std::string::npos) << report;
+  EXPECT_NE(device.err.find("frames/s, egl, device 0 of "), std::string::npos) << device.err;
+  if (report.find("Mesa software") != std::string::npos) {
+    EXPECT_TRUE(
+        read_file(folder / "frames" / "frame_00020.png") ==
+        read_file(fs::path(path("osmesa")) / "cube_in_a_box" / "frames" / "frame_00020.png"));
+  }
+  const Outcome surfaceless = tumble(render + path("surfaceless") + " --backend egl", no_display);
+  ASSERT_EQ(surfaceless.exit_code, 0) << surfaceless.err;
+  EXPECT_NE(surfaceless.err.find("frames/s, egl, surfaceless)"), std::string::npos)
+      << surfaceless.err;
+
+  const Outcome unlisted = tumble(render + path("unlisted") + " --egl-device 255");
+  EXPECT_EQ(unlisted.exit_code, 2);
+  EXPECT_NE(unlisted.err.find("egl_device 255: no such EGL device (this machine's: 0: "),
+            std::string::npos)
+      << unlisted.err;
+  EXPECT_FALSE(fs::exists(path("unlisted")) && !fs::is_empty(path("unlisted")));
+  const Outcome for_osmesa =
+      tumble(render + path("contradiction") + " --backend osmesa --egl-device 0");
+  EXPECT_EQ(for_osmesa.exit_code, 2);
+  EXPECT_NE(for_osmesa.err.find("is for the egl back end, not osmesa"), std::string::npos)
+      << for_osmesa.err;
+}
+
 }  // namespace
 }  // namespace tumble::testing

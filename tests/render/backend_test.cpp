@@ -1,10 +1,12 @@
-// The two off-screen back ends (OSMesa, EGL surfaceless) draw the same frames: both are Mesa's
-// llvmpipe behind the renderer's own framebuffers, so every byte must agree, with multisampling
-// and with the edge filter, shadows, a grid and a pane of glass.
+// The off-screen back ends (OSMesa; EGL surfaceless and on Mesa's software device) draw the same
+// frames: all are Mesa's llvmpipe behind the renderer's own framebuffers, so every byte must
+// agree, with multisampling and with the edge filter, shadows, a grid and a pane of glass.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
+#include "render/offscreen_context.hpp"
 #include "render/renderer.hpp"
 
 namespace tumble::render {
@@ -34,13 +36,15 @@ FrameView scene() {
   return view;
 }
 
-io::Image draw_with(Backend backend, int msaa, std::string& description) {
+io::Image draw_with(Backend backend, int msaa, std::string& description,
+                    int egl_device = kAutomaticEglDevice) {
   RenderSettings settings;
   settings.width = 320;
   settings.height = 180;
   settings.msaa = msaa;
   settings.ground.height = -0.5;
   settings.backend = backend;
+  settings.egl_device = egl_device;
   std::string error;
   const auto renderer = Renderer::create(settings, kShaders, error);
   EXPECT_TRUE(renderer) << backend_name(backend) << ": " << error;
@@ -49,6 +53,29 @@ io::Image draw_with(Backend backend, int msaa, std::string& description) {
   renderer->draw(scene(), image);
   description = renderer->description();
   return image;
+}
+
+std::size_t differing_bytes(const io::Image& a, const io::Image& b) {
+  EXPECT_EQ(a.rgb.size(), b.rgb.size());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < std::min(a.rgb.size(), b.rgb.size()); ++i)
+    differing += a.rgb[i] != b.rgb[i];
+  return differing;
+}
+
+// The index of Mesa's software device in EGL's list (the renderer says which device drew), or -1.
+int software_device() {
+  for (int device = 0; device < 8; ++device) {
+    RenderSettings settings;
+    settings.width = settings.height = 16;
+    settings.backend = Backend::egl;
+    settings.egl_device = device;
+    std::string error;
+    const auto renderer = Renderer::create(settings, kShaders, error);
+    if (!renderer) return -1;  // past the end of the list
+    if (renderer->device().find("Mesa software") != std::string::npos) return device;
+  }
+  return -1;
 }
 
 TEST(Backend, NamesAreTheScenesWords) {
@@ -71,9 +98,7 @@ TEST(Backend, EglAndOsmesaDrawTheSameBytes) {
     EXPECT_NE(egl_says.find("(EGL surfaceless)"), std::string::npos) << egl_says;
     ASSERT_EQ(osmesa.width, 320);
     ASSERT_EQ(egl.width, 320);
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < osmesa.rgb.size(); ++i) differing += osmesa.rgb[i] != egl.rgb[i];
-    EXPECT_EQ(differing, 0u) << "bytes of " << osmesa.rgb.size();
+    EXPECT_EQ(differing_bytes(osmesa, egl), 0u) << "bytes of " << osmesa.rgb.size();
     // The scene is not blank: the check above compares pictures.
     std::size_t distinct_from_first = 0;
     for (std::size_t i = 3; i < osmesa.rgb.size(); i += 3) {
@@ -83,9 +108,60 @@ TEST(Backend, EglAndOsmesaDrawTheSameBytes) {
   }
 }
 
-// `automatic` takes OSMesa where it is built in (the back end every golden was drawn with).
+// EGL's device platform on Mesa's software device (EGL_MESA_device_software) is llvmpipe too:
+// the same bytes as the surfaceless platform and as OSMesa.
+TEST(Backend, EglSoftwareDeviceDrawsTheSameBytes) {
+  if (!backend_built(Backend::egl)) GTEST_SKIP() << "built without EGL";
+  const int device = software_device();
+  if (device < 0) GTEST_SKIP() << "this EGL lists no Mesa software device";
+  for (const int msaa : {kEdgeFilter, 4}) {
+    SCOPED_TRACE(msaa == kEdgeFilter ? "edge filter" : "msaa 4");
+    std::string surfaceless_says, device_says;
+    const io::Image surfaceless = draw_with(Backend::egl, msaa, surfaceless_says);
+    const io::Image on_device = draw_with(Backend::egl, msaa, device_says, device);
+    EXPECT_NE(surfaceless_says.find("(EGL surfaceless)"), std::string::npos) << surfaceless_says;
+    EXPECT_NE(device_says.find("(EGL device " + std::to_string(device) + " of "), std::string::npos)
+        << device_says;
+    ASSERT_EQ(on_device.width, 320);
+    EXPECT_EQ(differing_bytes(surfaceless, on_device), 0u);
+    if (backend_built(Backend::osmesa)) {
+      std::string osmesa_says;
+      EXPECT_EQ(differing_bytes(draw_with(Backend::osmesa, msaa, osmesa_says), on_device), 0u);
+    }
+  }
+}
+
+// A device EGL does not list is an error that lists the ones it does, for any back end that
+// takes EGL (a named device makes `automatic` take EGL).
+TEST(Backend, UnlistedEglDeviceFailsNamingTheDevices) {
+  if (!backend_built(Backend::egl)) GTEST_SKIP() << "built without EGL";
+  for (const Backend backend : {Backend::egl, Backend::automatic}) {
+    RenderSettings settings;
+    settings.backend = backend;
+    settings.egl_device = common::kMaxEglDevice;
+    std::string error;
+    EXPECT_FALSE(Renderer::create(settings, kShaders, error));
+    EXPECT_NE(error.find("egl_device 255: no such EGL device (this machine's: 0: "),
+              std::string::npos)
+        << error;
+  }
+}
+
+// With no GPU among EGL's devices (this machine's and CI's), no device is chosen for EGL and
+// `automatic` keeps to OSMesa.
+TEST(Backend, WithoutAGpuEglHasNoHardwareDevice) {
+  if (!backend_built(Backend::egl)) GTEST_SKIP() << "built without EGL";
+  if (egl_has_gpu()) GTEST_SKIP() << "this machine has a GPU";
+  std::string says;
+  draw_with(Backend::egl, kEdgeFilter, says);
+  EXPECT_NE(says.find("(EGL surfaceless)"), std::string::npos) << says;
+}
+
+// `automatic` takes OSMesa where it is built in (the back end every golden was drawn with) and
+// EGL has no GPU.
 TEST(Backend, AutomaticPrefersOsmesa) {
   if (!backend_built(Backend::osmesa)) GTEST_SKIP() << "built without OSMesa";
+  if (egl_has_gpu()) GTEST_SKIP() << "this machine has a GPU: EGL comes first";
   std::string says;
   draw_with(Backend::automatic, kEdgeFilter, says);
   EXPECT_NE(says.find("(OSMesa)"), std::string::npos) << says;

@@ -114,6 +114,7 @@ msaa = 8
 background = [0.1, 0.2, 0.3]
 shadows = false
 backend = "egl"
+egl_device = 1
 
 [camera]
 position = [6.0, 4.0, 8.0]
@@ -274,6 +275,7 @@ TEST(SceneLoader, FullSceneGivesExactlyTheWrittenRenderingValues) {
   EXPECT_EQ(scene.render.background, common::Color(0.1, 0.2, 0.3));
   EXPECT_FALSE(scene.render.shadows);
   EXPECT_EQ(scene.render.backend, common::Backend::egl);
+  EXPECT_EQ(scene.render.egl_device, 1);
 
   ASSERT_TRUE(scene.camera.position.has_value());
   EXPECT_EQ(*scene.camera.position, Vec3(6.0, 4.0, 8.0));
@@ -340,6 +342,7 @@ position = [2.0, 0.0, 0.0]
   EXPECT_EQ(scene.render.msaa, common::kEdgeFilter);  // no msaa given: one sample, filtered
   EXPECT_TRUE(scene.render.shadows);
   EXPECT_EQ(scene.render.backend, common::Backend::automatic);
+  EXPECT_EQ(scene.render.egl_device, common::kAutomaticEglDevice);
 
   // Left out, the camera is placed later to frame the whole motion.
   EXPECT_FALSE(scene.camera.position.has_value());
@@ -1532,7 +1535,28 @@ mass = 1.0
 samples = 4
 )",
      "test.toml:7:1", "render.samples",
-     "unknown key (allowed here: backend, background, font, fps, height, msaa, shadows, width)"},
+     "unknown key (allowed here: backend, background, egl_device, font, fps, height, msaa, "
+     "shadows, "
+     "width)"},
+    {"NegativeEglDevice", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+egl_device = -1
+)",
+     "test.toml:7:14", "render.egl_device", "must be from 0 to 255 (got -1)"},
+    {"EglDeviceForOsmesa", R"(duration = 1.0
+[[bodies]]
+shape = "cube"
+size = 1.0
+mass = 1.0
+[render]
+backend = "osmesa"
+egl_device = 0
+)",
+     "test.toml:8:14", "render.egl_device", "names an EGL device, but backend is \"osmesa\""},
     {"ZeroFieldOfView", R"(duration = 1.0
 [[bodies]]
 shape = "cube"
