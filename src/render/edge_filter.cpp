@@ -127,14 +127,30 @@ void copy_rgb(const std::uint8_t* rgba, std::size_t pixel_count, std::uint8_t* r
   std::memcpy(rgb + 3 * (pixel_count - 1), rgba + 4 * (pixel_count - 1), 3);
 }
 
-// Marks the pixels of row `y` inside `boxes` as not to filter. Precondition: boxes within the
-// picture.
-void leave_unfiltered(const std::vector<PixelBox>& boxes, int y, std::vector<std::uint8_t>& range) {
-  for (const PixelBox& box : boxes) {
-    if (y < box.y || y >= box.y + box.height) continue;
-    std::fill_n(range.begin() + box.x, box.width, std::uint8_t{0});
+// The rows of boxes to leave unfiltered, swept down the picture: a row meets only the boxes
+// that span it (a frame's captions are a hundred glyph boxes, each a few dozen rows high).
+class Unfiltered {
+ public:
+  explicit Unfiltered(const std::vector<PixelBox>& boxes) : by_top_(boxes) {
+    std::sort(by_top_.begin(), by_top_.end(),
+              [](const PixelBox& a, const PixelBox& b) { return a.y < b.y; });
   }
-}
+
+  // Marks the pixels of row `y` inside the boxes as not to filter. Called for rows in
+  // increasing order. Precondition: boxes within the picture.
+  void leave(int y, std::vector<std::uint8_t>& range) {
+    while (next_ < by_top_.size() && by_top_[next_].y <= y) spanning_.push_back(by_top_[next_++]);
+    std::erase_if(spanning_, [y](const PixelBox& box) { return box.y + box.height <= y; });
+    for (const PixelBox& box : spanning_) {
+      std::fill_n(range.begin() + box.x, box.width, std::uint8_t{0});
+    }
+  }
+
+ private:
+  std::vector<PixelBox> by_top_;
+  std::size_t next_ = 0;
+  std::vector<PixelBox> spanning_;
+};
 
 }  // namespace
 
@@ -144,6 +160,7 @@ void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& ou
   copy_rgb(rgba, static_cast<std::size_t>(width) * height, out.rgb.data());
   Luma luma(rgba, width, height);
   std::vector<std::uint8_t> range(static_cast<std::size_t>(width));  // of a row's pixels
+  Unfiltered text(unfiltered);
   for (int y = 0; y < height; ++y) {
     const std::uint8_t* row = luma.at(0, y);
     const std::uint8_t* up = row - luma.stride;
@@ -159,7 +176,7 @@ void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& ou
       const bool filtered = contrast >= kContrastFloor && contrast * kContrastRelative >= highest;
       range[static_cast<std::size_t>(x)] = static_cast<std::uint8_t>(filtered ? contrast : 0);
     }
-    leave_unfiltered(unfiltered, y, range);
+    text.leave(y, range);
     for (int x = 0; x < width; ++x) {
       if (range[static_cast<std::size_t>(x)] == 0) {
         // Most of a row is not on an edge: skip eight pixels at a time where none is.

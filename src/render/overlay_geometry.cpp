@@ -67,10 +67,14 @@ struct Builder {
   }
 
   void line(const Polyline& line) {
-    for (std::size_t i = 0; i + 1 < line.points.size(); ++i) {
-      Vec4 a = view_projection * line.points[i].homogeneous();
-      Vec4 b = view_projection * line.points[i + 1].homogeneous();
-      double opacity_a = line.opacity[i], opacity_b = line.opacity[i + 1];
+    std::vector<Vec4> clip;
+    clip.reserve(line.points.size());
+    for (const Vec3& point : line.points) clip.push_back(view_projection * point.homogeneous());
+    for (std::size_t i = 0; i + 1 < clip.size();) {
+      const std::size_t j = straight_run_end(clip, line.opacity, i);
+      Vec4 a = clip[i], b = clip[j];
+      double opacity_a = line.opacity[i], opacity_b = line.opacity[j];
+      i = j;
       if (!clip_to_near(a, b, opacity_a, opacity_b)) continue;
       const Vec2 along = pixel(b) - pixel(a);
       if (!(along.norm() > 0.0)) continue;
@@ -78,6 +82,41 @@ struct Builder {
       band(a, b, normal, 0.5 * kLineWidth * scale, premultiplied(line.color, opacity_a),
            premultiplied(line.color, opacity_b));
     }
+  }
+
+  // The last point of the run from `first` that one band draws as the segments would: each
+  // point between lies within kStraightPixels of the chord on the picture, with its opacity
+  // within kStraightOpacity of the chord's there (interpolated as GL does, perspective-correct).
+  // A trail's dozens of short segments a frame are mostly a few such runs: fewer, longer bands
+  // for llvmpipe to set up, and no overlaps at the joints between.
+  std::size_t straight_run_end(const std::vector<Vec4>& clip, const std::vector<double>& opacity,
+                               std::size_t first) const {
+    constexpr double kStraightPixels = 0.25, kStraightOpacity = 0.5 / 255.0;
+    constexpr std::size_t kLongestRun = 64;  // points, bounding the checks to a few thousand
+    const auto seen = [&](std::size_t i) { return in_front(clip[i]) > 0.0 && clip[i].w() > 0.0; };
+    std::size_t end = first + 1;
+    if (!seen(first) || !seen(end)) return end;
+    const Vec2 a = pixel(clip[first]);
+    for (std::size_t last = first + 2; last < clip.size() && last - first <= kLongestRun; ++last) {
+      if (!seen(last)) break;
+      const Vec2 chord = pixel(clip[last]) - a;
+      const double length2 = chord.squaredNorm();
+      if (!(length2 > 0.0)) break;
+      for (std::size_t k = first + 1; k < last; ++k) {
+        const Vec2 to_k = pixel(clip[k]) - a;
+        const double s = to_k.dot(chord) / length2;  // along the chord on the picture
+        if (s <= 0.0 || s >= 1.0) return end;
+        if ((to_k - s * chord).norm() > kStraightPixels) return end;
+        // GL interpolates attribute / w linearly on the picture: b's weight at s is
+        // (s / w_b) / ((1 - s) / w_a + s / w_b).
+        const double wa = clip[first].w(), wb = clip[last].w();
+        const double weight_b = (s / wb) / ((1.0 - s) / wa + s / wb);
+        const double expected = opacity[first] + weight_b * (opacity[last] - opacity[first]);
+        if (std::abs(opacity[k] - expected) > kStraightOpacity) return end;
+      }
+      end = last;
+    }
+    return end;
   }
 
   void arrow(const Arrow& arrow) {

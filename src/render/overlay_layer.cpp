@@ -12,6 +12,7 @@ Result<std::unique_ptr<OverlayLayer>> OverlayLayer::create(int width, int height
   std::string error;
   out->program_ = ShaderProgram::build(shader_directory, {"overlay.vert"}, {"overlay.frag"}, error);
   if (!out->program_.valid()) return Error{error};
+  out->opacity_ = out->program_.uniform("u_opacity");
   glGenVertexArrays(1, &out->vao_);
   glGenBuffers(1, &out->vbo_);
   glBindVertexArray(out->vao_);
@@ -38,8 +39,13 @@ void OverlayLayer::draw(const std::vector<Polyline>& lines, const std::vector<Ar
       overlay_triangles(lines, arrows, view_projection, width_, height_);
   if (vertices.empty()) return;
   glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)),
-               vertices.data(), GL_STREAM_DRAW);
+  const auto bytes = static_cast<GLsizeiptr>(vertices.size() * sizeof(float));
+  if (vertices.size() > vbo_floats_) {
+    glBufferData(GL_ARRAY_BUFFER, bytes, vertices.data(), GL_DYNAMIC_DRAW);
+    vbo_floats_ = vertices.size();
+  } else {
+    glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, vertices.data());
+  }
   glUseProgram(program_.id());
   glDisable(GL_CULL_FACE);  // bands face either way, as their offsets fall
   glDepthMask(GL_FALSE);
@@ -47,12 +53,11 @@ void OverlayLayer::draw(const std::vector<Polyline>& lines, const std::vector<Ar
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied "over" (Porter & Duff 1984)
   glBindVertexArray(vao_);
   const GLsizei count = static_cast<GLsizei>(vertices.size() / kOverlayFloatsPerVertex);
-  const GLint opacity = program_.uniform("u_opacity");
   glDepthFunc(GL_GREATER);  // hidden by the scene
-  glUniform1f(opacity, kHiddenOpacity);
+  glUniform1f(opacity_, kHiddenOpacity);
   glDrawArrays(GL_TRIANGLES, 0, count);
   glDepthFunc(GL_LEQUAL);  // in view
-  glUniform1f(opacity, 1.0f);
+  glUniform1f(opacity_, 1.0f);
   glDrawArrays(GL_TRIANGLES, 0, count);
   glBindVertexArray(0);
   glDepthFunc(GL_LESS);

@@ -44,7 +44,9 @@ class OverlayLayer {
   OverlayLayer() = default;
   int width_ = 0, height_ = 0;  // of the frame (px)
   ShaderProgram program_;
+  GLint opacity_ = -1;  // u_opacity's location
   GLuint vao_ = 0, vbo_ = 0;
+  std::size_t vbo_floats_ = 0;  // the buffer's size, grown as needed and reused frame to frame
 };
 
 }  // namespace tumble::render

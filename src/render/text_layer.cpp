@@ -1,6 +1,7 @@
 #include "render/text_layer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <optional>
 
@@ -30,6 +31,41 @@ Eigen::Vector4f premultiply(const Rgba& color, double opacity) {
   return Eigen::Vector4f(static_cast<float>(rgb.x()), static_cast<float>(rgb.y()),
                          static_cast<float>(rgb.z()), static_cast<float>(alpha));
 }
+
+// In 0-255 units: out = colour × coverage + in × (1 - alpha × coverage), rounded.
+std::uint8_t blend_byte(const Eigen::Vector4f& color, int channel, float cover, std::uint8_t in) {
+  const float keep = 1.0f - color.w() * cover;
+  const float value = 255.0f * color[channel] * cover + static_cast<float>(in) * keep;
+  return static_cast<std::uint8_t>(std::min(value, 255.0f) + 0.5f);
+}
+
+// An atlas texel of 255, as blend_byte receives it.
+constexpr float kGlyphFullCover = 255 * (1.0f / 255.0f);
+
+// blend_byte of every input byte, for one colour and one coverage.
+class FullCoverTable {
+ public:
+  void prepare(const Eigen::Vector4f& color, float cover) {
+    if (ready_ && color == color_ && cover == cover_) return;
+    for (int c = 0; c < 3; ++c) {
+      for (int in = 0; in < 256; ++in) {
+        table_[c][in] = blend_byte(color, c, cover, static_cast<std::uint8_t>(in));
+      }
+    }
+    color_ = color;
+    cover_ = cover;
+    ready_ = true;
+  }
+  void apply(std::uint8_t* pixel) const {
+    for (int c = 0; c < 3; ++c) pixel[c] = table_[c][pixel[c]];
+  }
+
+ private:
+  std::array<std::array<std::uint8_t, 256>, 3> table_{};
+  Eigen::Vector4f color_;
+  float cover_ = 0.0f;
+  bool ready_ = false;
+};
 
 }  // namespace
 
@@ -91,24 +127,30 @@ std::vector<PixelBox> TextLayer::lay_out(const std::vector<Text>& texts) {
 void TextLayer::draw(io::Image& image) const {
   const std::vector<std::uint8_t>& texels = atlas_.texels();
   const std::size_t atlas_size = static_cast<std::size_t>(atlas_.size());
+  // A box's pixels, and most of a glyph's (its stems), are fully covered: there the result
+  // depends on the input byte alone, so it is looked up, worked out once per colour and
+  // coverage by blend_byte itself (the same bytes as computing it per pixel).
+  FullCoverTable full;
   for (const Piece& piece : pieces_) {
-    // In 0-255 units: out = colour × coverage + in × (1 - alpha × coverage), rounded.
-    const Eigen::Vector4f color = 255.0f * piece.color;
-    const float alpha = piece.color.w();
+    const bool is_solid = piece.texel_x < 0;
+    full.prepare(piece.color, is_solid ? 1.0f : kGlyphFullCover);
     for (int y = 0; y < piece.box.height; ++y) {
       std::uint8_t* out = image.row(piece.box.y + y) + 3 * piece.box.x;
+      if (is_solid) {
+        for (int x = 0; x < piece.box.width; ++x, out += 3) full.apply(out);
+        continue;
+      }
       const std::uint8_t* coverage =
-          piece.texel_x < 0 ? nullptr
-                            : &texels[static_cast<std::size_t>(piece.texel_y + y) * atlas_size +
-                                      static_cast<std::size_t>(piece.texel_x)];
+          &texels[static_cast<std::size_t>(piece.texel_y + y) * atlas_size +
+                  static_cast<std::size_t>(piece.texel_x)];
       for (int x = 0; x < piece.box.width; ++x, out += 3) {
-        const float cover = coverage ? coverage[x] * (1.0f / 255.0f) : 1.0f;
-        if (cover == 0.0f) continue;
-        const float keep = 1.0f - alpha * cover;
-        for (int c = 0; c < 3; ++c) {
-          const float value = color[c] * cover + static_cast<float>(out[c]) * keep;
-          out[c] = static_cast<std::uint8_t>(std::min(value, 255.0f) + 0.5f);
+        if (coverage[x] == 0) continue;
+        if (coverage[x] == 255) {
+          full.apply(out);
+          continue;
         }
+        const float cover = coverage[x] * (1.0f / 255.0f);
+        for (int c = 0; c < 3; ++c) out[c] = blend_byte(piece.color, c, cover, out[c]);
       }
     }
   }

@@ -154,5 +154,66 @@ TEST(OverlayGeometry, TrianglesPerItemAndTheNearPlane) {
   EXPECT_EQ(vertices({crossing}, {}), 6u);
 }
 
+// A trail's points that one band draws within a quarter pixel and half an opacity level are one
+// band: a straight line fading evenly is one, however many points; a bend, a kink in its fading,
+// or a point beyond the near plane ends a band; a circle keeps every point within a quarter pixel
+// of the bands drawn.
+TEST(OverlayGeometry, StraightRunsOfALineAreOneBand) {
+  const Mat4 view_projection = perspective(M_PI / 4.0, 16.0 / 9.0, 0.1, 100.0) *
+                               look_at(Vec3(0, 0, 5), Vec3::Zero(), Vec3::UnitY());
+  const auto bands = [&](const Polyline& line) {
+    return overlay_triangles({line}, {}, view_projection, 1280, 720).size() /
+           kOverlayFloatsPerVertex / 6;
+  };
+  Polyline straight;  // across the picture at the camera's depth: even on the picture too
+  for (int i = 0; i <= 40; ++i) {
+    straight.points.push_back(Vec3(-1.0 + 0.05 * i, 0.0, 0.0));
+    straight.opacity.push_back(i / 40.0);
+  }
+  EXPECT_EQ(bands(straight), 1u);
+  Polyline receding = straight;  // away from the camera: opacity interpolated as GL does
+  for (Vec3& point : receding.points) point.z() = -2.0 - point.x();
+  EXPECT_EQ(bands(receding), 1u);
+  Polyline kinked_fade = straight;
+  kinked_fade.opacity[20] = 0.6;  // 0.5 on the straight fade
+  // Points 0-19 and 21-40 are each one band; the segments either side of 20 bands of their own
+  // (a band from 0 to 20 would fade 19 towards 0.6, not hold it at 0.475).
+  EXPECT_EQ(bands(kinked_fade), 4u);
+  Polyline bent = straight;
+  bent.points[20].y() = 0.01;  // about 1.7 px off the chord at 720p
+  EXPECT_EQ(bands(bent), 4u);  // as the kink
+
+  Polyline circle;  // 121 points of a circle of 1 m seen face on: about 270 px across
+  for (int i = 0; i <= 120; ++i) {
+    const double angle = 2.0 * M_PI * i / 120.0;
+    circle.points.push_back(Vec3(std::cos(angle), std::sin(angle), 0.0));
+    circle.opacity.push_back(1.0);
+  }
+  const std::vector<float> triangles = overlay_triangles({circle}, {}, view_projection, 1280, 720);
+  const std::size_t drawn = triangles.size() / kOverlayFloatsPerVertex / 6;
+  EXPECT_GT(drawn, 4u);
+  EXPECT_LT(drawn, 120u);
+  // Every point within a quarter pixel of some band's centre line, on the picture.
+  const auto on_picture = [](const float* vertex) {
+    return Eigen::Vector2d(vertex[0] / vertex[3] * 640.0, vertex[1] / vertex[3] * 360.0);
+  };
+  for (const Vec3& point : circle.points) {
+    const Eigen::Vector2d p =
+        *project_to_pixel(view_projection, point, 1280, 720) - Eigen::Vector2d(640.0, 360.0);
+    const Eigen::Vector2d q(p.x(), -p.y());  // y up, as clip space
+    double nearest = 1e9;
+    for (std::size_t band = 0; band < drawn; ++band) {
+      const float* v = &triangles[band * 6 * kOverlayFloatsPerVertex];
+      // Vertices 0 and 1 straddle the start, 2 and 5 the end.
+      const Eigen::Vector2d a = 0.5 * (on_picture(v) + on_picture(v + kOverlayFloatsPerVertex));
+      const Eigen::Vector2d b = 0.5 * (on_picture(v + 2 * kOverlayFloatsPerVertex) +
+                                       on_picture(v + 5 * kOverlayFloatsPerVertex));
+      const double s = std::clamp((q - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      nearest = std::min(nearest, (q - a - s * (b - a)).norm());
+    }
+    EXPECT_LE(nearest, 0.25 + 1e-3);
+  }
+}
+
 }  // namespace
 }  // namespace tumble::render
