@@ -163,6 +163,20 @@ void BM_OverlayCostPerFrame720p(benchmark::State& state) {
   });
 }
 
+// The arrows alone and the trail alone, for the share of each (not matched by CostPerFrame).
+void BM_TwoArrowsCost720p(benchmark::State& state) {
+  alternate(state, [](FrameView& view, int frame) {
+    add_vectors_and_trail(view, frame);
+    view.lines.clear();
+  });
+}
+void BM_TrailCost720p(benchmark::State& state) {
+  alternate(state, [](FrameView& view, int frame) {
+    add_vectors_and_trail(view, frame);
+    view.arrows.clear();
+  });
+}
+
 void BM_Frame720pWithoutText(benchmark::State& state) {
   draw_frames(state, false);
 }
@@ -182,6 +196,8 @@ BENCHMARK(BM_Frame720pWithThreeTexts)
     ->UseRealTime();
 BENCHMARK(BM_TextCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_OverlayCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_TwoArrowsCost720p)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_TrailCost720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 
 }  // namespace
 
