@@ -58,19 +58,27 @@ class VideoJoinTest : public ::testing::Test {
     return path(name);
   }
 
+  // The pattern as segments a, b and c (`extension`: ".mp4" or ".webm") of frames 0-16, 17 (one
+  // frame) and 18 on; b's own record of its place checked.
+  std::vector<std::string> three_segments(const std::string& extension) const {
+    const std::vector<std::string> parts = {encode("a" + extension, 0, 17),
+                                            encode("b" + extension, 17, 18),
+                                            encode("c" + extension, 18, kFrames)};
+    const VideoSegmentInfo b = read_segment_info(parts[1]);
+    EXPECT_EQ(b.error, "");
+    EXPECT_EQ(b.first_frame, 17);
+    EXPECT_EQ(b.frames, 1);
+    EXPECT_EQ(b.fps, kFps);
+    return parts;
+  }
+
   fs::path directory_;
 };
 
 // Three uneven segments, one of a single frame.
 TEST_F(VideoJoinTest, JoinedSegmentsDecodeAsTheWholeVideo) {
   const std::string whole = encode("whole.mp4", 0, kFrames, false);
-  const std::vector<std::string> parts = {encode("a.mp4", 0, 17), encode("b.mp4", 17, 18),
-                                          encode("c.mp4", 18, kFrames)};
-  const VideoSegmentInfo b = read_segment_info(parts[1]);
-  ASSERT_EQ(b.error, "");
-  EXPECT_EQ(b.first_frame, 17);
-  EXPECT_EQ(b.frames, 1);
-  EXPECT_EQ(b.fps, kFps);
+  const std::vector<std::string> parts = three_segments(".mp4");
   ASSERT_EQ(join_videos(parts, path("joined.mp4")), "");
   const testing::DecodedVideo joined = read_video(path("joined.mp4"));
   const testing::DecodedVideo reference = read_video(whole);
@@ -107,13 +115,7 @@ TEST_F(VideoJoinTest, JoinedSegmentsDecodeAsTheWholeVideo) {
 
 // VP9 segments in WebM, one of a single frame, join into a WebM of the whole's frames and times.
 TEST_F(VideoJoinTest, WebmSegmentsJoinIntoTheWholeWebm) {
-  const std::vector<std::string> parts = {encode("a.webm", 0, 17), encode("b.webm", 17, 18),
-                                          encode("c.webm", 18, kFrames)};
-  const VideoSegmentInfo b = read_segment_info(parts[1]);
-  ASSERT_EQ(b.error, "");
-  EXPECT_EQ(b.first_frame, 17);
-  EXPECT_EQ(b.frames, 1);
-  EXPECT_EQ(b.fps, kFps);
+  const std::vector<std::string> parts = three_segments(".webm");
   ASSERT_EQ(join_videos(parts, path("joined.webm")), "");
   const testing::DecodedVideo joined = read_video(path("joined.webm"));
   ASSERT_EQ(joined.error, "");
