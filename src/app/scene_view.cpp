@@ -233,7 +233,10 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
 
 Result<std::int64_t> SimulatedFrames::seek(std::int64_t frame) {
   const std::int64_t before = simulation_.step_count();
-  const double t = static_cast<double>(frame) / scene_.fps;  // s, as view() computes it
+  // Not past the first state view(frame) needs: its trails' past comes first.
+  const std::int64_t first_needed =
+      overlays_ ? std::max<std::int64_t>(0, frame - overlays_->frames_of_history()) : frame;
+  const double t = static_cast<double>(first_needed) / scene_.fps;  // s, as view() computes it
   const Result<std::vector<physics::BodyState>> states =
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};

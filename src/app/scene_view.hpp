@@ -65,9 +65,10 @@ class SimulatedFrames final : public FrameSource {
   // `scene` and `framing` must outlive it.
   SimulatedFrames(const scene::Scene& scene, const Framing& framing, StopRequested stop_requested);
   Result<render::FrameView> view(std::int64_t frame) override;
-  // Runs the physics up to frame `frame`'s time, drawing nothing: where a chunk starts, so that
-  // it pays only for the steps before its first frame. Returns the steps taken; view(frame)
-  // then takes none and shows the same state.
+  // Runs the physics up to frame `frame`'s time, or with trails to the oldest frame of their
+  // past, drawing nothing: where a chunk starts, so that it pays only for the steps before its
+  // first frame. Returns the steps taken; view(frame) then takes at most the trails' past and
+  // shows what a render from frame 0 shows.
   Result<std::int64_t> seek(std::int64_t frame);
   const sim::Simulation& simulation() const { return simulation_; }
 

@@ -147,6 +147,12 @@ length = 0.5
   SimulatedFrames whole(scene, *framing, [] { return false; });
   SimulatedFrames chunk(scene, *framing, [] { return false; });
   for (std::int64_t k = 0; k < 40; ++k) ASSERT_TRUE(whole.view(k));
+  // As a chunk's render runs it: the physics first, without drawing, to the trail's oldest point.
+  const Result<std::int64_t> steps = chunk.seek(40);
+  ASSERT_TRUE(steps);
+  // 0.5 s at 60 fps before frame 40 is frame 10: the first step at or past 1/6 s, dt 0.005 s.
+  EXPECT_EQ(*steps, 34);
+  EXPECT_EQ(chunk.simulation().step_count(), 34);
   for (const std::int64_t k : {40, 41}) {
     const Result<render::FrameView> a = whole.view(k), b = chunk.view(k);
     ASSERT_TRUE(a && b);
