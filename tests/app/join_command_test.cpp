@@ -176,6 +176,26 @@ TEST_F(JoinCommand, ChunkIOfNRendersLineIOfThePlanAndTheChunksJoin) {
   EXPECT_EQ(tumble::testing::read_video(path("joined/spin.mp4")).pictures.size(), 15u);
 }
 
+// A trail shows the body's past: a chunk must draw the trail a render from frame 0 draws, though
+// it starts its physics late (to the trail's oldest frame, not its own first).
+TEST_F(JoinCommand, AChunkDrawsTheTrailOfTheWholeRender) {
+  const std::string trail_scene =
+      write("trail.toml",
+            tumble::testing::spin_scene(
+                320, 180, std::string("name = \"cube\"\n") + tumble::testing::kTorqueX,
+                "[camera]\nposition = [0.0, 1.5, 4.0]\nlook_at = [0.0, 0.0, 0.0]\n[ground]\n"
+                "height = -1.5\n[[overlays]]\nkind = \"trail\"\nbody = \"cube\"\n"
+                "point = [0.5, 0.5, 0.5]\nlength = 0.3\n"))
+          .string();
+  const fs::path whole = render("whole", "--no-video", trail_scene);
+  const fs::path chunk = render("chunk", "--no-video --frames 12:15", trail_scene);
+  for (const char* name : {"frame_00012.png", "frame_00014.png"}) {
+    // Not EXPECT_EQ: a failure would print two PNGs' bytes.
+    EXPECT_TRUE(read_file(chunk / "frames" / name) == read_file(whole / "frames" / name))
+        << name << ": the chunk's frame is not the whole render's";
+  }
+}
+
 // A render that writes MP4 and WebM joins both: the WebM's VP9 is stream-copied as the MP4's H.264
 // is, and decodes to the whole render's frame count and times, each frame near its PNG.
 TEST_F(JoinCommand, ChunksWithAnMp4AndAWebmJoinIntoBoth) {
