@@ -182,6 +182,10 @@ TEST(OverlayGeometry, StraightRunsOfALineAreOneBand) {
   Polyline bent = straight;
   bent.points[20].y() = 0.01;  // about 1.7 px off the chord at 720p
   EXPECT_EQ(bands(bent), 4u);  // as the kink
+  Polyline through_camera = straight;
+  through_camera.points[40].z() = 6.0;  // behind the camera at z = 5
+  // Points 0-39 one band; the last segment its own, cut at the near plane.
+  EXPECT_EQ(bands(through_camera), 2u);
 
   Polyline circle;  // 121 points of a circle of 1 m seen face on: about 270 px across
   for (int i = 0; i <= 120; ++i) {
