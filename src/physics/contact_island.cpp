@@ -6,28 +6,6 @@
 namespace tumble::physics {
 namespace {
 
-// Passes of the position projection; each moves the bodies by what is left inside.
-constexpr int kProjectionIterations = 4;
-// A resting solve ends when a pass changes no impulse by more than this fraction of the largest:
-// the velocity left is then about 1e-7 of what gravity adds in a step, far below what shows.
-constexpr double kRestingTolerance = 1e-6;
-
-// A resting solve ends after a pass (warm-started, its impulses change by less than the
-// tolerance), so what it leaves of a velocity the physics makes exactly zero (a box at rest on a
-// face) shrinks by a constant factor each step and would go on forever, into subnormal numbers,
-// which the FPU handles up to 100 times slower (an awake resting cube's step took about 1.7 times
-// as long). A momentum component below this size (kg m/s, or kg m²/s) is that residue and is set to
-// zero, 80 orders of magnitude below anything a scene can show and below the round-off of any
-// momentum above 1e-84; its square is still a normal number, so no norm of it is subnormal either.
-constexpr double kNegligibleMomentum = 1e-100;
-
-Vec3 without_residue(Vec3 momentum) {
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(momentum[i]) < kNegligibleMomentum) momentum[i] = 0.0;
-  }
-  return momentum;
-}
-
 Vec3 arm(const ProjectedPose& pose, const Vec3& anchor) {
   return pose.primary.orientation * anchor;
 }
@@ -63,6 +41,13 @@ double project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
 }
 
 }  // namespace
+
+Vec3 without_residue(Vec3 momentum) {
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(momentum[i]) < kNegligibleMomentum) momentum[i] = 0.0;
+  }
+  return momentum;
+}
 
 double project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions) {
   double deepest = 0.0;

@@ -77,10 +77,17 @@ void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
                                   std::vector<FrictionPatch>& patches,
                                   std::vector<PositionPoint>& positions);
 
-// Step 3 of step_with_planes for a body that touches planes at the end of `advance`.
+// Step 3 of step_with_planes for a body that touches planes at the end of `advance`:
+// physics/plane_rest.hpp's solve of one body, or the island solve (contact_island.hpp) for the
+// steps that one does not take (a bounce).
 BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
                          const std::vector<Plane>& planes, const ContactSettings& settings,
                          PlaneContacts& contacts);
+// The same step through the island solve always: what rest_on_planes gives, to rounding, and what
+// contact_test compares it with.
+BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model,
+                                   const PlaneAdvance& advance, const std::vector<Plane>& planes,
+                                   const ContactSettings& settings, PlaneContacts& contacts);
 
 // Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
 // 1. the free step; if no corner ends inside a plane, that is the step (a body that touches
