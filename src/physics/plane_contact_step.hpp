@@ -84,7 +84,7 @@ BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const Pl
                          const std::vector<Plane>& planes, const ContactSettings& settings,
                          PlaneContacts& contacts);
 // The same step through the island solve always: what rest_on_planes gives, to rounding, and what
-// contact_test compares it with.
+// plane_rest_test compares it with.
 BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model,
                                    const PlaneAdvance& advance, const std::vector<Plane>& planes,
                                    const ContactSettings& settings, PlaneContacts& contacts);
