@@ -25,8 +25,8 @@ struct Body {
   Vec3 turn(const Vec3& moment) const {
     return isotropic ? Vec3(scalar_inverse_inertia * moment) : Vec3(inverse_inertia * moment);
   }
-  // An impulse λ along d at a point whose moment arm across d is `moment`: ImpulseDirection's
-  // rule with no second body.
+  // An impulse λ along a row, given its d and I⁻¹(r × d): ImpulseDirection's rule with no
+  // second body.
   void push(const Vec3& linear, const Vec3& turn, double impulse) {
     velocity += inverse_mass * (impulse * linear);
     angular_velocity += impulse * turn;
