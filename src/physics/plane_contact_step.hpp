@@ -83,7 +83,7 @@ void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
 BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
                          const std::vector<Plane>& planes, const ContactSettings& settings,
                          PlaneContacts& contacts);
-// The same step through the island solve always: what rest_on_planes gives, to rounding, and what
+// The same step through the island solve always: what rest_on_planes gives, to the bit, and what
 // plane_rest_test compares it with.
 BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model,
                                    const PlaneAdvance& advance, const std::vector<Plane>& planes,

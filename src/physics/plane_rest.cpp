@@ -221,11 +221,16 @@ bool rest_alone_on_planes(const BodyModel& model, const BodyState& end, const Ma
   const double mass = constants.inverse_mass > 0.0 ? 1.0 / constants.inverse_mass : 0.0;
   PrimaryState primary = end.primary();
   primary.momentum = without_residue(primary.momentum + mass * dv);
-  primary.angular_momentum = without_residue(
-      primary.angular_momentum +
-      (constants.isotropic
-           ? Vec3(constants.inertia.x() * dw)
-           : Vec3(rotation * constants.inertia.asDiagonal() * rotation.transpose() * dw)));
+  Vec3 angular_impulse = constants.inertia.x() * dw;
+  if (!constants.isotropic) {
+    // Assigned, not constructed, as SolverBody::from does: Eigen evaluates a product it assigns
+    // through a temporary and one it constructs from in place, and the two differ in the last
+    // bit; so the same bits as the island solve.
+    Mat3 inertia;
+    inertia = rotation * constants.inertia.asDiagonal() * rotation.transpose();
+    angular_impulse = inertia * dw;
+  }
+  primary.angular_momentum = without_residue(primary.angular_momentum + angular_impulse);
   primary.position += weight * dv;
   primary.orientation = rotated(primary.orientation, weight * dw);
 

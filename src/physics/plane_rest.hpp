@@ -2,12 +2,11 @@
 // corner of walls): step 3 of step_with_planes, and of step_world for an island of one body.
 //
 // It is the island solve of physics/contact_island.hpp for that one case, with the same rows, the
-// same warm starting, the same passes and tolerance, the same pose update and projection, so it
-// gives the same states (to rounding: plane_rest_test compares the two). What it drops is what one
-// body against static planes does not need: a second body in every row, lists of rows grown per
-// step, pointers back to each point's manifold, the island's copies of the states. A resting
-// cube's whole step (rk4, dt = 1/60 s) took 4685 instructions so, where it took 6488 through the
-// island solve (a free rk4 step takes 1150: bench/step_instructions.cpp).
+// same warm starting, the same passes and tolerance, the same pose update and projection, in the
+// same order, so it gives the same states to the bit (plane_rest_test compares the two). What it
+// drops is what one body against static planes does not need: a second body in every row, lists of
+// rows grown per step, pointers back to each point's manifold, the island's copies of the states;
+// README's "Speed against error" has what that saves.
 #pragma once
 
 #include <vector>
