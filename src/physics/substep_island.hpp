@@ -39,7 +39,7 @@ inline constexpr int kSubsteps = 4;  // Box2D's default for a 60 Hz step
 // lets it move before the solve's one pass reaches that contact. On the 1000-box pile of
 // contact_bench (its first 6 s), a fixed 4 sub-steps left 846 pair points more than 1 cm deep
 // and the deepest 9.9 cm, 8 left 49 and 5.5 cm, 16 left 2 and 2.9 cm (a box under an impact, in
-// the floor). With this rule (and the planes' corners found again, world_step.cpp) one sub-step
+// the floor). With this rule (and the planes' corners found again, island_solve.cpp) one sub-step
 // per 2 cm up to 16 took the whole 20 s run to 1.6 cm deep at most; one per 1 cm up to 32 to
 // 0.84 cm (seeds 2 and 3: 0.83 and 0.92 cm), the pour's steps costing about twice as much. Once
 // the pile settles its islands take four: the median step is unchanged.

@@ -59,7 +59,7 @@ struct PairContact {
   PairStamp stamp;
 };
 
-// A pair's place in an island's lists (world_step.cpp): its points in `slots` slots from
+// A pair's place in an island's lists (island_solve.cpp): its points in `slots` slots from
 // `first`, its friction patch, and how far its bodies can close on each other in the step.
 struct PairRows {
   std::uint32_t pair = 0;   // index into WorldContacts::found
@@ -69,7 +69,7 @@ struct PairRows {
   double reach = 0.0;  // m
 };
 
-// A body's place against one plane in a fast island's lists (world_step.cpp): kMaxManifoldPoints
+// A body's place against one plane in a fast island's lists (island_solve.cpp): kMaxManifoldPoints
 // slots from `first`, and its friction patch, found again at each sub-step.
 struct PlaneRows {
   std::uint32_t body = 0;   // the body's index in the world
