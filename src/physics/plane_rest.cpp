@@ -12,15 +12,11 @@ namespace {
 
 constexpr int kMostPoints = kMostRestingPlanes * kMaxManifoldPoints;
 
-// The body's velocities through the solve, and what the solve needs of its mass: its world
-// inverse inertia is a scalar for a cube (constants.isotropic), else the rotated tensor.
-struct Body {
-  Vec3 velocity;
-  Vec3 angular_velocity;
-  double inverse_mass;
+// The body through the solve: the island solve's SolverBody (velocities, mass, world tensors),
+// and for a cube (constants.isotropic) its inverse inertia as the scalar it is in every frame.
+struct Body : SolverBody {
   bool isotropic;
   double scalar_inverse_inertia;
-  Mat3 inverse_inertia;
 
   Vec3 turn(const Vec3& moment) const {
     return isotropic ? Vec3(scalar_inverse_inertia * moment) : Vec3(inverse_inertia * moment);
@@ -122,15 +118,8 @@ bool rest_alone_on_planes(const BodyModel& model, const BodyState& end, const Ma
                           const ContactSettings& settings, PlaneContacts& contacts,
                           BodyState& out) {
   const BodyConstants& constants = model.constants;
-  Body body{.velocity = end.velocity(),
-            .angular_velocity = end.angular_velocity(),
-            .inverse_mass = constants.inverse_mass,
-            .isotropic = constants.isotropic,
-            .scalar_inverse_inertia = constants.inverse_inertia.x(),
-            .inverse_inertia = Mat3::Zero()};
-  if (!constants.isotropic) {
-    body.inverse_inertia = rotation * constants.inverse_inertia.asDiagonal() * rotation.transpose();
-  }
+  Body body{SolverBody::from(end, constants, rotation), constants.isotropic,
+            constants.inverse_inertia.x()};
 
   // The rows, warm-started from the last step's manifolds (the same corners, the same plane's
   // friction); nothing is written until the step is known to be one this function takes.
@@ -218,19 +207,10 @@ bool rest_alone_on_planes(const BodyModel& model, const BodyState& end, const Ma
   // The pose moved by what the impulses did over the step, its momenta by the impulses.
   const Vec3 dv = body.velocity - end.velocity();
   const Vec3 dw = body.angular_velocity - end.angular_velocity();
-  const double mass = constants.inverse_mass > 0.0 ? 1.0 / constants.inverse_mass : 0.0;
   PrimaryState primary = end.primary();
-  primary.momentum = without_residue(primary.momentum + mass * dv);
-  Vec3 angular_impulse = constants.inertia.x() * dw;
-  if (!constants.isotropic) {
-    // Assigned, not constructed, as SolverBody::from does: Eigen evaluates a product it assigns
-    // through a temporary and one it constructs from in place, and the two differ in the last
-    // bit; so the same bits as the island solve.
-    Mat3 inertia;
-    inertia = rotation * constants.inertia.asDiagonal() * rotation.transpose();
-    angular_impulse = inertia * dw;
-  }
-  primary.angular_momentum = without_residue(primary.angular_momentum + angular_impulse);
+  primary.momentum = without_residue(primary.momentum + body.linear_impulse(end.velocity()));
+  primary.angular_momentum =
+      without_residue(primary.angular_momentum + body.angular_impulse(end.angular_velocity()));
   primary.position += weight * dv;
   primary.orientation = rotated(primary.orientation, weight * dw);
 
