@@ -8,7 +8,7 @@
 #include <iterator>
 #include <string>
 
-#include "box_runs.hpp"
+#include "bench/box_runs.hpp"
 #include "physics/integrators.hpp"
 #include "physics/plane_contact_step.hpp"
 #include "physics/world_step.hpp"

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string_view>
 
-#include "box_runs.hpp"
+#include "bench/box_runs.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/image_diff.hpp"
+#include "diff/image_diff.hpp"
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
 #include "support/video_reader.hpp"

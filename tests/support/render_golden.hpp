@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "io/image_diff.hpp"
+#include "diff/image_diff.hpp"
 #include "io/png_io.hpp"
 #include "render/renderer.hpp"
 

@@ -1,0 +1,211 @@
+#include "bench/jobs/bench_contact.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "sys/child_process.hpp"
+#include "io/json_text.hpp"
+#include "pipeline/progress.hpp"
+#include "bench/pile.hpp"
+#include "bench/pile_run.hpp"
+#include "bench/pile_run_stream.hpp"
+#include "bench/pile_table.hpp"
+#include "bench/tumble_pile.hpp"
+#include "io/atomic_file.hpp"
+
+namespace tumble::app {
+namespace {
+
+namespace fs = std::filesystem;
+using bench::Pile;
+using bench::PileRun;
+
+// The folder of --out, checked before a run that may take minutes: "" when it can be written.
+std::string folder_problem(const fs::path& folder) {
+  std::error_code error;
+  if (!fs::exists(folder, error)) {
+    return "--out: no folder " + folder.string() + " (create it first)";
+  }
+  if (!fs::is_directory(folder, error)) return "--out: " + folder.string() + " is not a folder";
+  // A file opened and dropped unrenamed: AtomicFile removes it again.
+  io::AtomicFile probe((folder / ".tumble-write-test").string());
+  return probe.ok() ? "" : probe.error();
+}
+
+// "0.5" for 0.5 s: 17 digits, so that contact_bench parses the double tumble has.
+std::string exact(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// Bullet's column, from contact_bench: "" in `error` when it ran whole.
+struct PeerColumn {
+  PileRun run;
+  std::string error;
+};
+
+PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, const Pile& pile,
+                    Progress& progress) {
+  bench::PileRunReader reader(pile);
+  const std::string ended = run_reading_lines(
+      peer.string(),
+      {"--engine", "bullet", "--stream", "--bodies", std::to_string(options.bodies), "--seconds",
+       exact(options.seconds), "--seed", std::to_string(options.seed)},
+      [&](std::string_view line) {
+        if (!reader.read(line)) return false;
+        progress.update(pile.steps + static_cast<std::int64_t>(reader.run().step_ms.size()));
+        return true;
+      });
+  PeerColumn column{reader.run(), ""};
+  if (!reader.error().empty()) {
+    column.error = peer.string() + " wrote what tumble cannot read: " + reader.error();
+  } else if (!ended.empty()) {
+    column.error = ended;
+  } else if (!reader.complete()) {
+    column.error = peer.string() + " ended before its run was whole";
+  }
+  return column;
+}
+
+std::string engine_json(const PileRun& run, double dt) {
+  const std::size_t peak = bench::peak_contact_step(run);
+  return "{\n    \"engine\": " + json_string(run.engine) +
+         ",\n    \"steps\": " + std::to_string(run.step_ms.size()) +
+         ",\n    \"median_ms_per_step\": " + json_number(bench::median_step_ms(run)) +
+         ",\n    \"median_cpu_ms_per_step\": " + json_number(bench::median_step_cpu_ms(run)) +
+         ",\n    \"ms_per_step_at_peak_contacts\": " +
+         json_number(bench::ms_at_peak_contacts(run)) + ",\n    \"peak_contacts\": " +
+         (run.contacts.empty() ? "null" : std::to_string(run.contacts[peak])) +
+         ",\n    \"peak_contacts_t_s\": " + json_number(bench::peak_contact_time(run, dt)) +
+         ",\n    \"contacts_at_end\": " +
+         (run.contacts.empty() ? "null" : std::to_string(run.contacts.back())) +
+         ",\n    \"largest_penetration_m\": " + json_number(run.largest_penetration_m) +
+         ",\n    \"boxes_out_of_bin\": " + std::to_string(run.escaped) +
+         ",\n    \"largest_speed_at_end_m_per_s\": " + json_number(run.largest_final_speed) +
+         ",\n    \"step_ms\": " + json_array(run.step_ms) +
+         ",\n    \"step_cpu_ms\": " + json_array(run.step_cpu_ms) +
+         ",\n    \"contacts\": " + json_array(run.contacts) +
+         ",\n    \"depth_m\": " + json_array(run.depth_m) +
+         ",\n    \"top_speed_m_per_s\": " + json_array(run.top_speed) + "\n  }";
+}
+
+std::string report_json(const BenchContactOptions& options, const Pile& pile, const PileRun& tumble,
+                        const PileRun& bullet) {
+  const bench::StepTimeRatios ratios = bench::step_time_ratios(tumble, bullet);
+  return "{\n  \"pile\": {\"summary\": " + json_string(pile.summary) +
+         ", \"bodies\": " + std::to_string(options.bodies) +
+         ", \"seed\": " + std::to_string(options.seed) +
+         ", \"seconds\": " + json_number(options.seconds) + ", \"dt\": " + json_number(pile.dt) +
+         ", \"steps\": " + std::to_string(pile.steps) +
+         "},\n  \"tumble\": " + engine_json(tumble, pile.dt) +
+         ",\n  \"bullet\": " + engine_json(bullet, pile.dt) +
+         ",\n  \"tumble_over_bullet\": {\"median_ms_per_step\": " + json_number(ratios.median_ms) +
+         ", \"median_cpu_ms_per_step\": " + json_number(ratios.median_cpu_ms) +
+         ", \"ms_per_step_at_peak_contacts\": " + json_number(ratios.ms_at_peak_contacts) +
+         "}\n}\n";
+}
+
+// One row per step: its end time and each engine's figures for it.
+void write_csv(std::FILE* file, const Pile& pile, const PileRun& tumble, const PileRun& bullet) {
+  std::fputs("step,t_s", file);
+  for (const char* engine : {"tumble", "bullet"}) {
+    std::fprintf(file, ",%s_ms,%s_cpu_ms,%s_contacts,%s_depth_m,%s_top_speed_m_per_s", engine,
+                 engine, engine, engine, engine);
+  }
+  std::fputc('\n', file);
+  for (std::size_t n = 0; n < static_cast<std::size_t>(pile.steps); ++n) {
+    std::fprintf(file, "%zu,%.17g", n, static_cast<double>(n + 1) * pile.dt);
+    for (const PileRun* run : {&tumble, &bullet}) {
+      std::fprintf(file, ",%.17g,%.17g,%d,%.17g,%.17g", run->step_ms[n], run->step_cpu_ms[n],
+                   run->contacts[n], run->depth_m[n], run->top_speed[n]);
+    }
+    std::fputc('\n', file);
+  }
+}
+
+// Writes the JSON and the CSV, each whole or not at all, and lists them on `out`.
+bool write_files(const fs::path& folder, const BenchContactOptions& options, const Pile& pile,
+                 const PileRun& tumble, const PileRun& bullet, std::FILE* out, std::FILE* err) {
+  const fs::path json = folder / "contact_bench.json";
+  const fs::path csv = folder / "contact_bench.csv";
+  io::AtomicFile json_file(json.string());
+  if (json_file.ok()) {
+    std::fputs(report_json(options, pile, tumble, bullet).c_str(), json_file.stream());
+  }
+  io::AtomicFile csv_file(csv.string());
+  if (csv_file.ok()) write_csv(csv_file.stream(), pile, tumble, bullet);
+  bool ok = true;
+  for (io::AtomicFile* file : {&json_file, &csv_file}) {
+    if (!file->ok() || !file->commit()) {
+      std::fprintf(err, "tumble: %s\n", file->error().c_str());
+      ok = false;
+    }
+  }
+  if (ok) std::fprintf(out, "%s\n%s\n", json.c_str(), csv.c_str());
+  return ok;
+}
+
+}  // namespace
+
+fs::path contact_bench_path() {
+  std::error_code ignored;
+  return fs::read_symlink("/proc/self/exe", ignored).parent_path() / "contact_bench";
+}
+
+int run_bench_contact(const BenchContactOptions& options, std::FILE* out, std::FILE* err) {
+  const fs::path folder = options.out;
+  if (!options.out.empty()) {
+    if (const std::string problem = folder_problem(folder); !problem.empty()) {
+      std::fprintf(err, "tumble: %s\n", problem.c_str());
+      return kExitBadInput;
+    }
+  }
+  const fs::path peer = contact_bench_path();
+  const bool have_peer = ::access(peer.c_str(), X_OK) == 0;
+  if (!have_peer) {
+    // Said before the run, which can take minutes, and not only after it.
+    std::fprintf(err,
+                 "tumble: bench contact: no contact_bench at %s (it is built beside tumble, with "
+                 "Bullet when CMake finds libbullet-dev): Bullet's column is left out and no "
+                 "files are written; tumble's column is still printed\n",
+                 peer.c_str());
+  }
+
+  const Pile pile = bench::make_pile(options.bodies, options.seed, options.seconds);
+  std::fprintf(out, "pile: %s, one thread\n", pile.summary.c_str());
+  std::fflush(out);
+  Progress progress(static_cast<std::int64_t>(pile.steps) * (have_peer ? 2 : 1), options.quiet, err,
+                    "steps");
+  std::vector<PileRun> runs;
+  runs.push_back(bench::run_pile_in_tumble(pile, [&](const PileRun& so_far) {
+    progress.update(static_cast<std::int64_t>(so_far.step_ms.size()));
+  }));
+  std::string peer_error;
+  if (have_peer) {
+    PeerColumn bullet = run_peer(peer, options, pile, progress);
+    peer_error = bullet.error;
+    if (peer_error.empty()) runs.push_back(std::move(bullet.run));
+  }
+  progress.finish();
+
+  bench::print_pile_table(out, runs, pile.dt);
+  if (!have_peer) return kExitBadInput;
+  if (!peer_error.empty()) {
+    std::fprintf(err,
+                 "tumble: bench contact: Bullet's column: %s; tumble's column is printed above, "
+                 "no files are written\n",
+                 peer_error.c_str());
+    return kExitBadInput;
+  }
+  if (!options.out.empty() && !write_files(folder, options, pile, runs[0], runs[1], out, err)) {
+    return kExitBadInput;
+  }
+  return kExitOk;
+}
+
+}  // namespace tumble::app

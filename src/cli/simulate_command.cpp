@@ -1,0 +1,108 @@
+#include "cli/simulate_command.hpp"
+
+#include <stdio_ext.h>
+
+#include <cerrno>
+#include <cstring>
+#include <memory>
+#include <variant>
+
+#include "common/exit_codes.hpp"
+#include "sys/interrupt.hpp"
+#include "scene/stability_report.hpp"
+#include "io/atomic_file.hpp"
+#include "io/state_csv.hpp"
+#include "physics/rigid_body.hpp"
+#include "scene/scene_builder.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace tumble::app {
+namespace {
+
+io::StateRow state_row(const physics::BodyState& s) {
+  const physics::Vec3& x = s.position();
+  const physics::Vec3& v = s.velocity();
+  const physics::Quat& q = s.orientation();
+  const physics::Vec3& w = s.angular_velocity();
+  const physics::Vec3& p = s.momentum();
+  const physics::Vec3& l = s.angular_momentum();
+  return {
+      x.x(), x.y(), x.z(), v.x(), v.y(), v.z(), q.w(), q.x(), q.y(), q.z(),
+      w.x(), w.y(), w.z(), p.x(), p.y(), p.z(), l.x(), l.y(), l.z(), physics::kinetic_energy(s)};
+}
+
+bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation& simulation) {
+  bool ok = true;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    ok = io::write_state_row(out, simulation.time(), scene.bodies[i].name,
+                             state_row(simulation.current()[i])) &&
+         ok;
+  }
+  return ok;
+}
+
+}  // namespace
+
+int run_simulate(const SimulateOptions& options, std::FILE* err) {
+  install_interrupt_handlers();  // from the start: a signal is acted on at the first step
+  const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
+  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
+    std::fprintf(err, "tumble: %s\n", error->message.c_str());
+    return kExitBadInput;
+  }
+  const scene::Scene& scene = std::get<scene::Scene>(loaded);
+  print_stability_warnings(scene, err);
+
+  std::unique_ptr<io::AtomicFile> file;
+  double time = 0.0;  // s: how far the run got
+  // Either leaves the file unwritten: AtomicFile removes its temporary file when not committed.
+  const auto stopped = [&](int signal) {
+    std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", signal_name(signal),
+                 time, scene.duration,
+                 file ? (options.out + " was not written").c_str() : "output incomplete");
+    // Rows still buffered for standard output are dropped: flushing them at exit could block
+    // on the very pipe the signal cut short.
+    if (!file) __fpurge(stdout);
+    return kExitInterrupted + signal;
+  };
+  std::FILE* out = stdout;
+  if (options.out != "-") {
+    file = std::make_unique<io::AtomicFile>(options.out);
+    if (const int signal = interrupt_signal()) return stopped(signal);  // a FIFO's open, cut short
+    if (!file->ok()) {
+      std::fprintf(err, "tumble: %s\n", file->error().c_str());
+      return kExitBadInput;
+    }
+    out = file->stream();
+  }
+
+  sim::Simulation simulation = scene::build_simulation(scene);
+  const std::int64_t steps = scene::step_count(scene);
+  bool ok = io::write_state_header(out) && write_rows(out, scene, simulation);
+  for (std::int64_t n = 1; n <= steps && ok; ++n) {
+    simulation.step();
+    time = simulation.time();
+    if (const int signal = interrupt_signal()) return stopped(signal);
+    if (const auto& blow_up = simulation.blow_up()) {
+      std::fprintf(err, "tumble: %s\n", blow_up_message(scene, *blow_up).c_str());
+      return kExitBadInput;
+    }
+    if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
+  }
+  // A write blocked on a full pipe and cut short by the signal fails with EINTR: a stop too,
+  // before a flush could block on that pipe again.
+  if (const int signal = interrupt_signal()) return stopped(signal);
+  // commit() also says why an earlier write failed; a failed file is never put in place.
+  ok = (file ? file->commit() : std::fflush(out) == 0) && ok;
+  if (ok) return kExitOk;
+  const int reason = errno;
+  if (const int signal = interrupt_signal()) return stopped(signal);  // during that last flush
+  if (file) {
+    std::fprintf(err, "tumble: %s\n", file->error().c_str());
+  } else {
+    std::fprintf(err, "tumble: error writing to standard output: %s\n", std::strerror(reason));
+  }
+  return kExitBadInput;
+}
+
+}  // namespace tumble::app

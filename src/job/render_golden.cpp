@@ -1,0 +1,55 @@
+#include "job/render_golden.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+#include "diff/diff_inputs.hpp"
+
+namespace tumble::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Whether `path` is `folder` or lies below it, symbolic links and ".." resolved.
+bool inside(const fs::path& path, const fs::path& folder) {
+  std::error_code error;
+  const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
+  const fs::path container = fs::weakly_canonical(fs::absolute(folder), error);
+  auto [end, unused] =
+      std::mismatch(container.begin(), container.end(), resolved.begin(), resolved.end());
+  return end == container.end();
+}
+
+}  // namespace
+
+std::string golden_problem(const DiffCommandOptions& golden, const RenderJob& job) {
+  if (const Result<SequenceOptions> settings = diff_settings(golden); !settings) {
+    return settings.error();
+  }
+  DiffInput input;
+  if (std::string error = resolve_diff_input(golden.first_path, input); !error.empty()) {
+    return "--golden " + error;
+  }
+  if (input.kind == DiffInputKind::png) {
+    return "--golden " + golden.first_path +
+           ": expected a render's folder, a folder of frames or a video, not one PNG";
+  }
+  if (inside(golden.first_path, job.directory)) {
+    return "--golden " + golden.first_path + " lies in " + job.directory.string() +
+           ", the folder this render replaces: keep goldens elsewhere or render with -o";
+  }
+  return {};
+}
+
+int compare_with_golden(DiffCommandOptions golden, const RenderJob& job, std::FILE* out,
+                        std::FILE* err) {
+  golden.second_path =
+      job.scene.output.frames ? job.directory.string() : job.video_path(job.directory);
+  // A whole render is compared whole, so that a golden with more frames is a mismatch; a range
+  // is compared over the range it rendered.
+  if (job.first != 0 || job.end != job.frame_count) golden.frames = {{job.first, job.end}};
+  return run_diff(golden, out, err);
+}
+
+}  // namespace tumble::app

@@ -1,0 +1,314 @@
+#include "job/render_job.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include "pipeline/contact_sheet.hpp"
+#include "pipeline/poster_sink.hpp"
+#include "job/quality_preset.hpp"
+#include "view/scene_view.hpp"
+#include "render/renderer.hpp"
+#include "scene/video_rules.hpp"
+
+namespace tumble::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The scene with the command line's --quality and --format, checked.
+Result<scene::Scene> with_choices(const RenderOptions& options, scene::Scene scene) {
+  if (options.quality) {
+    const std::optional<QualityPreset> preset = quality_preset(*options.quality);
+    if (!preset) {
+      return Error{"--quality: unknown preset \"" + *options.quality + "\" (" +
+                   quality_preset_names() + ")"};
+    }
+    scene.render.width = preset->width;
+    scene.render.height = preset->height;
+    scene.fps = preset->fps;
+  }
+  if (options.formats.empty()) return scene;
+  scene.output.formats.clear();
+  for (const std::string& name : options.formats) {
+    const std::optional<io::VideoFormat> format = common::video_format_named(name);
+    if (!format) return Error{"--format: unknown format \"" + name + "\" (mp4, webm, gif)"};
+    if (std::find(scene.output.formats.begin(), scene.output.formats.end(), *format) ==
+        scene.output.formats.end()) {
+      scene.output.formats.push_back(*format);
+    }
+  }
+  return scene;
+}
+
+void apply_overrides(const RenderOptions& options, scene::Scene& scene) {
+  if (options.width) scene.render.width = *options.width;
+  if (options.height) scene.render.height = *options.height;
+  if (options.fps) scene.fps = *options.fps;
+  if (options.msaa) scene.render.msaa = *options.msaa;
+  if (options.duration) scene.duration = *options.duration;
+  if (options.preset) scene.output.preset = *options.preset;
+  if (options.backend) scene.render.backend = *options.backend;
+  if (options.egl_device) scene.render.egl_device = *options.egl_device;
+  scene.output.frames = scene.output.frames && options.frames;
+  scene.output.video = scene.output.video && options.video;
+}
+
+// Every output the job asks for, opened in `folder`.
+Result<std::vector<std::unique_ptr<FrameSink>>> open_sinks(const RenderJob& job,
+                                                           const fs::path& folder) {
+  std::vector<std::unique_ptr<FrameSink>> sinks;
+  const scene::Scene& scene = job.scene;
+  if (scene.output.frames) {
+    Result<std::unique_ptr<FrameSink>> png = PngFrames::open(job.frames_path(folder), job.png);
+    if (!png) return Error{png.error()};
+    sinks.push_back(std::move(*png));
+  }
+  for (const io::VideoFormat format :
+       scene.output.video ? scene.output.formats : std::vector<io::VideoFormat>{}) {
+    const io::VideoSettings settings{.format = format,
+                                     .width = scene.render.width,
+                                     .height = scene.render.height,
+                                     .fps = scene.fps,
+                                     .crf = scene.output.crf,
+                                     .loop = scene.output.gif_loop,
+                                     .alpha = scene.render.transparent,
+                                     .segment = job.partial(),
+                                     .first_frame = job.partial() ? job.first : 0,
+                                     .preset = scene.output.preset};
+    const std::string path = job.video_path(folder, format);
+    Result<std::unique_ptr<FrameSink>> video = VideoSink::open(path, settings);
+    if (!video) return Error{video.error()};
+    sinks.push_back(std::move(*video));
+  }
+  if (job.stills) {
+    sinks.push_back(std::make_unique<PosterSink>((folder / "poster.png").string(),
+                                                 scene::poster_frame(scene), job.png));
+    sinks.push_back(std::make_unique<ContactSheet>((folder / "contact_sheet.png").string(),
+                                                   job.first, job.end, scene.fps, job.png));
+  }
+  return sinks;
+}
+
+// The frames the options ask for out of the scene's `total`: all, --frames A:B, or --chunk I/N.
+Result<FrameRange> frame_range(const RenderOptions& options, std::int64_t total) {
+  if (options.chunk) {
+    if (options.first_frame || options.end_frame) {
+      return Error{"--chunk and --frames both choose the frames: give one of them"};
+    }
+    const Result<std::vector<FrameRange>> plan = plan_chunks(total, options.chunk->count);
+    if (!plan)
+      return Error{"--chunk " + std::to_string(options.chunk->index) + "/" +
+                   std::to_string(options.chunk->count) + ": " + plan.error()};
+    return (*plan)[static_cast<std::size_t>(options.chunk->index - 1)];
+  }
+  const FrameRange range{options.first_frame.value_or(0), options.end_frame.value_or(total)};
+  if (range.first < 0 || range.end > total || range.first >= range.end) {
+    return Error{"--frames " + range_text(range) +
+                 " is outside the scene's frames 0:" + std::to_string(total)};
+  }
+  return range;
+}
+
+// The renderer of the job's frames on this thread (its context, its shaders compiled), timed and
+// described in `result`; null, with result.error set, when this OpenGL cannot draw the scene.
+std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Framing& framing,
+                                                RenderResult& result) {
+  const double start = process_cpu_seconds();
+  const scene::Scene& scene = job.scene;
+  const render::RenderSettings settings = renderer_settings(scene, framing);
+  std::unique_ptr<render::Renderer> renderer =
+      render::Renderer::create(settings, job.shader_directory, result.error);
+  if (!renderer) {
+    // Mostly what the scene asks of this OpenGL ([render] msaa beyond its samples): name it.
+    result.error = job.scene.source_path + ": " + result.error;
+    return nullptr;
+  }
+  result.renderer = renderer->description();
+  result.backend = render::backend_name(renderer->backend());
+  result.device = renderer->device();
+  result.opengl = renderer->opengl();
+  result.warnings = missing_character_warnings(scene, renderer->font());
+  result.renderer_seconds = process_cpu_seconds() - start;
+  return renderer;
+}
+
+}  // namespace
+
+std::string find_shader_directory() {
+  std::error_code ignored;
+  // Asked for by name: that folder or none, never a silent fall-back to another one.
+  if (const char* env = std::getenv("TUMBLE_SHADER_DIR")) {
+    return fs::exists(fs::path(env) / "body.vert", ignored) ? std::string(env) : std::string();
+  }
+  std::vector<fs::path> candidates;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", ignored);
+  if (!executable.empty()) {
+    candidates.push_back(executable.parent_path().parent_path() / "share/tumble/shaders");
+  }
+  candidates.emplace_back(TUMBLE_SOURCE_SHADER_DIR);
+  for (const fs::path& candidate : candidates) {
+    if (fs::exists(candidate / "body.vert", ignored)) return candidate.string();
+  }
+  return {};
+}
+
+std::string antialiasing_name(int msaa) {
+  if (msaa == render::kEdgeFilter) return "edge filter";
+  return msaa == 1 ? "none" : "MSAA " + std::to_string(msaa);
+}
+
+std::int64_t peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<std::int64_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
+std::string RenderJob::frames_path(const fs::path& folder) const {
+  return scene.output.frames ? (folder / "frames").string() : std::string();
+}
+
+std::string RenderJob::video_path(const fs::path& folder) const {
+  return video_path(folder, io::VideoFormat::mp4);
+}
+
+std::string RenderJob::video_path(const fs::path& folder, io::VideoFormat format) const {
+  const std::vector<io::VideoFormat>& formats = scene.output.formats;
+  if (!scene.output.video || std::find(formats.begin(), formats.end(), format) == formats.end()) {
+    return {};
+  }
+  return (folder / (scene.name + "." + io::video_format_name(format))).string();
+}
+
+Result<scene::Scene> scene_as_rendered(scene::Scene written, const RenderOptions& options) {
+  Result<scene::Scene> chosen = with_choices(options, std::move(written));
+  if (!chosen) return Error{chosen.error()};
+  scene::Scene scene = std::move(*chosen);
+  apply_overrides(options, scene);
+  if (scene.render.backend == render::Backend::osmesa &&
+      scene.render.egl_device != render::kAutomaticEglDevice) {
+    return Error{scene.source_path + ": the EGL device " + std::to_string(scene.render.egl_device) +
+                 " ([render] egl_device or --egl-device) is for the egl back end, not osmesa "
+                 "([render] backend or --backend)"};
+  }
+  // The loaded scene kept every rule: what breaks one now is an override.
+  if (const std::optional<scene::BrokenRule> broken = scene::broken_video_rule(scene)) {
+    return Error{scene.source_path + ": " + broken->keys.front() +
+                 ", as the command line sets it: " + broken->problem};
+  }
+  return scene;
+}
+
+Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& options) {
+  Result<scene::Scene> overridden = scene_as_rendered(std::move(loaded), options);
+  if (!overridden) return Error{overridden.error()};
+  scene::Scene& scene = *overridden;
+  const std::int64_t total = scene::frame_count(scene);
+  Result<FrameRange> range = frame_range(options, total);
+  if (!range) return Error{range.error()};
+  if (*range != FrameRange{0, total} && scene.output.video) {
+    for (const io::VideoFormat format : scene.output.formats) {
+      if (common::joins_in_segments(format)) continue;
+      const std::string name = io::video_format_name(format);
+      return Error{std::string(options.chunk ? "--chunk" : "--frames") + ": " + name +
+                   " is not written in parts (its palette is chosen for the frames it holds, so "
+                   "parts of one do not join): leave it out with --format mp4 or --format webm, "
+                   "and render the " +
+                   name + " whole"};
+    }
+  }
+  if (options.chunk) {
+    scene.output.directory += ".chunk-" + std::to_string(options.chunk->index) + "-of-" +
+                              std::to_string(options.chunk->count);
+  }
+  std::string shader_directory = find_shader_directory();
+  if (shader_directory.empty()) {
+    const char* asked = std::getenv("TUMBLE_SHADER_DIR");
+    return Error{asked ? std::string("no shaders (body.vert) in TUMBLE_SHADER_DIR=") + asked
+                       : "cannot find the shaders/ folder (set TUMBLE_SHADER_DIR)"};
+  }
+  const fs::path root = fs::path(options.output_root).lexically_normal();
+  const fs::path directory = root / scene.output.directory;
+  return RenderJob{.scene = std::move(scene),
+                   .frame_count = total,
+                   .first = range->first,
+                   .end = range->end,
+                   .chunk = options.chunk,
+                   .scene_hash = std::string(),  // set by the caller that read the file
+                   .output_root = root,
+                   .directory = directory,
+                   .png = options.png,
+                   .serial = options.serial,
+                   .shader_directory = std::move(shader_directory)};
+}
+
+RenderResult render_scene(const RenderJob& job, const fs::path& folder,
+                          const std::function<bool()>& stop_requested,
+                          const std::function<void(std::int64_t done)>& on_frame_done) {
+  RenderResult result;
+  const scene::Scene& scene = job.scene;
+  const auto setup_start = std::chrono::steady_clock::now();
+  Result<std::vector<std::unique_ptr<FrameSink>>> sinks = open_sinks(job, folder);
+  if (!sinks) {
+    result.error = sinks.error();
+    return result;
+  }
+  double start = process_cpu_seconds();
+  const Result<Framing> framing = frame_scene(scene, job.frame_count, stop_requested);
+  if (!framing) {
+    result.error = framing.error();
+    return result;
+  }
+  result.framing_steps = framing->physics_steps;
+  result.framing_seconds = process_cpu_seconds() - start;
+  const std::unique_ptr<render::Renderer> renderer = make_renderer(job, *framing, result);
+  if (!renderer) return result;
+  SimulatedFrames source(scene, *framing, stop_requested);
+  for (const physics::BodyState& state : source.simulation().current()) {
+    result.bodies.push_back({.energy_start = physics::kinetic_energy(state),
+                             .angular_momentum_start = state.angular_momentum().norm()});
+  }
+  start = process_cpu_seconds();
+  const Result<std::int64_t> seek_steps = source.seek(job.first);
+  if (!seek_steps) {
+    result.error = seek_steps.error();
+    return result;
+  }
+  result.seek_steps = *seek_steps;
+  result.seek_seconds = process_cpu_seconds() - start;
+  std::vector<FrameSink*> sink_list;
+  for (const std::unique_ptr<FrameSink>& sink : *sinks) {
+    sink_list.push_back(sink.get());
+    result.stages.push_back(sink->stage());
+  }
+  result.setup_seconds = seconds_since(setup_start);
+
+  result.pipeline =
+      run_frames(job.first, job.end, source, *renderer, sink_list, job.serial, on_frame_done);
+  result.frame_steps = source.simulation().step_count();
+  if (!result.pipeline.error.empty()) {
+    result.error = result.pipeline.error;
+    return result;  // each sink's destructor removes its partial file
+  }
+  const auto finish_start = std::chrono::steady_clock::now();
+  for (FrameSink* sink : sink_list) {
+    if (result.error.empty()) result.error = sink->finish();
+  }
+  result.finish_seconds = seconds_since(finish_start);
+  for (std::size_t i = 0; i < result.bodies.size(); ++i) {
+    const physics::BodyState& state = source.simulation().current()[i];
+    result.bodies[i].energy_end = physics::kinetic_energy(state);
+    result.bodies[i].angular_momentum_end = state.angular_momentum().norm();
+  }
+  return result;
+}
+
+}  // namespace tumble::app

@@ -1,0 +1,58 @@
+#include "scene/stability_report.hpp"
+
+#include "scene/scene_builder.hpp"
+#include "sim/contact_advice.hpp"
+#include "sim/stability.hpp"
+
+namespace tumble::app {
+namespace {
+
+std::vector<sim::StepWarning> body_warnings(const scene::Scene& scene,
+                                            const scene::BodySpec& body) {
+  return sim::check_step(scene::body_model(scene, body), scene::initial_state(body),
+                         scene.physics.integrator, scene.physics.dt, scene.duration);
+}
+
+}  // namespace
+
+std::vector<std::string> stability_warnings(const scene::Scene& scene) {
+  std::vector<std::string> lines;
+  std::vector<physics::Plane> planes;
+  for (const scene::PlaneSpec& spec : scene.planes) planes.push_back(scene::plane(spec));
+  for (const scene::BodySpec& body : scene.bodies) {
+    for (const sim::StepWarning& warning : body_warnings(scene, body)) {
+      lines.push_back("body \"" + body.name + "\": " + warning.message);
+    }
+    for (const std::string& problem : sim::check_contact(scene::body_model(scene, body), planes,
+                                                         scene.physics.contact, scene.physics.dt)) {
+      lines.push_back("body \"" + body.name + "\": " + problem);
+    }
+  }
+  return lines;
+}
+
+void print_stability_warnings(const scene::Scene& scene, std::FILE* out) {
+  for (const std::string& line : stability_warnings(scene)) {
+    std::fprintf(out, "tumble: warning: %s\n", line.c_str());
+  }
+}
+
+std::string blow_up_message(const scene::Scene& scene, const sim::BlowUp& blow_up) {
+  const scene::BodySpec& body = scene.bodies.at(blow_up.body);
+  char when[96];
+  std::snprintf(when, sizeof when, " at t = %.6g s (step %lld of dt = %.6g s): ", blow_up.time,
+                static_cast<long long>(blow_up.step), scene.physics.dt);
+  std::string message = "body \"" + body.name + "\" blew up" + when + blow_up.what + ".";
+  const std::vector<sim::StepWarning> warnings = body_warnings(scene, body);
+  if (warnings.empty()) {
+    return message +
+           " No stability limit tumble knows of is exceeded: check the sizes of its forces, "
+           "or try a smaller dt (tumble check " +
+           scene.source_path + " explains the step).";
+  }
+  message += " Likely cause:";
+  for (const sim::StepWarning& warning : warnings) message += " " + warning.message;
+  return message;
+}
+
+}  // namespace tumble::app

@@ -1,0 +1,103 @@
+#include "sys/child_process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+extern char** environ;
+
+namespace tumble::app {
+namespace {
+
+// How reading a child's output ended.
+enum class ReadEnd { end_of_output, stopped, failed };
+
+// Reads `fd` to its end, passing each line to `on_line` (a last line without its '\n' too), until
+// `on_line` returns false. After `failed`, errno says why.
+ReadEnd read_lines(int fd, const std::function<bool(std::string_view)>& on_line) {
+  std::string pending;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t got = ::read(fd, buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) return ReadEnd::failed;
+    if (got == 0) break;
+    pending.append(buffer, static_cast<std::size_t>(got));
+    std::size_t start = 0;
+    for (std::size_t end; (end = pending.find('\n', start)) != std::string::npos; start = end + 1) {
+      if (!on_line(std::string_view(pending).substr(start, end - start))) return ReadEnd::stopped;
+    }
+    pending.erase(0, start);
+  }
+  return pending.empty() || on_line(pending) ? ReadEnd::end_of_output : ReadEnd::stopped;
+}
+
+// "exited with status 3", "was killed by signal 11 (Segmentation fault)": from waitpid's status.
+std::string how_it_ended(int status) {
+  if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
+  if (WIFSIGNALED(status)) {
+    return "was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
+           ::strsignal(WTERMSIG(status)) + ")";
+  }
+  return "ended with wait status " + std::to_string(status);
+}
+
+}  // namespace
+
+std::string run_reading_lines(const std::string& program, const std::vector<std::string>& arguments,
+                              const std::function<bool(std::string_view line)>& on_line) {
+  int pipe_ends[2];
+  // Close-on-exec, so that no other child inherits them; dup2 onto the child's standard output
+  // clears the flag on that copy only.
+  if (::pipe2(pipe_ends, O_CLOEXEC) != 0) {
+    return "cannot run " + program + ": pipe: " + std::strerror(errno);
+  }
+  std::vector<char*> argv;
+  argv.push_back(const_cast<char*>(program.c_str()));
+  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDOUT_FILENO);
+  // tumble ignores SIGPIPE and SIGXFSZ (process.hpp), and an ignored signal stays ignored across
+  // exec: the child gets the defaults back, so that it ends when tumble stops reading.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  sigaddset(&defaults, SIGXFSZ);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  pid_t pid = 0;
+  const int spawned =
+      ::posix_spawn(&pid, program.c_str(), &actions, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(pipe_ends[1]);  // else the read below would never see the end of the child's output
+  if (spawned != 0) {
+    ::close(pipe_ends[0]);
+    return "cannot run " + program + ": " + std::strerror(spawned);
+  }
+
+  const ReadEnd read = read_lines(pipe_ends[0], on_line);
+  const std::string read_error = read == ReadEnd::failed ? std::strerror(errno) : "";
+  if (read != ReadEnd::end_of_output) ::kill(pid, SIGTERM);
+  ::close(pipe_ends[0]);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return "waiting for " + program + " failed: " + std::strerror(errno);
+  }
+  if (read == ReadEnd::failed) return "reading the output of " + program + " failed: " + read_error;
+  if (read == ReadEnd::stopped) return program + " was stopped";
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  return program + " " + how_it_ended(status);
+}
+
+}  // namespace tumble::app

@@ -1,0 +1,101 @@
+#include "view/overlay_values.hpp"
+
+#include <cstdio>
+
+#include "physics/forces.hpp"
+#include "scene/scene_builder.hpp"
+#include "scene/text_template.hpp"
+
+namespace tumble::app {
+namespace {
+
+using scene::BodyQuantity;
+
+std::string format_number(double value, const scene::Placeholder& as) {
+  const char pattern[] = {'%', '.', '*', as.conversion, '\0'};
+  char text[64];  // "%.17e" of any double, or "%.17f" of one up to 10^40, fits
+  const int length = std::snprintf(text, sizeof text, pattern, as.precision, value);
+  if (length >= 0 && static_cast<std::size_t>(length) < sizeof text) return text;
+  char wide[400];  // "%.17f" of the largest double: 309 digits and 17 decimals
+  std::snprintf(wide, sizeof wide, pattern, as.precision, value);
+  return wide;
+}
+
+}  // namespace
+
+physics::Vec3 body_quantity(BodyQuantity quantity, const physics::BodyState& state) {
+  switch (quantity) {
+    case BodyQuantity::position:
+      return state.position();
+    case BodyQuantity::velocity:
+      return state.velocity();
+    case BodyQuantity::speed:
+      return physics::Vec3(state.velocity().norm(), 0.0, 0.0);
+    case BodyQuantity::angular_velocity:
+      return state.angular_velocity();
+    case BodyQuantity::angular_speed:
+      return physics::Vec3(state.angular_velocity().norm(), 0.0, 0.0);
+    case BodyQuantity::angular_momentum:
+      return state.angular_momentum();
+    case BodyQuantity::kinetic_energy:
+      return physics::Vec3(physics::kinetic_energy(state), 0.0, 0.0);
+  }
+  return physics::Vec3::Zero();
+}
+
+std::string format_value(const scene::Placeholder& value,
+                         const std::vector<physics::BodyState>& states, double t,
+                         std::int64_t frame) {
+  switch (value.source) {
+    case scene::Placeholder::Source::time:
+      return format_number(t, value);
+    case scene::Placeholder::Source::frame:
+      return std::to_string(frame);
+    case scene::Placeholder::Source::body:
+      break;
+  }
+  const physics::Vec3 quantity = body_quantity(value.quantity, states[value.body]);
+  if (value.component >= 0) return format_number(quantity[value.component], value);
+  if (!scene::is_vector(value.quantity)) return format_number(quantity.x(), value);
+  // Appended one by one: GCC 12's -Wrestrict misreads "(" + std::string (a known bug).
+  std::string out(1, '(');
+  out.append(format_number(quantity.x(), value)).append(", ");
+  out.append(format_number(quantity.y(), value)).append(", ");
+  out.append(format_number(quantity.z(), value)).append(")");
+  return out;
+}
+
+std::string format_text(const scene::TextTemplate& text,
+                        const std::vector<physics::BodyState>& states, double t,
+                        std::int64_t frame) {
+  std::string out = text.pieces[0];
+  for (std::size_t i = 0; i < text.values.size(); ++i) {
+    out += format_value(text.values[i], states, t, frame);
+    out += text.pieces[i + 1];
+  }
+  return out;
+}
+
+physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::BodySpec& body,
+                           const physics::BodyState& state, double t) {
+  switch (overlay.quantity) {
+    case scene::VectorQuantity::velocity:
+      return physics::point_velocity(state, physics::body_point_to_world(state, overlay.point));
+    case scene::VectorQuantity::angular_velocity:
+      return state.angular_velocity();
+    case scene::VectorQuantity::angular_momentum:
+      return state.angular_momentum();
+    case scene::VectorQuantity::constant:
+      return overlay.constant;
+    case scene::VectorQuantity::force:
+      break;
+  }
+  const physics::BodyConstants constants = scene::body_constants(body);
+  physics::Vec3 force = physics::Vec3::Zero();
+  for (const std::size_t law : overlay.laws) {
+    force += physics::evaluate(body.forces[law], constants, state, t).force;
+  }
+  return force;
+}
+
+}  // namespace tumble::app

@@ -1,0 +1,163 @@
+// The values overlays show: printf's formatting of each placeholder, the vectors arrows draw,
+// and a live value in frame k equal, to its printed precision, to the one computed from
+// `tumble simulate`'s states interpolated at t = k / fps.
+#include "view/overlay_values.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <variant>
+
+#include "view/scene_view.hpp"
+#include "physics/forces.hpp"
+#include "scene/scene_builder.hpp"
+#include "scene/scene_loader.hpp"
+#include "scene/text_template.hpp"
+#include "support/command_test.hpp"
+
+namespace tumble::app {
+namespace {
+
+using physics::Vec3;
+
+scene::BodySpec spinning_cube() {
+  scene::BodySpec cube;
+  cube.name = "cube";
+  cube.mass = 2.0;
+  cube.position = Vec3(1.0, -2.0, 0.5);
+  cube.velocity = Vec3(3.0, 4.0, 0.0);
+  cube.angular_velocity = Vec3(0.0, 0.0, 6.0);
+  return cube;
+}
+
+std::string formatted(const std::string& text, double t = 1.25, std::int64_t frame = 75) {
+  const scene::BodySpec cube = spinning_cube();
+  const Result<scene::TextTemplate> parsed = scene::parse_text_template(text, {cube.name});
+  EXPECT_TRUE(parsed) << (parsed ? "" : parsed.error());
+  return parsed ? format_text(*parsed, {scene::initial_state(cube)}, t, frame) : "";
+}
+
+// Mass 2 kg, edge 1 m: I = m s² / 6 = 1/3 kg m², so L = 2 kg m²/s about z; E = ½ m v² + ½ I ω²
+// = 25 + 6 = 31 J.
+TEST(OverlayValues, FormatsEachQuantityAsPrintfDoes) {
+  EXPECT_EQ(formatted("t = {time:.1f} s, frame {frame}"), "t = 1.2 s, frame 75");  // 1.25: even
+  EXPECT_EQ(formatted("{cube.speed}"), "5.00");
+  EXPECT_EQ(formatted("{cube.velocity:.1f}"), "(3.0, 4.0, 0.0)");
+  EXPECT_EQ(formatted("{cube.position.y:.3f}"), "-2.000");
+  EXPECT_EQ(formatted("{cube.angular_speed:.0f} rad/s"), "6 rad/s");
+  EXPECT_EQ(formatted("{cube.angular_velocity.z:.2e}"), "6.00e+00");
+  EXPECT_EQ(formatted("{cube.angular_momentum.z:.4f}"), "2.0000");
+  EXPECT_EQ(formatted("{cube.kinetic_energy:.3g} J"), "31 J");
+}
+
+TEST(OverlayValues, AVectorIsItsQuantityAtItsPoint) {
+  scene::BodySpec cube = spinning_cube();
+  cube.forces = {physics::Gravity{}, physics::ConstantForce{.force = Vec3(1, 0, 0)}};
+  const physics::BodyState state = scene::initial_state(cube);
+  scene::VectorOverlay arrow;
+  arrow.quantity = scene::VectorQuantity::velocity;
+  EXPECT_EQ(vector_value(arrow, cube, state, 0.0), Vec3(3, 4, 0));
+  // v + ω × r at r = (0.5, 0, 0): (3, 4, 0) + (0, 0, 6) × (0.5, 0, 0) = (3, 7, 0).
+  arrow.point = Vec3(0.5, 0, 0);
+  EXPECT_TRUE(vector_value(arrow, cube, state, 0.0).isApprox(Vec3(3, 7, 0), 1e-15));
+  arrow.quantity = scene::VectorQuantity::angular_momentum;
+  EXPECT_TRUE(vector_value(arrow, cube, state, 0.0).isApprox(Vec3(0, 0, 2), 1e-15));
+  arrow.quantity = scene::VectorQuantity::force;
+  arrow.laws = {0};
+  EXPECT_TRUE(vector_value(arrow, cube, state, 0.0).isApprox(Vec3(0, -2 * 9.81, 0), 1e-15));
+  arrow.laws = {0, 1};
+  EXPECT_TRUE(vector_value(arrow, cube, state, 0.0).isApprox(Vec3(1, -2 * 9.81, 0), 1e-15));
+  arrow.quantity = scene::VectorQuantity::constant;
+  arrow.constant = Vec3(0, 0, -1);
+  EXPECT_EQ(vector_value(arrow, cube, state, 0.0), Vec3(0, 0, -1));
+}
+
+class LiveValues : public testing::CommandTest {};
+
+// A cube thrown and spun under gravity and damping, stepped at 7 ms and drawn at 24 fps, so that
+// frame times fall between steps. Frame k's text, as the render source makes it, against the
+// states `tumble simulate` prints for the steps around k / 24 s, interpolated linearly (position
+// and momentum are lerped, physics/interpolation.hpp): the printed value is the computed one
+// rounded, so within half a unit of its last digit.
+TEST_F(LiveValues, AFramesValueIsSimulatesStateInterpolatedAtItsTime) {
+  const std::string text = R"(name = "live"
+duration = 1.0
+[physics]
+dt = 0.007
+[[bodies]]
+name = "cube"
+shape = "cube"
+size = 1.0
+mass = 2.0
+velocity = [1.5, 4.0, -0.5]
+angular_velocity = [0.3, 2.0, 1.0]
+[[bodies.forces]]
+kind = "gravity"
+[[bodies.forces]]
+kind = "linear_damping"
+coefficient = 0.7
+[render]
+fps = 24
+[camera]
+position = [3, 3, 7]
+look_at = [0, 0, 0]
+[ground]
+height = -3.0
+[[overlays]]
+kind = "text"
+text = "{cube.speed:.4f}|{cube.position.y:.5f}"
+)";
+  const std::filesystem::path file = write("live.toml", text);
+  const testing::Outcome run = tumble("simulate " + file.string() + " --out " + path("s.csv"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // t, body, x, y, z, vx, vy, vz, ...: one row a step.
+  std::vector<std::array<double, 7>> rows;
+  std::ifstream csv(path("s.csv"));
+  std::string line;
+  std::getline(csv, line);  // header
+  while (std::getline(csv, line)) {
+    std::array<double, 7> row{};
+    std::stringstream fields(line);
+    std::string field;
+    for (int column = 0, kept = 0; std::getline(fields, field, ',') && kept < 7; ++column) {
+      if (column == 1) continue;  // the body's name
+      row[static_cast<std::size_t>(kept++)] = std::strtod(field.c_str(), nullptr);
+    }
+    rows.push_back(row);
+  }
+  ASSERT_GT(rows.size(), 100u);
+
+  const scene::SceneOrError loaded = scene::load_scene_file(file.string());
+  ASSERT_TRUE(std::holds_alternative<scene::Scene>(loaded));
+  const scene::Scene& scene = std::get<scene::Scene>(loaded);
+  const Result<Framing> framing = frame_scene(scene, 24, [] { return false; });
+  ASSERT_TRUE(framing);
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  for (std::int64_t k = 0; k < 24; ++k) {
+    const double t = static_cast<double>(k) / 24.0;
+    const std::size_t n = static_cast<std::size_t>(std::floor(t / 0.007));
+    ASSERT_LT(n + 1, rows.size());
+    const double alpha = (t - rows[n][0]) / (rows[n + 1][0] - rows[n][0]);
+    const auto lerp = [&](int column) {
+      return rows[n][column] + alpha * (rows[n + 1][column] - rows[n][column]);
+    };
+    const double speed = Vec3(lerp(4), lerp(5), lerp(6)).norm();  // m/s
+    const double y = lerp(2);                                     // m
+    const Result<render::FrameView> view = source.view(k);
+    ASSERT_TRUE(view && view->texts.size() == 1u);
+    const std::string& shown = view->texts[0].text;
+    const std::size_t bar = shown.find('|');
+    ASSERT_NE(bar, std::string::npos) << shown;
+    EXPECT_NEAR(std::strtod(shown.c_str(), nullptr), speed, 0.5e-4 + 1e-12) << "frame " << k;
+    EXPECT_NEAR(std::strtod(shown.c_str() + bar + 1, nullptr), y, 0.5e-5 + 1e-12) << "frame " << k;
+    EXPECT_EQ(shown.substr(0, bar).size(), std::to_string(static_cast<int>(speed)).size() + 5)
+        << "4 decimals: " << shown;
+  }
+}
+
+}  // namespace
+}  // namespace tumble::app

@@ -1,0 +1,231 @@
+// A scene's [[overlays]] from file to picture: golden frames of each kind at 320×180 and
+// 1280×720 (a text with ω, τ, Δ, ² and live values; a labelled vector; a trail; axes), texts
+// fading in and out, trails of a chunk that starts late the same as the whole render's, and
+// warnings for characters the font lacks. Goldens live in tests/render/golden/
+// (TUMBLE_UPDATE_GOLDEN=1 rewrites them: look at them before committing).
+#include "view/overlay_view.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <variant>
+
+#include "view/scene_view.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "support/render_golden.hpp"
+
+namespace tumble::app {
+namespace {
+
+// A cube tossed up and spun about a tilted axis under gravity, the camera given (no framing
+// pass), the ground's grid and shadows on: what a documentation video looks like.
+constexpr const char* kScene = R"(name = "overlays"
+duration = 2.0
+[physics]
+dt = 0.005
+[[bodies]]
+name = "cube"
+shape = "cube"
+size = 1.0
+mass = 2.0
+velocity = [1.0, 3.0, 0.0]
+angular_velocity = [1.0, 3.0, 0.5]
+[[bodies.forces]]
+kind = "gravity"
+[camera]
+position = [3.0, 3.0, 7.0]
+look_at = [0.8, 0.6, 0.0]
+[ground]
+height = -1.0
+)";
+
+scene::Scene parse(const std::string& overlays) {
+  scene::SceneOrError result = scene::parse_scene(std::string(kScene) + overlays, "test.toml");
+  if (const auto* error = std::get_if<scene::SceneError>(&result)) {
+    ADD_FAILURE() << error->message;
+    return {};
+  }
+  return std::get<scene::Scene>(std::move(result));
+}
+
+// Frame `frame` of the scene at width × height, drawn as `tumble render` draws it (render_job).
+io::Image render_frame(scene::Scene scene, int width, int height, std::int64_t frame) {
+  scene.render.width = width;
+  scene.render.height = height;
+  const Result<Framing> framing = frame_scene(scene, 120, [] { return false; });
+  EXPECT_TRUE(framing) << (framing ? "" : framing.error());
+  if (!framing) return {};
+  const render::RenderSettings settings = renderer_settings(scene, *framing);
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  const Result<render::FrameView> view = source.view(frame);
+  EXPECT_TRUE(view) << (view ? "" : view.error());
+  return view ? testing::draw(settings, *view) : io::Image{};
+}
+
+// As the text goldens (render/text_layer_test.cpp): 8 of 255 per channel, and 1% of the pixels
+// beyond that, for another Mesa, LLVM or FreeType rounding an edge otherwise. Same machine:
+// bit-identical (the frame pipeline's serial twin checks that).
+void expect_golden(const std::string& overlays, const std::string& name, std::int64_t frame = 30) {
+  const scene::Scene scene = parse(overlays);
+  for (const auto& [width, height] : {std::pair{320, 180}, std::pair{1280, 720}}) {
+    const io::Image image = render_frame(scene, width, height, frame);
+    testing::expect_matches_golden(
+        image, name + "_" + std::to_string(width) + "x" + std::to_string(height),
+        {.threshold = 8, .max_pixels = static_cast<std::int64_t>(width) * height / 100});
+  }
+}
+
+TEST(OverlayView, TextWithSymbolsAndLiveValuesMatchesGolden) {
+  expect_golden(R"(
+[[overlays]]
+kind = "text"
+text = "ω = {cube.angular_speed:.2f} rad/s   τ = 0 N·m\nΔt = {time:.2f} s   v² = {cube.speed:.1f}² m²/s²"
+background = "#00000080"
+[[overlays]]
+kind = "text"
+text = "frame {frame}: x = {cube.position.x:.3f} m"
+anchor = "bottom-right"
+size = 32
+color = "#102040"
+)",
+                "overlay_text");
+}
+
+TEST(OverlayView, VectorWithLabelMatchesGolden) {
+  expect_golden(R"(
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "angular_velocity"
+scale = 0.5
+label = "ω"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "velocity"
+point = [0.5, 0.5, 0.5]
+scale = 0.4
+label = "v"
+)",
+                "overlay_vector");
+}
+
+TEST(OverlayView, TrailMatchesGolden) {
+  expect_golden(R"(
+[[overlays]]
+kind = "trail"
+body = "cube"
+point = [0.5, 0.5, 0.5]
+length = 0.75
+color = "#2040ff"
+)",
+                "overlay_trail", 45);  // t = 0.75 s: the whole flight from the throw
+}
+
+TEST(OverlayView, AxesMatchGolden) {
+  expect_golden(R"(
+[[overlays]]
+kind = "axes"
+body = "cube"
+)",
+                "overlay_axes");
+}
+
+// A chunk from frame 40 (`--frames 40:`) draws frame 40's trail as the whole render does: the
+// trail's past is recorded before the first frame.
+TEST(OverlayView, AChunkDrawsTheTrailOfTheWholeRender) {
+  const scene::Scene scene = parse(R"(
+[[overlays]]
+kind = "trail"
+body = "cube"
+point = [0.5, 0.5, 0.5]
+length = 0.5
+)");
+  const Result<Framing> framing = frame_scene(scene, 120, [] { return false; });
+  ASSERT_TRUE(framing);
+  SimulatedFrames whole(scene, *framing, [] { return false; });
+  SimulatedFrames chunk(scene, *framing, [] { return false; });
+  for (std::int64_t k = 0; k < 40; ++k) ASSERT_TRUE(whole.view(k));
+  // As a chunk's render runs it: the physics first, without drawing, to the trail's oldest point.
+  const Result<std::int64_t> steps = chunk.seek(40);
+  ASSERT_TRUE(steps);
+  // 0.5 s at 60 fps before frame 40 is frame 10: the first step at or past 1/6 s, dt 0.005 s.
+  EXPECT_EQ(*steps, 34);
+  EXPECT_EQ(chunk.simulation().step_count(), 34);
+  for (const std::int64_t k : {40, 41}) {
+    const Result<render::FrameView> a = whole.view(k), b = chunk.view(k);
+    ASSERT_TRUE(a && b);
+    ASSERT_EQ(a->lines.size(), 1u);
+    ASSERT_EQ(b->lines.size(), 1u);
+    EXPECT_EQ(a->lines[0].points.size(), 31u);  // 0.5 s at 60 fps, both ends kept
+    EXPECT_EQ(a->lines[0].points, b->lines[0].points) << "frame " << k;
+    EXPECT_EQ(a->lines[0].opacity, b->lines[0].opacity) << "frame " << k;
+    EXPECT_EQ(a->lines[0].opacity.back(), 1.0);
+    EXPECT_EQ(a->lines[0].opacity.front(), 0.0);
+  }
+}
+
+// start 0.5 s, end 1.5 s, fade 0.25 s, at 60 fps: nothing before 0.5 s, 0.4 at 0.6 s (0.1 s
+// into the fade in), whole at 1.0 s, 0.4 at 1.4 s, nothing from 1.5 s.
+TEST(OverlayView, TextsShowFromStartToEndFadingInAndOut) {
+  const scene::Scene scene = parse(R"(
+[[overlays]]
+kind = "text"
+text = "caption"
+start = 0.5
+end = 1.5
+fade = 0.25
+)");
+  const Result<Framing> framing = frame_scene(scene, 120, [] { return false; });
+  ASSERT_TRUE(framing);
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  const auto opacity_at = [&](std::int64_t frame) {
+    const Result<render::FrameView> view = source.view(frame);
+    EXPECT_TRUE(view);
+    return view && !view->texts.empty() ? view->texts[0].opacity : 0.0;
+  };
+  EXPECT_EQ(opacity_at(29), 0.0);                  // 0.483 s
+  EXPECT_EQ(opacity_at(30), 0.0);                  // 0.5 s: starts, fully faded
+  EXPECT_NEAR(opacity_at(36), 0.1 / 0.25, 1e-12);  // 0.6 s
+  EXPECT_EQ(opacity_at(60), 1.0);                  // 1.0 s
+  EXPECT_NEAR(opacity_at(84), 0.1 / 0.25, 1e-12);  // 1.4 s
+  EXPECT_EQ(opacity_at(90), 0.0);                  // 1.5 s: ended
+}
+
+TEST(OverlayView, WarnsOfEachCharacterTheFontLacksAndNoneOfThePhysicsSymbols) {
+  const scene::Scene scene = parse(R"(
+[[overlays]]
+kind = "text"
+text = "ω τ θ Δ ² · → ≈ ° {time} 中"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "velocity"
+label = "v中"
+)");
+  Result<std::unique_ptr<render::Font>> font = render::Font::open(overlay_font(scene));
+  ASSERT_TRUE(font) << font.error();
+  const std::vector<std::string> warnings = missing_character_warnings(scene, font->get());
+  ASSERT_EQ(warnings.size(), 1u);  // 中 once, though written twice
+  EXPECT_NE(warnings[0].find("U+4E2D"), std::string::npos) << warnings[0];
+  EXPECT_TRUE(missing_character_warnings(scene, nullptr).empty());
+}
+
+TEST(OverlayView, OnlyWhatTheOverlaysDrawIsSetUp) {
+  EXPECT_FALSE(overlays_need_font(parse("")));
+  EXPECT_FALSE(overlays_need_lines(parse("")));
+  const scene::Scene axes = parse("[[overlays]]\nkind = \"axes\"\nbody = \"cube\"\n");
+  EXPECT_FALSE(overlays_need_font(axes));
+  EXPECT_TRUE(overlays_need_lines(axes));
+  const scene::Scene text = parse(
+      "[render]\nfont = \"DejaVu Serif\"\n[[overlays]]\nkind = "
+      "\"text\"\ntext = \"t\"\n");
+  EXPECT_TRUE(overlays_need_font(text));
+  EXPECT_FALSE(overlays_need_lines(text));
+  EXPECT_EQ(overlay_font(text), "DejaVu Serif");
+  EXPECT_EQ(overlay_font(axes), render::kDefaultFontFamily);
+}
+
+}  // namespace
+}  // namespace tumble::app
