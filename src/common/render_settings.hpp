@@ -69,7 +69,7 @@ struct RenderSettings {
   Color background = Color(0.78, 0.84, 0.9);
   // [render] background = "transparent": alpha 0 wherever no surface is drawn (the colour there
   // is `background`, unseen), alpha 1 on surfaces; the ground is not drawn, only the shadows on
-  // it, as partly transparent black (README says why).
+  // it, as partly transparent black (docs/scene-reference.md says why).
   bool transparent = false;
   DirectionalLight light;
   Ground ground;

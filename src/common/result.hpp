@@ -1,5 +1,5 @@
-// The one way a fallible call returns (STYLE.md rule 6): a value, or an error message complete
-// and ready to print. std::expected is C++23; this is the part of it tumble uses.
+// The one way a fallible call returns (docs/design.md, rule 6): a value, or an error message
+// complete and ready to print. std::expected is C++23; this is the part of it tumble uses.
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // The largest scene tumble will attempt. Beyond these a value is almost surely a typo, and an
 // attempt would run for days or fill the disk, so the loader refuses it with a message instead.
-// The README's "Errors and limits" lists them; change both together. scene/video_rules.hpp holds
+// docs/errors.md lists them; change both together. scene/video_rules.hpp holds
 // a scene to the image and frame limits.
 #pragma once
 

@@ -11,7 +11,7 @@
 
 namespace tumble::scene {
 
-// The quantity's name in a placeholder and in the README ("angular_speed").
+// The quantity's name in a placeholder and in docs/scene-reference.md ("angular_speed").
 std::string_view quantity_name(BodyQuantity quantity);
 
 // Whether the quantity is a vector (x, y, z) rather than a number.

@@ -1,7 +1,7 @@
 // What in a frame depends on the machine: llvmpipe's SIMD width (LP_NATIVE_VECTOR_WIDTH=128 is
 // what a machine without AVX gets) and its rasterizer threads (LP_NUM_THREADS). The same frames
 // rendered under each must be the default run's, byte for byte, for a golden drawn on one machine
-// to hold on another with the same Mesa (README, "Goldens across machines").
+// to hold on another with the same Mesa (docs/commands.md, "Goldens across machines").
 #include <gtest/gtest.h>
 
 #include <string>
