@@ -21,7 +21,7 @@
 
 extern char** environ;
 
-namespace tumble::app {
+namespace tumble::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -382,4 +382,4 @@ int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std:
   return kExitOk;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

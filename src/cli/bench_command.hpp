@@ -8,7 +8,7 @@
 
 #include "common/exit_codes.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 
 struct BenchAccuracyOptions {
   std::string out =
@@ -21,4 +21,4 @@ struct BenchAccuracyOptions {
 // Markdown are written first, so they are there either way).
 int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

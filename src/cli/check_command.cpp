@@ -2,12 +2,12 @@
 
 #include <variant>
 
-#include "scene/stability_report.hpp"
 #include "physics/integrators.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/stability_report.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 
 int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err) {
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
@@ -16,7 +16,7 @@ int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err) {
     return kExitBadInput;
   }
   const scene::Scene& scene = std::get<scene::Scene>(loaded);
-  const std::vector<std::string> warnings = stability_warnings(scene);
+  const std::vector<std::string> warnings = scene::stability_warnings(scene);
   for (const std::string& line : warnings) std::fprintf(out, "tumble: warning: %s\n", line.c_str());
   const std::size_t bodies = scene.bodies.size();
   const std::int64_t steps = scene::step_count(scene);
@@ -28,4 +28,4 @@ int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err) {
   return kExitOk;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

@@ -7,7 +7,7 @@
 
 #include "common/exit_codes.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 
 struct CheckOptions {
   std::string scene_path;
@@ -17,4 +17,4 @@ struct CheckOptions {
 // valid scene (warnings or not) and kExitBadInput for one that does not load.
 int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

@@ -5,40 +5,41 @@
 #include <sstream>
 
 #include "common/exit_codes.hpp"
-#include "pipeline/frame_sinks.hpp"
-#include "sys/interrupt.hpp"
-#include "job/join_inputs.hpp"
-#include "io/json_text.hpp"
-#include "job/output_folder.hpp"
 #include "io/atomic_file.hpp"
+#include "io/json_text.hpp"
 #include "io/staged_directory.hpp"
 #include "io/video_join.hpp"
+#include "job/join_inputs.hpp"
+#include "job/output_folder.hpp"
+#include "pipeline/frame_sinks.hpp"
+#include "sys/interrupt.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
 // The chunks' reports, sorted by their frames, checked to be one render's and to hold each of
 // its frames once.
-Result<std::vector<ChunkReport>> checked_chunks(const std::vector<std::string>& folders) {
-  std::vector<ChunkReport> chunks;
+Result<std::vector<job::ChunkReport>> checked_chunks(const std::vector<std::string>& folders) {
+  std::vector<job::ChunkReport> chunks;
   for (const std::string& folder : folders) {
-    Result<ChunkReport> chunk = read_chunk_report(folder);
+    Result<job::ChunkReport> chunk = job::read_chunk_report(folder);
     if (!chunk) return Error{chunk.error()};
     chunks.push_back(std::move(*chunk));
   }
-  std::stable_sort(chunks.begin(), chunks.end(), [](const ChunkReport& a, const ChunkReport& b) {
-    return a.frames.first < b.frames.first;
-  });
+  std::stable_sort(chunks.begin(), chunks.end(),
+                   [](const job::ChunkReport& a, const job::ChunkReport& b) {
+                     return a.frames.first < b.frames.first;
+                   });
   if (const std::string problem = mismatch(chunks); !problem.empty()) return Error{problem};
-  std::vector<FrameRange> ranges;
+  std::vector<job::FrameRange> ranges;
   std::vector<std::string> names;
-  for (const ChunkReport& chunk : chunks) {
+  for (const job::ChunkReport& chunk : chunks) {
     ranges.push_back(chunk.frames);
     names.push_back(chunk.folder.string());
   }
-  if (const std::string problem = coverage_problem(ranges, names, chunks.front().scene_frames);
+  if (const std::string problem = job::coverage_problem(ranges, names, chunks.front().scene_frames);
       !problem.empty()) {
     return Error{"the chunks do not hold every frame once: " + problem};
   }
@@ -46,34 +47,34 @@ Result<std::vector<ChunkReport>> checked_chunks(const std::vector<std::string>& 
 }
 
 // The folder to write, spelt one way, and why it may not be written, or "".
-std::string output_problem(const fs::path& out, const std::vector<ChunkReport>& chunks) {
+std::string output_problem(const fs::path& out, const std::vector<job::ChunkReport>& chunks) {
   if (out.empty() || out.filename() == "." || out.filename() == "..") {
     return "the output folder must be named (got \"" + out.string() + "\")";
   }
   std::error_code error;
-  for (const ChunkReport& chunk : chunks) {
+  for (const job::ChunkReport& chunk : chunks) {
     if (fs::equivalent(out, chunk.folder, error)) {
       return out.string() + " is one of the chunks; join into another folder";
     }
   }
   const fs::path root = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  return replace_problem(root, out.filename());
+  return job::replace_problem(root, out.filename());
 }
 
 // Every chunk's frames/frame_NNNNN.png in `frames`: hard links where the file system allows
 // them (same bytes, no copy), else copies.
-std::string merge_frames(const std::vector<ChunkReport>& chunks, const fs::path& frames) {
+std::string merge_frames(const std::vector<job::ChunkReport>& chunks, const fs::path& frames) {
   std::error_code error;
   fs::create_directory(frames, error);
   if (error) return "cannot create " + frames.string() + ": " + error.message();
-  for (const ChunkReport& chunk : chunks) {
+  for (const job::ChunkReport& chunk : chunks) {
     for (std::int64_t k = chunk.frames.first; k < chunk.frames.end; ++k) {
-      if (interrupt_signal() != 0) return "stopped";
-      const std::string name = png_frame_name(k);
+      if (sys::interrupt_signal() != 0) return "stopped";
+      const std::string name = pipeline::png_frame_name(k);
       const fs::path from = chunk.folder / "frames" / name;
       if (!fs::is_regular_file(from, error)) {
         return chunk.folder.string() + ": frames/" + name + " is missing (its report.json says " +
-               "it holds frames " + range_text(chunk.frames) + ")";
+               "it holds frames " + job::range_text(chunk.frames) + ")";
       }
       fs::create_hard_link(from, frames / name, error);
       if (error) fs::copy_file(from, frames / name, error);
@@ -83,32 +84,33 @@ std::string merge_frames(const std::vector<ChunkReport>& chunks, const fs::path&
   return {};
 }
 
-std::string joined_report(const std::vector<ChunkReport>& chunks, const fs::path& out) {
-  const ChunkReport& first = chunks.front();
+std::string joined_report(const std::vector<job::ChunkReport>& chunks, const fs::path& out) {
+  const job::ChunkReport& first = chunks.front();
   std::ostringstream text;
   // The first line as every render's report.json starts (output_folder.cpp knows it by that).
-  text << "{\n  \"scene\": " << json_string(first.scene)
-       << ",\n  \"scene_file\": " << json_string(first.scene_file)
-       << ",\n  \"scene_hash\": " << json_string(first.scene_hash)
+  text << "{\n  \"scene\": " << io::json_string(first.scene)
+       << ",\n  \"scene_file\": " << io::json_string(first.scene_file)
+       << ",\n  \"scene_hash\": " << io::json_string(first.scene_hash)
        << ",\n  \"scene_frames\": " << first.scene_frames << ",\n  \"chunk\": null"
        << ",\n  \"settings\": " << first.settings.text
        << ",\n  \"frames\": {\"first\": 0, \"end\": " << first.scene_frames
        << ", \"count\": " << first.scene_frames << "}"
        << ",\n  \"frames_directory\": "
-       << (first.has_frames ? json_string((out / "frames").string()) : "null") << ",\n  \"video\": "
+       << (first.has_frames ? io::json_string((out / "frames").string()) : "null")
+       << ",\n  \"video\": "
        << (first.video_names.empty() ? "null"
-                                     : json_string((out / first.video_names.front()).string()))
+                                     : io::json_string((out / first.video_names.front()).string()))
        << ",\n  \"videos\": {";
   for (std::size_t i = 0; i < first.video_names.size(); ++i) {
     const fs::path name = first.video_names[i];
-    text << (i ? ", " : "") << json_string(name.extension().string().substr(1)) << ": "
-         << json_string((out / name).string());
+    text << (i ? ", " : "") << io::json_string(name.extension().string().substr(1)) << ": "
+         << io::json_string((out / name).string());
   }
-  text << "},\n  \"renderer\": " << json_string(first.renderer) << ",\n  \"joined_from\": [";
+  text << "},\n  \"renderer\": " << io::json_string(first.renderer) << ",\n  \"joined_from\": [";
   for (std::size_t i = 0; i < chunks.size(); ++i) {
-    text << (i ? "," : "") << "\n    {\"folder\": " << json_string(chunks[i].folder.string())
+    text << (i ? "," : "") << "\n    {\"folder\": " << io::json_string(chunks[i].folder.string())
          << ", \"first\": " << chunks[i].frames.first << ", \"end\": " << chunks[i].frames.end
-         << ", \"renderer\": " << json_string(chunks[i].renderer) << "}";
+         << ", \"renderer\": " << io::json_string(chunks[i].renderer) << "}";
   }
   text << "\n  ]\n}\n";
   return text.str();
@@ -116,27 +118,27 @@ std::string joined_report(const std::vector<ChunkReport>& chunks, const fs::path
 
 // Why the video segment at `path` does not hold exactly `frames`, the frames its chunk's report
 // says it holds (a WebM's index does not count its frames, so a copy cut short shows here), or "".
-std::string segment_problem(const std::string& path, const FrameRange& frames) {
+std::string segment_problem(const std::string& path, const job::FrameRange& frames) {
   const io::VideoSegmentInfo info = io::read_segment_info(path);
   if (!info.error.empty()) return info.error;
   if (info.first_frame != frames.first || info.first_frame + info.frames != frames.end) {
     return path + ": holds frames " +
-           range_text({info.first_frame, info.first_frame + info.frames}) + ", its report says " +
-           range_text(frames) + " (a truncated or replaced copy?)";
+           job::range_text({info.first_frame, info.first_frame + info.frames}) +
+           ", its report says " + job::range_text(frames) + " (a truncated or replaced copy?)";
   }
   return {};
 }
 
 // The joined render written into `staging`.
-std::string write_joined(const std::vector<ChunkReport>& chunks, const fs::path& staging,
+std::string write_joined(const std::vector<job::ChunkReport>& chunks, const fs::path& staging,
                          const fs::path& out) {
-  const ChunkReport& first = chunks.front();
+  const job::ChunkReport& first = chunks.front();
   if (first.has_frames) {
     if (std::string error = merge_frames(chunks, staging / "frames"); !error.empty()) return error;
   }
   for (const std::string& name : first.video_names) {
     std::vector<std::string> segments;
-    for (const ChunkReport& chunk : chunks) {
+    for (const job::ChunkReport& chunk : chunks) {
       segments.push_back((chunk.folder / name).string());
       if (std::string error = segment_problem(segments.back(), chunk.frames); !error.empty()) {
         return error;
@@ -152,8 +154,8 @@ std::string write_joined(const std::vector<ChunkReport>& chunks, const fs::path&
 }  // namespace
 
 int run_join(const JoinOptions& options, std::FILE* err) {
-  install_interrupt_handlers();
-  const Result<std::vector<ChunkReport>> chunks = checked_chunks(options.chunks);
+  sys::install_interrupt_handlers();
+  const Result<std::vector<job::ChunkReport>> chunks = checked_chunks(options.chunks);
   if (!chunks) {
     std::fprintf(err, "tumble: join: %s\n", chunks.error().c_str());
     return kExitBadInput;
@@ -170,9 +172,9 @@ int run_join(const JoinOptions& options, std::FILE* err) {
     return kExitBadInput;
   }
   std::string error = write_joined(*chunks, staged.path(), folder);
-  if (const int signal = interrupt_signal()) {
-    std::fprintf(err, "tumble: join stopped by %s; %s was left as it was\n", signal_name(signal),
-                 folder.c_str());
+  if (const int signal = sys::interrupt_signal()) {
+    std::fprintf(err, "tumble: join stopped by %s; %s was left as it was\n",
+                 sys::signal_name(signal), folder.c_str());
     return kExitInterrupted + signal;
   }
   // Checked again: the folder may have been made or filled while the chunks were copied.
@@ -191,4 +193,4 @@ int run_join(const JoinOptions& options, std::FILE* err) {
   return kExitOk;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

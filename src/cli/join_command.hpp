@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace tumble::app {
+namespace tumble::cli {
 
 struct JoinOptions {
   std::string out;                  // the render folder to write (replaced as a whole)
@@ -19,4 +19,4 @@ struct JoinOptions {
 // Messages go to `err`. Returns the process exit code.
 int run_join(const JoinOptions& options, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

@@ -9,19 +9,19 @@
 #include <utility>
 #include <vector>
 
-#include "cli/bench_command.hpp"
 #include "bench/jobs/bench_contact.hpp"
 #include "bench/jobs/bench_pipeline.hpp"
+#include "cli/bench_command.hpp"
 #include "cli/check_command.hpp"
-#include "diff/diff_command.hpp"
 #include "cli/join_command.hpp"
 #include "cli/plan_command.hpp"
-#include "sys/process.hpp"
 #include "cli/render_command.hpp"
 #include "cli/simulate_command.hpp"
+#include "diff/diff_command.hpp"
 #include "io/png_io.hpp"
 #include "render/offscreen_context.hpp"
 #include "scene/limits.hpp"
+#include "sys/process.hpp"
 
 namespace {
 
@@ -62,7 +62,7 @@ const CLI::Validator kNotEmpty(
 // How frames are compared and what is written of the comparison: `tumble diff` and
 // `tumble render --golden` take the same options. Returns --ignore-antialiasing, whose default
 // depends on the metric (applied when it was not given). With `needs`, each is refused without it.
-CLI::Option* add_comparison_options(CLI::App* command, tumble::app::DiffCommandOptions& diff,
+CLI::Option* add_comparison_options(CLI::App* command, tumble::diff::DiffCommandOptions& diff,
                                     bool& ignore_antialiasing, CLI::Option* needs = nullptr) {
   const std::size_t before = command->get_options().size();
   command
@@ -105,8 +105,12 @@ CLI::Option* add_comparison_options(CLI::App* command, tumble::app::DiffCommandO
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace tumble::app;
-  set_up_process();
+  using namespace tumble::cli;
+  using namespace tumble::diff;
+  using namespace tumble::bench;
+  using namespace tumble::job;
+  using tumble::sys::set_up_process;
+  tumble::sys::set_up_process();
   CLI::App app{"tumble: rigid-body scenes to frames and video, headless"};
   app.require_subcommand(1);
 
@@ -121,7 +125,7 @@ int main(int argc, char** argv) {
       ->check(whole_number_in(1, LLONG_MAX, ">= 1"))
       ->capture_default_str();
 
-  RenderOptions render;
+  tumble::job::RenderOptions render;
   std::string frame_range;
   CLI::App* render_command = app.add_subcommand(
       "render", "Render a scene to PNG frames and videos (MP4, WebM, GIF), off-screen");
@@ -181,7 +185,7 @@ int main(int argc, char** argv) {
                    "small (zlib 9, adaptive filter)")
       ->check(CLI::IsMember({"fast", "default", "small"}))
       ->capture_default_str();
-  DiffCommandOptions golden;
+  tumble::diff::DiffCommandOptions golden;
   CLI::Option* golden_option =
       render_command
           ->add_option(
@@ -224,7 +228,7 @@ int main(int argc, char** argv) {
       ->check(kNotEmpty);
   join_command->add_flag("-q,--quiet", join.quiet, "No summary");
 
-  DiffCommandOptions diff;
+  tumble::diff::DiffCommandOptions diff;
   std::string diff_frames;
   CLI::App* diff_command = app.add_subcommand(
       "diff",
@@ -243,7 +247,7 @@ int main(int argc, char** argv) {
 
   CLI::App* bench_command = app.add_subcommand("bench", "Measure tumble's speed");
   bench_command->require_subcommand(1);
-  BenchPipelineOptions bench_pipeline;
+  tumble::bench::BenchPipelineOptions bench_pipeline;
   CLI::App* bench_pipeline_command = bench_command->add_subcommand(
       "pipeline", "Render one scene the naive ways and tumble's way, in one run, and compare");
   bench_pipeline_command->add_option(
@@ -281,7 +285,7 @@ int main(int argc, char** argv) {
   bench_accuracy_command->add_flag("--quick", bench_accuracy.quick,
                                    "A reduced sweep (3 cases, 2 step sizes, 1 timing) for tests");
 
-  BenchContactOptions bench_contact;
+  tumble::bench::BenchContactOptions bench_contact;
   CLI::App* bench_contact_command = bench_command->add_subcommand(
       "contact",
       "The pile of issue 12 in tumble and in Bullet 3.24 (through contact_bench), in one run");
@@ -309,20 +313,22 @@ int main(int argc, char** argv) {
 
   if (argc < 2) {
     std::fputs(app.help().c_str(), stderr);
-    return kExitBadInput;
+    return tumble::kExitBadInput;
   }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     const int code = app.exit(error);
-    return code == 0 ? kExitOk : kExitBadInput;
+    return code == 0 ? tumble::kExitOk : tumble::kExitBadInput;
   }
 
   const auto run_parsed = [&]() -> int {
     if (simulate_command->parsed()) return run_simulate(simulate, stderr);
-    if (bench_pipeline_command->parsed()) return run_bench_pipeline(bench_pipeline, stdout, stderr);
+    if (bench_pipeline_command->parsed())
+      return tumble::bench::run_bench_pipeline(bench_pipeline, stdout, stderr);
     if (bench_accuracy_command->parsed()) return run_bench_accuracy(bench_accuracy, stdout, stderr);
-    if (bench_contact_command->parsed()) return run_bench_contact(bench_contact, stdout, stderr);
+    if (bench_contact_command->parsed())
+      return tumble::bench::run_bench_contact(bench_contact, stdout, stderr);
     if (check_command->parsed()) return run_check(check, stdout, stderr);
     if (plan_command->parsed()) return run_plan(plan, stdout, stderr);
     if (join_command->parsed()) return run_join(join, stderr);
@@ -332,11 +338,11 @@ int main(int argc, char** argv) {
         if (!diff.frames) {
           std::fprintf(stderr, "tumble: --frames: expected A:B (frames A to B-1), got %s\n",
                        diff_frames.c_str());
-          return kExitBadInput;
+          return tumble::kExitBadInput;
         }
       }
       if (antialiasing->count() > 0) diff.ignore_antialiasing = diff_antialiasing;
-      return run_diff(diff, stdout, stderr);
+      return tumble::diff::run_diff(diff, stdout, stderr);
     }
     if (render_command->parsed()) {
       if (!frame_range.empty()) {
@@ -344,25 +350,25 @@ int main(int argc, char** argv) {
         if (!range) {
           std::fprintf(stderr, "tumble: --frames: expected A:B (frames A to B-1), got %s\n",
                        frame_range.c_str());
-          return kExitBadInput;
+          return tumble::kExitBadInput;
         }
         render.first_frame = range->first;
         render.end_frame = range->second;
       }
       if (!chunk_index.empty()) {
-        render.chunk = parse_chunk_index(chunk_index);
+        render.chunk = tumble::job::parse_chunk_index(chunk_index);
         if (!render.chunk) {
           std::fprintf(stderr,
                        "tumble: --chunk: expected I/N (chunk I of N, 1 <= I <= N), got %s\n",
                        chunk_index.c_str());
-          return kExitBadInput;
+          return tumble::kExitBadInput;
         }
       }
       render.png = *tumble::io::png_settings_named(png_compression);  // checked by IsMember
       for (const auto each : tumble::common::kAllBackends) {
         if (backend == tumble::render::backend_name(each)) render.backend = each;
       }
-      std::optional<DiffCommandOptions> compare;
+      std::optional<tumble::diff::DiffCommandOptions> compare;
       if (!golden.first_path.empty()) {
         if (golden_antialiasing_option->count() > 0) {
           golden.ignore_antialiasing = golden_antialiasing;
@@ -371,7 +377,7 @@ int main(int argc, char** argv) {
       }
       return run_render(render, compare, stdout, stderr);
     }
-    return kExitBadInput;
+    return tumble::kExitBadInput;
   };
   try {
     const int code = run_parsed();
@@ -380,10 +386,11 @@ int main(int argc, char** argv) {
     // failed otherwise has said why already.
     const bool flushed = std::fflush(stdout) == 0;
     const int reason = errno;
-    if ((!flushed || std::ferror(stdout)) && (code == kExitOk || code == kExitMismatch)) {
+    if ((!flushed || std::ferror(stdout)) &&
+        (code == tumble::kExitOk || code == tumble::kExitMismatch)) {
       std::fprintf(stderr, "tumble: error writing to standard output%s%s\n", flushed ? "" : ": ",
                    flushed ? "" : std::strerror(reason));
-      return kExitBadInput;
+      return tumble::kExitBadInput;
     }
     return code;
   } catch (const std::bad_alloc&) {
@@ -391,5 +398,5 @@ int main(int argc, char** argv) {
   } catch (const std::exception& error) {  // a last resort: each command reports its own errors
     std::fprintf(stderr, "tumble: %s\n", error.what());
   }
-  return kExitBadInput;
+  return tumble::kExitBadInput;
 }

@@ -3,18 +3,18 @@
 #include <string>
 #include <variant>
 
-#include "job/chunk_plan.hpp"
 #include "common/exit_codes.hpp"
 #include "io/json_text.hpp"
+#include "job/chunk_plan.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/video_rules.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 namespace {
 
 std::string plan_json(const scene::Scene& scene, std::int64_t frame_count,
-                      const std::vector<FrameRange>& ranges) {
-  std::string text = "{\"scene\": " + json_string(scene.name) +
+                      const std::vector<job::FrameRange>& ranges) {
+  std::string text = "{\"scene\": " + io::json_string(scene.name) +
                      ", \"frames\": " + std::to_string(frame_count) + ", \"chunks\": [";
   for (std::size_t i = 0; i < ranges.size(); ++i) {
     text += (i ? ", " : "") + std::string("{\"index\": ") + std::to_string(i + 1) +
@@ -38,7 +38,7 @@ int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err) {
   }
   // The overrides render takes, so that plan and render count the same frames.
   const Result<scene::Scene> scene =
-      scene_as_rendered(std::get<scene::Scene>(loaded), options.render);
+      job::scene_as_rendered(std::get<scene::Scene>(loaded), options.render);
   if (!scene) {
     std::fprintf(err, "tumble: %s\n", scene.error().c_str());
     return kExitBadInput;
@@ -46,10 +46,10 @@ int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err) {
   const std::int64_t frame_count = scene::frame_count(*scene);
   Result<std::int64_t> chunks = options.chunks
                                     ? Result<std::int64_t>(*options.chunks)
-                                    : chunks_of_at_most(frame_count, *options.chunk_frames);
-  const Result<std::vector<FrameRange>> ranges =
-      chunks ? plan_chunks(frame_count, *chunks)
-             : Result<std::vector<FrameRange>>(Error{chunks.error()});
+                                    : job::chunks_of_at_most(frame_count, *options.chunk_frames);
+  const Result<std::vector<job::FrameRange>> ranges =
+      chunks ? job::plan_chunks(frame_count, *chunks)
+             : Result<std::vector<job::FrameRange>>(Error{chunks.error()});
   if (!ranges) {
     std::fprintf(err, "tumble: %s: %s\n", options.render.scene_path.c_str(),
                  ranges.error().c_str());
@@ -58,9 +58,10 @@ int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err) {
   if (options.json) {
     std::fputs(plan_json(*scene, frame_count, *ranges).c_str(), out);
   } else {
-    for (const FrameRange& range : *ranges) std::fprintf(out, "%s\n", range_text(range).c_str());
+    for (const job::FrameRange& range : *ranges)
+      std::fprintf(out, "%s\n", job::range_text(range).c_str());
   }
   return kExitOk;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

@@ -9,10 +9,10 @@
 
 #include "job/render_job.hpp"  // RenderOptions
 
-namespace tumble::app {
+namespace tumble::cli {
 
 struct PlanOptions {
-  RenderOptions render;  // the scene and the overrides that change its frame count (--fps)
+  job::RenderOptions render;  // the scene and the overrides that change its frame count (--fps)
   std::optional<std::int64_t> chunks;        // --chunks N
   std::optional<std::int64_t> chunk_frames;  // --chunk-frames K: ceil(count / K) chunks
   bool json = false;
@@ -21,4 +21,4 @@ struct PlanOptions {
 // The plan goes to `out`, errors to `err`. Returns the process exit code.
 int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

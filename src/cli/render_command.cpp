@@ -9,19 +9,19 @@
 #include <thread>
 
 #include "common/exit_codes.hpp"
-#include "sys/interrupt.hpp"
+#include "io/atomic_file.hpp"
 #include "io/json_text.hpp"
+#include "io/staged_directory.hpp"
 #include "job/output_folder.hpp"
-#include "pipeline/progress.hpp"
 #include "job/render_golden.hpp"
 #include "job/render_job.hpp"
 #include "job/scene_hash.hpp"
-#include "scene/stability_report.hpp"
-#include "io/atomic_file.hpp"
-#include "io/staged_directory.hpp"
+#include "pipeline/progress.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/stability_report.hpp"
+#include "sys/interrupt.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -31,7 +31,7 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::string stage_json(const StageTime& stage) {
+std::string stage_json(const pipeline::StageTime& stage) {
   std::ostringstream out;
   out.precision(6);
   out << "{\"cpu\": " << stage.cpu << ", \"wall\": " << stage.wall << "}";
@@ -41,7 +41,7 @@ std::string stage_json(const StageTime& stage) {
 // What `tumble join` requires to be the same in every chunk (besides the scene's hash): what
 // decides the pixels of the frames and the bytes of the files. The videos' pixel formats and
 // encoder threads are fixed by the build, and io::join_videos compares the stream headers.
-std::string settings_json(const RenderJob& job, const RenderResult& result) {
+std::string settings_json(const job::RenderJob& job, const job::RenderResult& result) {
   const scene::Scene& scene = job.scene;
   std::ostringstream out;
   out << "{\"width\": " << scene.render.width << ", \"height\": " << scene.render.height
@@ -51,34 +51,36 @@ std::string settings_json(const RenderJob& job, const RenderResult& result) {
       << ", \"png_filter\": " << (job.png.filter ? "true" : "false")
       << ", \"video\": " << (scene.output.video ? "true" : "false") << ", \"formats\": [";
   for (std::size_t i = 0; i < scene.output.formats.size(); ++i) {
-    out << (i ? ", " : "") << json_string(io::video_format_name(scene.output.formats[i]));
+    out << (i ? ", " : "") << io::json_string(io::video_format_name(scene.output.formats[i]));
   }
-  out << "], \"crf\": " << scene.output.crf << ", \"preset\": " << json_string(scene.output.preset)
-      << ", \"opengl\": " << json_string(result.opengl) << "}";
+  out << "], \"crf\": " << scene.output.crf
+      << ", \"preset\": " << io::json_string(scene.output.preset)
+      << ", \"opengl\": " << io::json_string(result.opengl) << "}";
   return out.str();
 }
 
-std::string chunk_json(const RenderJob& job) {
+std::string chunk_json(const job::RenderJob& job) {
   if (!job.chunk) return "null";
   return "{\"index\": " + std::to_string(job.chunk->index) +
          ", \"count\": " + std::to_string(job.chunk->count) + "}";
 }
 
 // {"mp4": path, "webm": path, ...}: every video the render wrote, in [output] formats order.
-std::string videos_json(const RenderJob& job) {
+std::string videos_json(const job::RenderJob& job) {
   std::string out = "{";
   for (const io::VideoFormat format : job.scene.output.formats) {
     const std::string path = job.video_path(job.directory, format);
     if (path.empty()) continue;
-    out += (out.size() > 1 ? ", " : "") + json_string(io::video_format_name(format)) + ": " +
-           json_string(path);
+    out += (out.size() > 1 ? ", " : "") + io::json_string(io::video_format_name(format)) + ": " +
+           io::json_string(path);
   }
   return out + "}";
 }
 
-std::string report_json(const RenderJob& job, const RenderResult& result, double total_seconds) {
+std::string report_json(const job::RenderJob& job, const job::RenderResult& result,
+                        double total_seconds) {
   const scene::Scene& scene = job.scene;
-  const PipelineReport& p = result.pipeline;
+  const pipeline::PipelineReport& p = result.pipeline;
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   // (CPU seconds of every stage / cores) / wall seconds: 1 when every core worked all the time.
   const double efficiency = p.wall > 0 ? p.process_cpu / cores / p.wall : 0.0;
@@ -87,32 +89,32 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
   std::ostringstream out;
   out.precision(17);
   // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
-  out << "{\n  \"scene\": " << json_string(scene.name)
-      << ",\n  \"scene_file\": " << json_string(scene.source_path)
-      << ",\n  \"scene_hash\": " << json_string(job.scene_hash)
+  out << "{\n  \"scene\": " << io::json_string(scene.name)
+      << ",\n  \"scene_file\": " << io::json_string(scene.source_path)
+      << ",\n  \"scene_hash\": " << io::json_string(job.scene_hash)
       << ",\n  \"scene_frames\": " << job.frame_count << ",\n  \"chunk\": " << chunk_json(job)
       << ",\n  \"settings\": " << settings_json(job, result)
       << ",\n  \"width\": " << scene.render.width << ",\n  \"height\": " << scene.render.height
       << ",\n  \"fps\": " << scene.fps << ",\n  \"msaa\": " << scene.render.msaa
-      << ",\n  \"antialiasing\": " << json_string(antialiasing_name(scene.render.msaa))
+      << ",\n  \"antialiasing\": " << io::json_string(job::antialiasing_name(scene.render.msaa))
       << ",\n  \"dt\": " << scene.physics.dt << ",\n  \"integrator\": "
-      << json_string(std::string(physics::integrator_name(scene.physics.integrator)))
+      << io::json_string(std::string(physics::integrator_name(scene.physics.integrator)))
       << ",\n  \"frames\": {\"first\": " << job.first << ", \"end\": " << job.end
       << ", \"count\": " << job.end - job.first << "},\n  \"frames_directory\": "
-      << (frames_directory.empty() ? "null" : json_string(frames_directory))
-      << ",\n  \"video\": " << (video_path.empty() ? "null" : json_string(video_path))
+      << (frames_directory.empty() ? "null" : io::json_string(frames_directory))
+      << ",\n  \"video\": " << (video_path.empty() ? "null" : io::json_string(video_path))
       << ",\n  \"videos\": " << videos_json(job)
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
-      << ",\n  \"renderer\": " << json_string(result.renderer)
-      << ",\n  \"backend\": " << json_string(result.backend)
-      << ",\n  \"device\": " << (result.device.empty() ? "null" : json_string(result.device))
+      << ",\n  \"renderer\": " << io::json_string(result.renderer)
+      << ",\n  \"backend\": " << io::json_string(result.backend)
+      << ",\n  \"device\": " << (result.device.empty() ? "null" : io::json_string(result.device))
       << ",\n  \"physics_steps\": {\"framing\": " << result.framing_steps
       << ", \"frames\": " << result.frame_steps << ", \"to_first_frame\": " << result.seek_steps
       << "}"
       << ",\n  \"stages\": {\"simulate\": " << stage_json(p.simulate)
       << ", \"render\": " << stage_json(p.render);
   for (std::size_t i = 0; i < result.stages.size(); ++i) {
-    out << ", " << json_string(result.stages[i]) << ": " << stage_json(p.sinks[i]);
+    out << ", " << io::json_string(result.stages[i]) << ": " << stage_json(p.sinks[i]);
   }
   out << "},\n  \"seconds\": {\"setup\": " << result.setup_seconds << ", \"frames\": " << p.wall
       << ", \"finish\": " << result.finish_seconds << ", \"total\": " << total_seconds
@@ -121,14 +123,14 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
       << ", \"to_first_frame\": " << result.seek_seconds
       << "},\n  \"frames_per_second\": " << (p.wall > 0 ? p.frames_done / p.wall : 0.0)
       << ",\n  \"cores\": " << cores << ",\n  \"pipeline_efficiency\": " << efficiency
-      << ",\n  \"peak_memory_bytes\": " << peak_memory_bytes() << ",\n  \"bodies\": [";
+      << ",\n  \"peak_memory_bytes\": " << job::peak_memory_bytes() << ",\n  \"bodies\": [";
   for (std::size_t i = 0; i < result.bodies.size(); ++i) {
-    const BodyDiagnostics& b = result.bodies[i];
-    out << (i ? "," : "") << "\n    {\"name\": " << json_string(scene.bodies[i].name)
-        << ", \"energy_start\": " << json_number(b.energy_start)
-        << ", \"energy_end\": " << json_number(b.energy_end)
-        << ", \"angular_momentum_start\": " << json_number(b.angular_momentum_start)
-        << ", \"angular_momentum_end\": " << json_number(b.angular_momentum_end) << "}";
+    const job::BodyDiagnostics& b = result.bodies[i];
+    out << (i ? "," : "") << "\n    {\"name\": " << io::json_string(scene.bodies[i].name)
+        << ", \"energy_start\": " << io::json_number(b.energy_start)
+        << ", \"energy_end\": " << io::json_number(b.energy_end)
+        << ", \"angular_momentum_start\": " << io::json_number(b.angular_momentum_start)
+        << ", \"angular_momentum_end\": " << io::json_number(b.angular_momentum_end) << "}";
   }
   out << "\n  ]\n}\n";
   return out.str();
@@ -136,10 +138,11 @@ std::string report_json(const RenderJob& job, const RenderResult& result, double
 
 }  // namespace
 
-int run_render(const RenderOptions& options, const std::optional<DiffCommandOptions>& golden,
-               std::FILE* out, std::FILE* err) {
+int run_render(const job::RenderOptions& options,
+               const std::optional<diff::DiffCommandOptions>& golden, std::FILE* out,
+               std::FILE* err) {
   const auto start = Clock::now();
-  install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
+  sys::install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
   const Result<std::string> text = scene::read_scene_text(options.scene_path);
   if (!text) {
     std::fprintf(err, "tumble: %s\n", text.error().c_str());
@@ -150,24 +153,24 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
     return kExitBadInput;
   }
-  Result<RenderJob> made = make_render_job(std::get<scene::Scene>(loaded), options);
+  Result<job::RenderJob> made = job::make_render_job(std::get<scene::Scene>(loaded), options);
   if (!made) {
     std::fprintf(err, "tumble: %s\n", made.error().c_str());
     return kExitBadInput;
   }
-  made->scene_hash = scene_hash(*text, made->scene);
-  const RenderJob& job = *made;
+  made->scene_hash = job::scene_hash(*text, made->scene);
+  const job::RenderJob& job = *made;
   if (golden) {
-    if (const std::string problem = golden_problem(*golden, job); !problem.empty()) {
+    if (const std::string problem = job::golden_problem(*golden, job); !problem.empty()) {
       std::fprintf(err, "tumble: %s\n", problem.c_str());
       return kExitBadInput;
     }
   }
-  if (!options.quiet) print_stability_warnings(job.scene, err);
+  if (!options.quiet) scene::print_stability_warnings(job.scene, err);
 
   // Everything is written into a hidden folder beside the final one and swapped in at the end:
   // a failed or interrupted render leaves the earlier output as it was.
-  if (const std::string problem = replace_problem(job.output_root, job.scene.output.directory);
+  if (const std::string problem = job::replace_problem(job.output_root, job.scene.output.directory);
       !problem.empty()) {
     std::fprintf(err, "tumble: %s\n", problem.c_str());
     return kExitBadInput;
@@ -179,9 +182,9 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
   }
   const fs::path staging = staged.path();
   const std::int64_t count = job.end - job.first;
-  Progress progress(count, options.quiet, err);
-  const RenderResult result = render_scene(
-      job, staging, [] { return interrupt_signal() != 0; },
+  pipeline::Progress progress(count, options.quiet, err);
+  const job::RenderResult result = job::render_scene(
+      job, staging, [] { return sys::interrupt_signal() != 0; },
       [&](std::int64_t done) { progress.update(done); });
   progress.finish();
   if (!options.quiet) {
@@ -197,8 +200,8 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
                  static_cast<long long>(result.pipeline.frames_done), static_cast<long long>(count),
                  job.directory.c_str());
   };
-  if (const int signal = interrupt_signal()) {
-    stopped(std::string("stopped by ") + signal_name(signal));
+  if (const int signal = sys::interrupt_signal()) {
+    stopped(std::string("stopped by ") + sys::signal_name(signal));
     return kExitInterrupted + signal;
   }
   if (!result.error.empty()) {
@@ -211,7 +214,7 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
   std::string error = io::write_file_atomically((staging / "report.json").string(),
                                                 report_json(job, result, total_seconds));
   // Checked again: the folder may have been made or filled while the frames were drawn.
-  if (error.empty()) error = replace_problem(job.output_root, job.scene.output.directory);
+  if (error.empty()) error = job::replace_problem(job.output_root, job.scene.output.directory);
   if (error.empty() && !staged.commit()) error = staged.error();
   if (!error.empty()) {
     std::fprintf(err, "tumble: %s\n", error.c_str());
@@ -230,7 +233,7 @@ int run_render(const RenderOptions& options, const std::optional<DiffCommandOpti
                  static_cast<long long>(count), total_seconds,
                  static_cast<double>(count) / total_seconds, drawn_by.c_str(), shown.c_str());
   }
-  return golden ? compare_with_golden(*golden, job, out, err) : kExitOk;
+  return golden ? job::compare_with_golden(*golden, job, out, err) : kExitOk;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

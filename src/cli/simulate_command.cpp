@@ -8,15 +8,15 @@
 #include <variant>
 
 #include "common/exit_codes.hpp"
-#include "sys/interrupt.hpp"
-#include "scene/stability_report.hpp"
 #include "io/atomic_file.hpp"
 #include "io/state_csv.hpp"
 #include "physics/rigid_body.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene/stability_report.hpp"
+#include "sys/interrupt.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 namespace {
 
 io::StateRow state_row(const physics::BodyState& s) {
@@ -44,20 +44,20 @@ bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation
 }  // namespace
 
 int run_simulate(const SimulateOptions& options, std::FILE* err) {
-  install_interrupt_handlers();  // from the start: a signal is acted on at the first step
+  sys::install_interrupt_handlers();  // from the start: a signal is acted on at the first step
   const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
   if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
     std::fprintf(err, "tumble: %s\n", error->message.c_str());
     return kExitBadInput;
   }
   const scene::Scene& scene = std::get<scene::Scene>(loaded);
-  print_stability_warnings(scene, err);
+  scene::print_stability_warnings(scene, err);
 
   std::unique_ptr<io::AtomicFile> file;
   double time = 0.0;  // s: how far the run got
   // Either leaves the file unwritten: AtomicFile removes its temporary file when not committed.
   const auto stopped = [&](int signal) {
-    std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", signal_name(signal),
+    std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", sys::signal_name(signal),
                  time, scene.duration,
                  file ? (options.out + " was not written").c_str() : "output incomplete");
     // Rows still buffered for standard output are dropped: flushing them at exit could block
@@ -68,7 +68,8 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
   std::FILE* out = stdout;
   if (options.out != "-") {
     file = std::make_unique<io::AtomicFile>(options.out);
-    if (const int signal = interrupt_signal()) return stopped(signal);  // a FIFO's open, cut short
+    if (const int signal = sys::interrupt_signal())
+      return stopped(signal);  // a FIFO's open, cut short
     if (!file->ok()) {
       std::fprintf(err, "tumble: %s\n", file->error().c_str());
       return kExitBadInput;
@@ -82,21 +83,21 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
   for (std::int64_t n = 1; n <= steps && ok; ++n) {
     simulation.step();
     time = simulation.time();
-    if (const int signal = interrupt_signal()) return stopped(signal);
+    if (const int signal = sys::interrupt_signal()) return stopped(signal);
     if (const auto& blow_up = simulation.blow_up()) {
-      std::fprintf(err, "tumble: %s\n", blow_up_message(scene, *blow_up).c_str());
+      std::fprintf(err, "tumble: %s\n", scene::blow_up_message(scene, *blow_up).c_str());
       return kExitBadInput;
     }
     if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
   }
   // A write blocked on a full pipe and cut short by the signal fails with EINTR: a stop too,
   // before a flush could block on that pipe again.
-  if (const int signal = interrupt_signal()) return stopped(signal);
+  if (const int signal = sys::interrupt_signal()) return stopped(signal);
   // commit() also says why an earlier write failed; a failed file is never put in place.
   ok = (file ? file->commit() : std::fflush(out) == 0) && ok;
   if (ok) return kExitOk;
   const int reason = errno;
-  if (const int signal = interrupt_signal()) return stopped(signal);  // during that last flush
+  if (const int signal = sys::interrupt_signal()) return stopped(signal);  // during that last flush
   if (file) {
     std::fprintf(err, "tumble: %s\n", file->error().c_str());
   } else {
@@ -105,4 +106,4 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
   return kExitBadInput;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

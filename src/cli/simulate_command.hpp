@@ -7,7 +7,7 @@
 
 #include "common/exit_codes.hpp"
 
-namespace tumble::app {
+namespace tumble::cli {
 
 struct SimulateOptions {
   std::string scene_path;
@@ -18,4 +18,4 @@ struct SimulateOptions {
 // Runs the command; messages go to `err`. Returns the process exit code.
 int run_simulate(const SimulateOptions& options, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::cli

@@ -8,7 +8,7 @@
 #include <mutex>
 #include <optional>
 
-namespace tumble::app {
+namespace tumble::common {
 
 template <typename T>
 class BoundedQueue {
@@ -62,4 +62,4 @@ class BoundedQueue {
   std::condition_variable not_empty_;
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::common

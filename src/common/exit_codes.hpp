@@ -1,7 +1,7 @@
 // Exit codes shared by every command.
 #pragma once
 
-namespace tumble::app {
+namespace tumble {
 
 // kExitMismatch: the command ran but its check failed (e.g. `tumble diff` found differences).
 // kExitBadInput: bad usage, a bad scene or image, or a failure to write the output.
@@ -9,4 +9,4 @@ namespace tumble::app {
 // shell reports a program killed by it.
 enum ExitCode : int { kExitOk = 0, kExitMismatch = 1, kExitBadInput = 2, kExitInterrupted = 128 };
 
-}  // namespace tumble::app
+}  // namespace tumble

@@ -9,11 +9,11 @@
 #include "diff/diff_outputs.hpp"
 #include "diff/diff_run.hpp"
 #include "diff/diff_text.hpp"
-#include "io/image.hpp"
 #include "diff/image_diff.hpp"
+#include "io/image.hpp"
 #include "io/png_io.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 namespace {
 
 std::string size_text(const io::Image& image) {
@@ -27,12 +27,12 @@ bool read(const std::string& path, io::Image& image, std::FILE* err) {
 }
 
 // The threshold in the metric's unit, checked against its range: "" or why it is refused.
-std::string parse_threshold(io::DiffMetric metric, const std::string& text, double& out) {
+std::string parse_threshold(diff::DiffMetric metric, const std::string& text, double& out) {
   if (text.empty()) {
-    out = io::default_threshold(metric);
+    out = diff::default_threshold(metric);
     return {};
   }
-  if (metric == io::DiffMetric::max) {
+  if (metric == diff::DiffMetric::max) {
     long long whole = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), whole);
     if (error != std::errc() || end != text.data() + text.size() || whole < 0 || whole > 255) {
@@ -43,20 +43,20 @@ std::string parse_threshold(io::DiffMetric metric, const std::string& text, doub
   }
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
-  const double top = metric == io::DiffMetric::rms    ? 255.0
-                     : metric == io::DiffMetric::psnr ? 1000.0
-                                                      : 1.0;
+  const double top = metric == diff::DiffMetric::rms    ? 255.0
+                     : metric == diff::DiffMetric::psnr ? 1000.0
+                                                        : 1.0;
   if (end == text.c_str() || *end != '\0' || !std::isfinite(value) || value < 0 || value > top) {
     return "--threshold: expected a number from 0 to " + std::to_string(static_cast<int>(top)) +
-           " for --metric " + io::diff_metric_name(metric) + ", got " + text;
+           " for --metric " + diff::diff_metric_name(metric) + ", got " + text;
   }
   out = value;
   return {};
 }
 
 // The options as criteria for one frame: "" or why they do not fit together.
-std::string criteria_from(const DiffCommandOptions& options, io::FrameCriteria& criteria) {
-  const std::optional<io::DiffMetric> metric = io::diff_metric_named(options.metric);
+std::string criteria_from(const DiffCommandOptions& options, diff::FrameCriteria& criteria) {
+  const std::optional<diff::DiffMetric> metric = diff::diff_metric_named(options.metric);
   if (!metric)
     return "--metric: expected max, rms, perceptual, ssim or psnr, got " + options.metric;
   criteria.metric = *metric;
@@ -64,15 +64,15 @@ std::string criteria_from(const DiffCommandOptions& options, io::FrameCriteria& 
       !error.empty()) {
     return error;
   }
-  const bool per_pixel = io::counts_pixels(*metric);
+  const bool per_pixel = diff::counts_pixels(*metric);
   if (!per_pixel && (options.max_pixels || options.max_percent || options.ignore_antialiasing)) {
     return std::string(
                "--max-pixels, --max-percent and --ignore-antialiasing judge pixels: they "
                "apply to --metric max and perceptual, not ") +
-           io::diff_metric_name(*metric);
+           diff::diff_metric_name(*metric);
   }
   criteria.ignore_antialiasing =
-      options.ignore_antialiasing.value_or(*metric == io::DiffMetric::perceptual);
+      options.ignore_antialiasing.value_or(*metric == diff::DiffMetric::perceptual);
   criteria.max_pixels = options.max_pixels.value_or(0);
   criteria.max_percent = options.max_percent.value_or(-1.0);
   return {};
@@ -106,8 +106,9 @@ int diff_images(const DiffCommandOptions& options, const SequenceOptions& settin
                  size_text(second).c_str());
     return kExitBadInput;
   }
-  const io::Image picture =
-      options.out.empty() ? io::Image() : io::difference_picture(first, second, settings.criteria);
+  const io::Image picture = options.out.empty()
+                                ? io::Image()
+                                : diff::difference_picture(first, second, settings.criteria);
   const SequenceDiff diff = compare_pair(first, second, options.second_path, settings);
   std::fprintf(out, "%s\n", outcome_text(diff.frames.front(), settings.criteria).c_str());
   std::fflush(out);
@@ -204,4 +205,4 @@ int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err) 
                 : diff_sequences(options, *settings, out, err);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

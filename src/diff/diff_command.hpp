@@ -8,16 +8,16 @@
 #include <string>
 #include <utility>
 
-#include "diff/diff_run.hpp"
 #include "common/exit_codes.hpp"
 #include "common/result.hpp"
+#include "diff/diff_run.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 
 struct DiffCommandOptions {
   std::string first_path;                   // A, the expected frames
   std::string second_path;                  // B, the actual frames
-  std::string metric = "max";               // max, rms, perceptual, ssim or psnr (io::DiffMetric)
+  std::string metric = "max";               // max, rms, perceptual, ssim or psnr (diff::DiffMetric)
   std::string threshold;                    // in the metric's unit; empty for its default
   std::optional<bool> ignore_antialiasing;  // unset: on for perceptual only
   std::optional<std::int64_t> max_pixels;   // a frame matches when at most this many differ (0)
@@ -39,4 +39,4 @@ Result<SequenceOptions> diff_settings(const DiffCommandOptions& options);
 // not, kExitBadInput when the inputs cannot be compared or an output cannot be written.
 int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <system_error>
 
-namespace tumble::app {
+namespace tumble::diff {
 namespace fs = std::filesystem;
 namespace {
 
@@ -69,4 +69,4 @@ std::string resolve_diff_input(const std::string& path, DiffInput& out) {
   return {};
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace tumble::app {
+namespace tumble::diff {
 
 enum class DiffInputKind { png, folder, video };
 
@@ -24,4 +24,4 @@ bool names_png(const std::string& path);
 // path, a folder with no PNG frames.
 std::string resolve_diff_input(const std::string& path, DiffInput& out);
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

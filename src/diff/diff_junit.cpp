@@ -4,7 +4,7 @@
 
 #include "diff/diff_text.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 namespace {
 
 std::string test_case(const std::string& name, const std::string& failure) {
@@ -50,4 +50,4 @@ std::string write_diff_junit(const std::string& path, const DiffSubject& subject
   return write_text_atomically(path, text);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

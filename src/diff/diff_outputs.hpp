@@ -8,13 +8,13 @@
 #include "diff/diff_run.hpp"
 #include "diff/image_diff.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 
 // What was compared with what, and how: the heading of every output.
 struct DiffSubject {
   std::string first_path;   // A, the expected frames
   std::string second_path;  // B, the actual frames
-  io::FrameCriteria criteria;
+  diff::FrameCriteria criteria;
 };
 
 // Writes `text` to `path` through io::AtomicFile: "" or the error naming the file.
@@ -31,4 +31,4 @@ std::string write_diff_junit(const std::string& path, const DiffSubject& subject
 std::string write_diff_report(const std::string& folder, const DiffSubject& subject,
                               const SequenceDiff& diff);
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

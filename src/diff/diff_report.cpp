@@ -7,7 +7,7 @@
 #include "io/png_io.hpp"
 #include "io/staged_directory.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 namespace {
 
 constexpr const char* kStyle =
@@ -33,7 +33,7 @@ std::string table_row(const FrameOutcome& frame) {
                                                         : frame.problem) +
                     "</td>";
   if (!frame.figures) return row + "<td colspan=\"7\"></td></tr>\n";
-  const io::FrameFigures& f = *frame.figures;
+  const diff::FrameFigures& f = *frame.figures;
   row += "<td>" + std::to_string(f.differing_pixels) + "</td><td>" +
          std::to_string(f.antialiased_pixels) + "</td><td>" +
          (f.quantised_pixels ? std::to_string(*f.quantised_pixels) : std::string()) + "</td><td>" +
@@ -64,7 +64,7 @@ std::string figure(const std::string& file, const std::string& caption) {
 
 // The kept frame's three PNGs into `folder`, and its section of the page.
 std::string kept_section(const KeptFrame& kept, const SequenceDiff& diff,
-                         const io::FrameCriteria& criteria, const std::string& folder,
+                         const diff::FrameCriteria& criteria, const std::string& folder,
                          std::string& error) {
   const io::Image* images[] = {&kept.first, &kept.second, &kept.difference};
   const char* roles[] = {"expected", "actual", "difference"};
@@ -89,7 +89,7 @@ std::string write_diff_report(const std::string& folder, const DiffSubject& subj
                               const SequenceDiff& diff) {
   io::StagedDirectory staged(folder);
   if (!staged.ok()) return staged.error();
-  const io::FrameCriteria& criteria = subject.criteria;
+  const diff::FrameCriteria& criteria = subject.criteria;
   std::string sections;
   std::string error;
   for (const KeptFrame& kept : diff.worst) {
@@ -119,4 +119,4 @@ std::string write_diff_report(const std::string& folder, const DiffSubject& subj
   return {};
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

@@ -13,7 +13,7 @@
 #include "io/png_io.hpp"
 #include "io/video_decoder.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 namespace {
 
 // Two frames of videos at the same position belong together only if shown at the same time;
@@ -83,11 +83,11 @@ std::string size_text(const io::Image& image) {
 // the same order whichever thread offers which frame first.
 class WorstFrames {
  public:
-  explicit WorstFrames(io::DiffMetric metric) : metric_(metric) {}
+  explicit WorstFrames(diff::DiffMetric metric) : metric_(metric) {}
 
-  void offer(KeptFrame frame, const io::FrameFigures& figures) {
+  void offer(KeptFrame frame, const diff::FrameFigures& figures) {
     std::lock_guard lock(mutex_);
-    frames_.push_back({io::badness(figures, metric_), std::move(frame)});
+    frames_.push_back({diff::badness(figures, metric_), std::move(frame)});
     std::sort(frames_.begin(), frames_.end(), [](const Ranked& a, const Ranked& b) {
       return a.badness != b.badness ? a.badness > b.badness : a.frame.index < b.frame.index;
     });
@@ -105,7 +105,7 @@ class WorstFrames {
     double badness;
     KeptFrame frame;
   };
-  io::DiffMetric metric_;
+  diff::DiffMetric metric_;
   std::mutex mutex_;
   std::vector<Ranked> frames_;
 };
@@ -146,12 +146,12 @@ std::string judge(Job& job, const SequenceOptions& options, FrameOutcome& outcom
     return {};
   }
   outcome.problem = timing_problem(job.first, job.second);
-  outcome.figures = io::compare_frame(a, b, options.criteria, job.allowance);
+  outcome.figures = diff::compare_frame(a, b, options.criteria, job.allowance);
   outcome.match = outcome.problem.empty() && outcome.figures->match;
   if (!outcome.match && options.keep_images) {
     KeptFrame kept{job.index, std::move(job.first.image), std::move(job.second.image), {}};
     kept.difference =
-        io::difference_picture(kept.first, kept.second, options.criteria, job.allowance);
+        diff::difference_picture(kept.first, kept.second, options.criteria, job.allowance);
     worst.offer(std::move(kept), *outcome.figures);
   }
   return {};
@@ -163,7 +163,7 @@ template <typename Produce>
 SequenceDiff run_jobs(const SequenceOptions& options, Produce produce) {
   const unsigned threads =
       options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  BoundedQueue<Job> jobs(2 * threads);  // enough to keep workers busy, few frames in memory
+  common::BoundedQueue<Job> jobs(2 * threads);  // enough to keep workers busy, few frames in memory
   WorstFrames worst(options.criteria.metric);
   std::mutex mutex;
   SequenceDiff diff;
@@ -196,11 +196,11 @@ SequenceDiff run_jobs(const SequenceOptions& options, Produce produce) {
 // What was done to a folder's PNGs to compare them with a video, or "" when nothing was.
 std::string adaptation_text(const char* video, const char* folder,
                             const io::VideoPictureFormat& format,
-                            const io::QuantisationAllowance& allowance, io::DiffMetric metric) {
+                            const io::QuantisationAllowance& allowance, diff::DiffMetric metric) {
   if (format.yuv_format < 0) return {};
   std::string text = std::string(folder) + "'s frames converted to " + io::describe(format) +
                      " and back for comparison with video " + video;
-  if (metric != io::DiffMetric::perceptual || !allowance.active()) return text;
+  if (metric != diff::DiffMetric::perceptual || !allowance.active()) return text;
   char quantiser[160];
   std::snprintf(quantiser, sizeof quantiser,
                 "; differences within %s's H.264 quantisation not counted (coarsest QP %d: "
@@ -215,7 +215,7 @@ std::string video_frame_name(std::int64_t index) {
 
 // Two folders: pairs by file name, over the names either holds.
 std::string produce_by_name(const DiffInput& first, const DiffInput& second,
-                            const SequenceOptions& options, BoundedQueue<Job>& jobs,
+                            const SequenceOptions& options, common::BoundedQueue<Job>& jobs,
                             SequenceDiff& diff) {
   std::set<std::string> names(first.frames.begin(), first.frames.end());
   names.insert(second.frames.begin(), second.frames.end());
@@ -240,7 +240,7 @@ std::string produce_by_name(const DiffInput& first, const DiffInput& second,
 
 // Any other two inputs: frame k with frame k, until both end or the range does.
 std::string produce_by_position(const DiffInput& first, const DiffInput& second,
-                                const SequenceOptions& options, BoundedQueue<Job>& jobs,
+                                const SequenceOptions& options, common::BoundedQueue<Job>& jobs,
                                 SequenceDiff& diff) {
   FrameFeed first_feed(first), second_feed(second);
   if (std::string error = first_feed.open(); !error.empty()) return error;
@@ -288,7 +288,7 @@ bool SequenceDiff::match() const {
 SequenceDiff compare_sequences(const DiffInput& first, const DiffInput& second,
                                const SequenceOptions& options) {
   const bool by_name = first.kind == DiffInputKind::folder && second.kind == DiffInputKind::folder;
-  return run_jobs(options, [&](BoundedQueue<Job>& jobs, SequenceDiff& diff) {
+  return run_jobs(options, [&](common::BoundedQueue<Job>& jobs, SequenceDiff& diff) {
     return by_name ? produce_by_name(first, second, options, jobs, diff)
                    : produce_by_position(first, second, options, jobs, diff);
   });
@@ -298,7 +298,7 @@ SequenceDiff compare_pair(io::Image first, io::Image second, const std::string& 
                           const SequenceOptions& options) {
   SequenceOptions one = options;
   one.threads = 1;
-  return run_jobs(one, [&](BoundedQueue<Job>& jobs, SequenceDiff& diff) {
+  return run_jobs(one, [&](common::BoundedQueue<Job>& jobs, SequenceDiff& diff) {
     Job job{0, name, {}, {}, {}};
     job.first.present = job.second.present = true;
     job.first.image = std::move(first);
@@ -309,4 +309,4 @@ SequenceDiff compare_pair(io::Image first, io::Image second, const std::string& 
   });
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "diff/diff_inputs.hpp"
-#include "io/image.hpp"
 #include "diff/image_diff.hpp"
+#include "io/image.hpp"
 #include "io/video_decoder.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 
 // One side of a frame pair, as the producer hands it to a worker.
 struct DiffSide {
@@ -28,10 +28,10 @@ struct DiffSide {
 };
 
 struct FrameOutcome {
-  std::int64_t index = 0;                   // position in the comparison, from 0
-  std::string name;                         // the frame's file name, or "frame N" for video frames
-  std::string problem;                      // why it cannot be compared ("missing from B"), else ""
-  std::optional<io::FrameFigures> figures;  // when compared
+  std::int64_t index = 0;  // position in the comparison, from 0
+  std::string name;        // the frame's file name, or "frame N" for video frames
+  std::string problem;     // why it cannot be compared ("missing from B"), else ""
+  std::optional<diff::FrameFigures> figures;  // when compared
   bool match = false;
 };
 
@@ -42,7 +42,7 @@ struct KeptFrame {
 };
 
 struct SequenceOptions {
-  io::FrameCriteria criteria;
+  diff::FrameCriteria criteria;
   std::int64_t first_frame = 0;  // compare frames first_frame .. end_frame-1
   std::int64_t end_frame = INT64_MAX;
   bool keep_images = false;  // fill SequenceDiff::worst
@@ -74,4 +74,4 @@ SequenceDiff compare_sequences(const DiffInput& first, const DiffInput& second,
 SequenceDiff compare_pair(io::Image first, io::Image second, const std::string& name,
                           const SequenceOptions& options);
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

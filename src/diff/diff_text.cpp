@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace tumble::app {
+namespace tumble::diff {
 namespace {
 
 std::string number_text(const char* format, double value) {
@@ -13,7 +13,8 @@ std::string number_text(const char* format, double value) {
   return text;
 }
 
-std::string pixel_count_text(const io::FrameFigures& figures, const io::FrameCriteria& criteria) {
+std::string pixel_count_text(const diff::FrameFigures& figures,
+                             const diff::FrameCriteria& criteria) {
   std::string text = std::to_string(figures.differing_pixels) + " of " +
                      std::to_string(figures.pixels) + " pixels differ (" +
                      percent_text(figures.differing_pixels, figures.pixels) + ")";
@@ -41,25 +42,25 @@ std::string percent_text(std::int64_t part, std::int64_t whole) {
   return text;
 }
 
-std::string figures_text(const io::FrameFigures& figures, const io::FrameCriteria& criteria) {
+std::string figures_text(const diff::FrameFigures& figures, const diff::FrameCriteria& criteria) {
   const std::string largest =
       "largest channel difference " + std::to_string(figures.max_channel_difference);
   const std::string rms = number_text("RMS %.4g", figures.rms);
   switch (criteria.metric) {
-    case io::DiffMetric::max:
-    case io::DiffMetric::perceptual:
+    case diff::DiffMetric::max:
+    case diff::DiffMetric::perceptual:
       return pixel_count_text(figures, criteria) + ", " + largest + ", " + rms;
-    case io::DiffMetric::rms:
+    case diff::DiffMetric::rms:
       return rms + ", " + largest;
-    case io::DiffMetric::ssim:
+    case diff::DiffMetric::ssim:
       return number_text("SSIM %.5f", figures.ssim.value_or(0.0)) + ", " + rms;
-    case io::DiffMetric::psnr:
+    case diff::DiffMetric::psnr:
       return psnr_text(figures.psnr) + ", " + rms;
   }
   return {};
 }
 
-std::string outcome_text(const FrameOutcome& outcome, const io::FrameCriteria& criteria) {
+std::string outcome_text(const FrameOutcome& outcome, const diff::FrameCriteria& criteria) {
   std::string text = outcome.match ? "match" : "mismatch";
   if (!outcome.problem.empty()) text += ": " + outcome.problem;
   if (outcome.figures) text += ": " + figures_text(*outcome.figures, criteria);
@@ -106,21 +107,21 @@ std::string verdict_text(const SequenceDiff& diff) {
   return text;
 }
 
-std::string criteria_text(const io::FrameCriteria& criteria) {
+std::string criteria_text(const diff::FrameCriteria& criteria) {
   const std::string threshold = number_text("%g", criteria.threshold);
   switch (criteria.metric) {
-    case io::DiffMetric::max:
+    case diff::DiffMetric::max:
       return "max, threshold " + threshold + " (channel levels 0-255)";
-    case io::DiffMetric::rms:
+    case diff::DiffMetric::rms:
       return "rms, threshold " + threshold + " (channel levels 0-255)";
-    case io::DiffMetric::perceptual:
+    case diff::DiffMetric::perceptual:
       return "perceptual, threshold " + threshold + " (YIQ distance 0-1)";
-    case io::DiffMetric::ssim:
+    case diff::DiffMetric::ssim:
       return "ssim, threshold " + threshold + " (mean SSIM 0-1)";
-    case io::DiffMetric::psnr:
+    case diff::DiffMetric::psnr:
       return "psnr, threshold " + threshold + " dB";
   }
   return {};
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::diff

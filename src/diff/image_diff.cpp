@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "diff/perceptual_diff.hpp"
-#include "io/quantisation.hpp"
 #include "diff/ssim.hpp"
+#include "io/quantisation.hpp"
 
-namespace tumble::io {
+namespace tumble::diff {
 namespace {
 
 // The largest of a pixel's three channel differences (0-255).
@@ -34,13 +34,13 @@ struct PixelTest {
   // perceptual against a video with an allowance: macroblocks_within's answer, else empty
   std::vector<std::uint8_t> quantised_blocks;
 
-  PixelTest(const Image& a, const Image& b, const FrameCriteria& frame_criteria,
-            const QuantisationAllowance& allowance)
+  PixelTest(const io::Image& a, const io::Image& b, const FrameCriteria& frame_criteria,
+            const io::QuantisationAllowance& allowance)
       : criteria(frame_criteria),
         max_yiq_distance_squared(kMaxYiqDistanceSquared * criteria.threshold * criteria.threshold) {
     // max stays a test of channel levels as they are: only perceptual forgives the codec.
     if (criteria.metric == DiffMetric::perceptual && allowance.active()) {
-      quantised_blocks = macroblocks_within(a, b, allowance);
+      quantised_blocks = io::macroblocks_within(a, b, allowance);
     }
   }
 };
@@ -48,7 +48,7 @@ struct PixelTest {
 // Whether a pixel passes the pixel test of a counting metric, and if not whether it is forgiven
 // as an anti-aliased edge in either image (pixelmatch's rule) or as within the video's
 // quantisation. Pixels at `offset` (bytes).
-PixelVerdict judge_pixel(const Image& a, const Image& b, std::size_t offset,
+PixelVerdict judge_pixel(const io::Image& a, const io::Image& b, std::size_t offset,
                          const PixelTest& test) {
   const std::uint8_t* pa = &a.rgb[offset];
   const std::uint8_t* pb = &b.rgb[offset];
@@ -64,9 +64,9 @@ PixelVerdict judge_pixel(const Image& a, const Image& b, std::size_t offset,
     return PixelVerdict::antialiased;
   }
   if (test.quantised_blocks.empty()) return PixelVerdict::differs;
-  const int columns = (a.width + kMacroblockSize - 1) / kMacroblockSize;
+  const int columns = (a.width + io::kMacroblockSize - 1) / io::kMacroblockSize;
   const std::size_t block =
-      static_cast<std::size_t>(y / kMacroblockSize) * columns + x / kMacroblockSize;
+      static_cast<std::size_t>(y / io::kMacroblockSize) * columns + x / io::kMacroblockSize;
   return test.quantised_blocks[block] ? PixelVerdict::quantised : PixelVerdict::differs;
 }
 
@@ -137,8 +137,8 @@ double default_threshold(DiffMetric metric) {
   return 0.0;
 }
 
-FrameFigures compare_frame(const Image& a, const Image& b, const FrameCriteria& criteria,
-                           const QuantisationAllowance& allowance) {
+FrameFigures compare_frame(const io::Image& a, const io::Image& b, const FrameCriteria& criteria,
+                           const io::QuantisationAllowance& allowance) {
   assert(a.width == b.width && a.height == b.height);
   assert(a.rgb.size() == b.rgb.size());
   FrameFigures figures;
@@ -185,10 +185,10 @@ double badness(const FrameFigures& figures, DiffMetric metric) {
   return 0.0;
 }
 
-Image difference_picture(const Image& a, const Image& b, const FrameCriteria& criteria,
-                         const QuantisationAllowance& allowance) {
+io::Image difference_picture(const io::Image& a, const io::Image& b, const FrameCriteria& criteria,
+                             const io::QuantisationAllowance& allowance) {
   assert(a.width == b.width && a.height == b.height);
-  Image out = diff_image(a, b, 0);  // red wherever a channel differs, dim grey elsewhere
+  io::Image out = diff_image(a, b, 0);  // red wherever a channel differs, dim grey elsewhere
   if (!counts_pixels(criteria.metric)) return out;
   const PixelTest test(a, b, criteria, allowance);
   for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
@@ -211,7 +211,7 @@ Image difference_picture(const Image& a, const Image& b, const FrameCriteria& cr
   return out;
 }
 
-DiffResult compare_images(const Image& a, const Image& b, const DiffOptions& options) {
+DiffResult compare_images(const io::Image& a, const io::Image& b, const DiffOptions& options) {
   assert(a.width == b.width && a.height == b.height);
   assert(a.rgb.size() == b.rgb.size());
   DiffResult result;
@@ -232,10 +232,10 @@ DiffResult compare_images(const Image& a, const Image& b, const DiffOptions& opt
   return result;
 }
 
-Image diff_image(const Image& a, const Image& b, int threshold) {
+io::Image diff_image(const io::Image& a, const io::Image& b, int threshold) {
   assert(a.width == b.width && a.height == b.height);
   assert(a.rgb.size() == b.rgb.size());
-  Image out(a.width, a.height);
+  io::Image out(a.width, a.height);
   for (std::size_t i = 0; i < a.rgb.size(); i += 3) {
     const int difference = pixel_difference(&a.rgb[i], &b.rgb[i]);
     if (difference > threshold) {
@@ -247,4 +247,4 @@ Image diff_image(const Image& a, const Image& b, int threshold) {
   return out;
 }
 
-}  // namespace tumble::io
+}  // namespace tumble::diff

@@ -9,7 +9,7 @@
 #include "io/image.hpp"
 #include "io/quantisation.hpp"
 
-namespace tumble::io {
+namespace tumble::diff {
 
 struct DiffOptions {
   int threshold = 0;  // a pixel differs when any channel differs by more than this (0-255)
@@ -24,12 +24,12 @@ struct DiffResult {
 };
 
 // Precondition: a and b have the same width and height.
-DiffResult compare_images(const Image& a, const Image& b, const DiffOptions& options);
+DiffResult compare_images(const io::Image& a, const io::Image& b, const DiffOptions& options);
 
 // A picture of the differences, the size of a and b (precondition: equal sizes). Pixels within the
 // threshold show a as grey at 30% brightness (R = G = B <= 76); differing pixels are pure red
 // (G = B = 0), from 128 for a difference of 1 to 255 for 255, so even the smallest stands out.
-Image diff_image(const Image& a, const Image& b, int threshold);
+io::Image diff_image(const io::Image& a, const io::Image& b, int threshold);
 
 // How one frame pair is judged, each in its own unit:
 // - max: a pixel differs when one of its channels differs by more than T levels (0-255);
@@ -77,8 +77,8 @@ struct FrameFigures {
 // Precondition: a and b have the same width and height. For perceptual, an active `allowance`
 // (one of a and b is an H.264 video's frame, the other the picture it was encoded from) also
 // forgives failing pixels in macroblocks whose difference is within the video's quantisation.
-FrameFigures compare_frame(const Image& a, const Image& b, const FrameCriteria& criteria,
-                           const QuantisationAllowance& allowance = {});
+FrameFigures compare_frame(const io::Image& a, const io::Image& b, const FrameCriteria& criteria,
+                           const io::QuantisationAllowance& allowance = {});
 
 // How far past the criteria a frame is, to rank frames worst first: differing pixels for the
 // pixel metrics, the RMS, 1 - SSIM or -PSNR for the others.
@@ -88,7 +88,7 @@ double badness(const FrameFigures& figures, DiffMetric metric);
 // larger channel differences, as diff_image), ignored anti-aliased pixels yellow, pixels ignored
 // as within a video's quantisation blue. For the frame-wide metrics every pixel with a channel
 // difference is red.
-Image difference_picture(const Image& a, const Image& b, const FrameCriteria& criteria,
-                         const QuantisationAllowance& allowance = {});
+io::Image difference_picture(const io::Image& a, const io::Image& b, const FrameCriteria& criteria,
+                             const io::QuantisationAllowance& allowance = {});
 
-}  // namespace tumble::io
+}  // namespace tumble::diff

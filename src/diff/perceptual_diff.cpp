@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-namespace tumble::io {
+namespace tumble::diff {
 namespace {
 
 // NTSC YIQ from RGB, with the coefficients pixelmatch uses (Kotsarenko & Ramos 2010).
@@ -17,17 +17,17 @@ double quadrature(const std::uint8_t* p) {
   return p[0] * 0.21147017 - p[1] * 0.52261711 + p[2] * 0.31114694;
 }
 
-const std::uint8_t* pixel_at(const Image& image, int x, int y) {
+const std::uint8_t* pixel_at(const io::Image& image, int x, int y) {
   return image.row(y) + 3 * static_cast<std::size_t>(x);
 }
 
-bool on_border(const Image& image, int x, int y) {
+bool on_border(const io::Image& image, int x, int y) {
   return x == 0 || y == 0 || x == image.width - 1 || y == image.height - 1;
 }
 
 // Three or more of the pixel's neighbours equal to it (a border counts as one): the pixel lies in
 // a flat area, not on a gradient.
-bool has_many_siblings(const Image& image, int x, int y) {
+bool has_many_siblings(const io::Image& image, int x, int y) {
   const std::uint8_t* centre = pixel_at(image, x, y);
   int same = on_border(image, x, y) ? 1 : 0;
   for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, image.height - 1); ++ny) {
@@ -48,7 +48,7 @@ double yiq_distance_squared(const std::uint8_t* a, const std::uint8_t* b) {
   return 0.5053 * y * y + 0.299 * i * i + 0.1957 * q * q;
 }
 
-bool is_antialiased(const Image& image, int x, int y, const Image& other) {
+bool is_antialiased(const io::Image& image, int x, int y, const io::Image& other) {
   const std::uint8_t* centre = pixel_at(image, x, y);
   const double centre_luma = luma(centre);
   int same = on_border(image, x, y) ? 1 : 0;
@@ -80,4 +80,4 @@ bool is_antialiased(const Image& image, int x, int y, const Image& other) {
           has_many_siblings(other, brightest_x, brightest_y));
 }
 
-}  // namespace tumble::io
+}  // namespace tumble::diff

@@ -7,7 +7,7 @@
 
 #include "io/image.hpp"
 
-namespace tumble::io {
+namespace tumble::diff {
 
 // The largest yiq_distance_squared of any two colours (pixelmatch's constant; red against
 // cyan gives 35214.7), so a threshold T from 0 to 1 allows a distance² of 35215 T².
@@ -21,6 +21,6 @@ double yiq_distance_squared(const std::uint8_t* a, const std::uint8_t* b);
 // (fewer at the border) it has both a darker and a brighter one, at most 2 of the same
 // brightness, and the darkest or the brightest neighbour sits in a flat area (3 or more identical
 // neighbours of its own) in both `image` and `other` (precondition: equal sizes).
-bool is_antialiased(const Image& image, int x, int y, const Image& other);
+bool is_antialiased(const io::Image& image, int x, int y, const io::Image& other);
 
-}  // namespace tumble::io
+}  // namespace tumble::diff

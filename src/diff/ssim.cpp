@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace tumble::io {
+namespace tumble::diff {
 namespace {
 
 constexpr int kPaperWindowSide = 11;
@@ -14,7 +14,7 @@ constexpr double kSigma = 1.5;                       // pixels
 constexpr double kC1 = (0.01 * 255) * (0.01 * 255);  // stabilises the luminance term (levels²)
 constexpr double kC2 = (0.03 * 255) * (0.03 * 255);  // stabilises the contrast-structure term
 
-std::vector<double> luma_plane(const Image& image) {
+std::vector<double> luma_plane(const io::Image& image) {
   std::vector<double> plane(static_cast<std::size_t>(image.width) * image.height);
   for (std::size_t i = 0; i < plane.size(); ++i) {
     const std::uint8_t* p = &image.rgb[3 * i];
@@ -71,7 +71,7 @@ double ssim_window_weight(int offset, int side) {
   return std::exp(-offset * offset / (2 * kSigma * kSigma)) / total;
 }
 
-double mean_ssim(const Image& a, const Image& b) {
+double mean_ssim(const io::Image& a, const io::Image& b) {
   assert(a.width == b.width && a.height == b.height && a.width > 0 && a.height > 0);
   const int side = ssim_window_side(a.width, a.height);
   std::vector<double> weights(side);
@@ -98,4 +98,4 @@ double mean_ssim(const Image& a, const Image& b) {
   return sum / static_cast<double>(mean_x.size());
 }
 
-}  // namespace tumble::io
+}  // namespace tumble::diff

@@ -4,7 +4,7 @@
 
 #include "io/image.hpp"
 
-namespace tumble::io {
+namespace tumble::diff {
 
 // The side of the square SSIM window for an image of `width` x `height` pixels: the paper's 11,
 // or for a smaller image the largest odd side that fits (1 for a 1-pixel-wide one).
@@ -19,6 +19,6 @@ double ssim_window_weight(int offset, int side);
 // reference code, 'valid' filtering), on the luma Y = 0.299 R + 0.587 G + 0.114 B (Rec. 601,
 // levels 0-255), with the paper's 8-bit constants C1 = (0.01 · 255)², C2 = (0.03 · 255)².
 // 1 for identical images, lower the more they differ. Precondition: equal, non-zero sizes.
-double mean_ssim(const Image& a, const Image& b);
+double mean_ssim(const io::Image& a, const io::Image& b);
 
-}  // namespace tumble::io
+}  // namespace tumble::diff

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <cstdlib>
 
-namespace tumble::app {
+namespace tumble::io {
 namespace {
 
 // Recursive descent over RFC 8259's grammar; depth is bounded so a hostile file cannot exhaust
@@ -228,4 +228,4 @@ Result<JsonValue> parse_json(std::string_view text) {
   return Parser(text).document();
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::io

@@ -10,7 +10,7 @@
 
 #include "common/result.hpp"
 
-namespace tumble::app {
+namespace tumble::io {
 
 struct JsonValue {
   enum class Kind { null, boolean, number, string, array, object };
@@ -30,4 +30,4 @@ struct JsonValue {
 // and what was expected there.
 Result<JsonValue> parse_json(std::string_view text);
 
-}  // namespace tumble::app
+}  // namespace tumble::io

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace tumble::app {
+namespace tumble::io {
 namespace {
 
 // The length of the well-formed UTF-8 sequence at text[at] (RFC 3629: no overlong forms, no
@@ -62,4 +62,4 @@ std::string json_number(double value) {
   return text;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::io

@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <vector>
 
-namespace tumble::app {
+namespace tumble::io {
 
 // A JSON string: quotes, backslashes and control characters escaped, and bytes that are not
 // UTF-8 (a file name can hold any) replaced by U+FFFD, so that the file stays valid JSON.
@@ -31,4 +31,4 @@ std::string json_array(const std::vector<Value>& values) {
   return text + "]";
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::io

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-namespace tumble::app {
+namespace tumble::job {
 
 std::string range_text(const FrameRange& range) {
   return std::to_string(range.first) + ":" + std::to_string(range.end);
@@ -43,4 +43,4 @@ std::optional<ChunkIndex> parse_chunk_index(const std::string& text) {
   return chunk;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::job

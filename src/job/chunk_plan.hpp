@@ -10,7 +10,7 @@
 
 #include "common/result.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 
 // Frames first .. end-1 of a render.
 struct FrameRange {
@@ -40,4 +40,4 @@ struct ChunkIndex {
 };
 std::optional<ChunkIndex> parse_chunk_index(const std::string& text);
 
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -5,37 +5,37 @@
 #include <fstream>
 #include <sstream>
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 namespace fs = std::filesystem;
 
 // A whole number that report.json holds at `key` of `object`.
-Result<std::int64_t> whole_number(const JsonValue& object, std::string_view key) {
-  const JsonValue* value = object.find(key);
-  if (!value || value->kind != JsonValue::Kind::number ||
+Result<std::int64_t> whole_number(const io::JsonValue& object, std::string_view key) {
+  const io::JsonValue* value = object.find(key);
+  if (!value || value->kind != io::JsonValue::Kind::number ||
       value->number != std::floor(value->number)) {
     return Error{"no whole number \"" + std::string(key) + "\""};
   }
   return static_cast<std::int64_t>(value->number);
 }
 
-Result<std::string> text(const JsonValue& object, std::string_view key) {
-  const JsonValue* value = object.find(key);
-  if (!value || value->kind != JsonValue::Kind::string) {
+Result<std::string> text(const io::JsonValue& object, std::string_view key) {
+  const io::JsonValue* value = object.find(key);
+  if (!value || value->kind != io::JsonValue::Kind::string) {
     return Error{"no text \"" + std::string(key) + "\""};
   }
   return value->string;
 }
 
 // The fields of a parsed report; errors say which is missing.
-Result<ChunkReport> chunk_fields(const JsonValue& report, const fs::path& folder) {
+Result<ChunkReport> chunk_fields(const io::JsonValue& report, const fs::path& folder) {
   ChunkReport chunk;
   chunk.folder = folder;
-  const JsonValue* frames = report.find("frames");
-  const JsonValue* settings = report.find("settings");
-  const JsonValue* videos = report.find("videos");
-  const JsonValue* frames_directory = report.find("frames_directory");
+  const io::JsonValue* frames = report.find("frames");
+  const io::JsonValue* settings = report.find("settings");
+  const io::JsonValue* videos = report.find("videos");
+  const io::JsonValue* frames_directory = report.find("frames_directory");
   Result<std::string> scene = text(report, "scene"), file = text(report, "scene_file"),
                       hash = text(report, "scene_hash"), renderer = text(report, "renderer");
   Result<std::int64_t> total = whole_number(report, "scene_frames");
@@ -48,17 +48,18 @@ Result<ChunkReport> chunk_fields(const JsonValue& report, const fs::path& folder
         end ? nullptr : &end.error()}) {
     if (error) return Error{*error};
   }
-  if (!settings || settings->kind != JsonValue::Kind::object) return Error{"no \"settings\""};
-  if (!frames_directory || (frames_directory->kind != JsonValue::Kind::string &&
-                            frames_directory->kind != JsonValue::Kind::null)) {
+  if (!settings || settings->kind != io::JsonValue::Kind::object) return Error{"no \"settings\""};
+  if (!frames_directory || (frames_directory->kind != io::JsonValue::Kind::string &&
+                            frames_directory->kind != io::JsonValue::Kind::null)) {
     return Error{"no \"frames_directory\""};
   }
-  if (!videos || videos->kind != JsonValue::Kind::object) return Error{"no \"videos\""};
+  if (!videos || videos->kind != io::JsonValue::Kind::object) return Error{"no \"videos\""};
   for (const auto& [format, path] : videos->members) {
-    if (path.kind != JsonValue::Kind::string) return Error{"no path for its " + format + " video"};
+    if (path.kind != io::JsonValue::Kind::string)
+      return Error{"no path for its " + format + " video"};
     chunk.video_names.push_back(fs::path(path.string).filename().string());
   }
-  chunk.has_frames = frames_directory->kind == JsonValue::Kind::string;
+  chunk.has_frames = frames_directory->kind == io::JsonValue::Kind::string;
   chunk.scene = *scene;
   chunk.scene_file = *file;
   chunk.scene_hash = *hash;
@@ -88,7 +89,7 @@ Result<ChunkReport> read_chunk_report(const fs::path& folder) {
   }
   std::ostringstream bytes;
   bytes << file.rdbuf();
-  const Result<JsonValue> report = parse_json(bytes.str());
+  const Result<io::JsonValue> report = io::parse_json(bytes.str());
   if (!report) return Error{path.string() + ": not JSON: " + report.error()};
   Result<ChunkReport> chunk = chunk_fields(*report, folder);
   if (!chunk) {
@@ -107,7 +108,7 @@ std::string mismatch(const std::vector<ChunkReport>& chunks) {
       return pair + "scene name: " + first.scene + " and " + chunk.scene;
     }
     for (const auto& [key, value] : first.settings.members) {
-      const JsonValue* other = chunk.settings.find(key);
+      const io::JsonValue* other = chunk.settings.find(key);
       if (!other || other->text != value.text) {
         return pair + key + ": " + value.text + " and " + (other ? other->text : "none");
       }
@@ -154,4 +155,4 @@ std::string coverage_problem(const std::vector<FrameRange>& ranges,
   return text;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "job/chunk_plan.hpp"
-#include "io/json_reader.hpp"
 #include "common/result.hpp"
+#include "io/json_reader.hpp"
+#include "job/chunk_plan.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 
 // A render folder as its report.json describes it.
 struct ChunkReport {
@@ -22,7 +22,7 @@ struct ChunkReport {
   std::string scene_hash;                // app/scene_hash.hpp
   std::int64_t scene_frames = 0;         // frames of the whole render
   FrameRange frames;                     // the frames this folder holds
-  JsonValue settings;                    // what must agree (render_command.cpp's settings_json)
+  io::JsonValue settings;                // what must agree (render_command.cpp's settings_json)
   bool has_frames = false;               // frames/ holds its PNG frames
   std::vector<std::string> video_names;  // its videos' file names in the folder ("spin.mp4")
   std::string renderer;                  // the OpenGL and back end that drew it
@@ -41,4 +41,4 @@ std::string mismatch(const std::vector<ChunkReport>& chunks);
 std::string coverage_problem(const std::vector<FrameRange>& ranges,
                              const std::vector<std::string>& folders, std::int64_t frame_count);
 
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -5,7 +5,7 @@
 
 #include "common/video_format.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 namespace fs = std::filesystem;
@@ -89,4 +89,4 @@ std::string replace_problem(const fs::path& root, const fs::path& relative) {
   return {};
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <string>
 
-namespace tumble::app {
+namespace tumble::job {
 
 // Why the scene's folder `relative` below the output folder `root` must not be replaced by a
 // render, as a sentence for people; "" when it may (also when it does not exist yet).
 std::string replace_problem(const std::filesystem::path& root,
                             const std::filesystem::path& relative);
 
-}  // namespace tumble::app
+}  // namespace tumble::job

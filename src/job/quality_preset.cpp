@@ -1,6 +1,6 @@
 #include "job/quality_preset.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 
 std::optional<QualityPreset> quality_preset(std::string_view name) {
   for (const QualityPreset& preset : kQualityPresets) {
@@ -13,4 +13,4 @@ const char* quality_preset_names() {
   return "low, medium, high, production, 4k";
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string_view>
 
-namespace tumble::app {
+namespace tumble::job {
 
 struct QualityPreset {
   const char* name;
@@ -25,4 +25,4 @@ std::optional<QualityPreset> quality_preset(std::string_view name);
 // "low, medium, high, production, 4k", for messages and --help.
 const char* quality_preset_names();
 
-}  // namespace tumble::app
+}  // namespace tumble::job

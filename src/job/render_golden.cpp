@@ -6,7 +6,7 @@
 
 #include "diff/diff_inputs.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 namespace fs = std::filesystem;
@@ -23,15 +23,15 @@ bool inside(const fs::path& path, const fs::path& folder) {
 
 }  // namespace
 
-std::string golden_problem(const DiffCommandOptions& golden, const RenderJob& job) {
-  if (const Result<SequenceOptions> settings = diff_settings(golden); !settings) {
+std::string golden_problem(const diff::DiffCommandOptions& golden, const RenderJob& job) {
+  if (const Result<diff::SequenceOptions> settings = diff::diff_settings(golden); !settings) {
     return settings.error();
   }
-  DiffInput input;
-  if (std::string error = resolve_diff_input(golden.first_path, input); !error.empty()) {
+  diff::DiffInput input;
+  if (std::string error = diff::resolve_diff_input(golden.first_path, input); !error.empty()) {
     return "--golden " + error;
   }
-  if (input.kind == DiffInputKind::png) {
+  if (input.kind == diff::DiffInputKind::png) {
     return "--golden " + golden.first_path +
            ": expected a render's folder, a folder of frames or a video, not one PNG";
   }
@@ -42,14 +42,14 @@ std::string golden_problem(const DiffCommandOptions& golden, const RenderJob& jo
   return {};
 }
 
-int compare_with_golden(DiffCommandOptions golden, const RenderJob& job, std::FILE* out,
+int compare_with_golden(diff::DiffCommandOptions golden, const RenderJob& job, std::FILE* out,
                         std::FILE* err) {
   golden.second_path =
       job.scene.output.frames ? job.directory.string() : job.video_path(job.directory);
   // A whole render is compared whole, so that a golden with more frames is a mismatch; a range
   // is compared over the range it rendered.
   if (job.first != 0 || job.end != job.frame_count) golden.frames = {{job.first, job.end}};
-  return run_diff(golden, out, err);
+  return diff::run_diff(golden, out, err);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -8,14 +8,14 @@
 #include <cstdlib>
 #include <memory>
 
+#include "job/quality_preset.hpp"
 #include "pipeline/contact_sheet.hpp"
 #include "pipeline/poster_sink.hpp"
-#include "job/quality_preset.hpp"
-#include "view/scene_view.hpp"
 #include "render/renderer.hpp"
 #include "scene/video_rules.hpp"
+#include "view/scene_view.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 namespace fs = std::filesystem;
@@ -63,12 +63,13 @@ void apply_overrides(const RenderOptions& options, scene::Scene& scene) {
 }
 
 // Every output the job asks for, opened in `folder`.
-Result<std::vector<std::unique_ptr<FrameSink>>> open_sinks(const RenderJob& job,
-                                                           const fs::path& folder) {
-  std::vector<std::unique_ptr<FrameSink>> sinks;
+Result<std::vector<std::unique_ptr<pipeline::FrameSink>>> open_sinks(const RenderJob& job,
+                                                                     const fs::path& folder) {
+  std::vector<std::unique_ptr<pipeline::FrameSink>> sinks;
   const scene::Scene& scene = job.scene;
   if (scene.output.frames) {
-    Result<std::unique_ptr<FrameSink>> png = PngFrames::open(job.frames_path(folder), job.png);
+    Result<std::unique_ptr<pipeline::FrameSink>> png =
+        pipeline::PngFrames::open(job.frames_path(folder), job.png);
     if (!png) return Error{png.error()};
     sinks.push_back(std::move(*png));
   }
@@ -85,15 +86,15 @@ Result<std::vector<std::unique_ptr<FrameSink>>> open_sinks(const RenderJob& job,
                                      .first_frame = job.partial() ? job.first : 0,
                                      .preset = scene.output.preset};
     const std::string path = job.video_path(folder, format);
-    Result<std::unique_ptr<FrameSink>> video = VideoSink::open(path, settings);
+    Result<std::unique_ptr<pipeline::FrameSink>> video = pipeline::VideoSink::open(path, settings);
     if (!video) return Error{video.error()};
     sinks.push_back(std::move(*video));
   }
   if (job.stills) {
-    sinks.push_back(std::make_unique<PosterSink>((folder / "poster.png").string(),
-                                                 scene::poster_frame(scene), job.png));
-    sinks.push_back(std::make_unique<ContactSheet>((folder / "contact_sheet.png").string(),
-                                                   job.first, job.end, scene.fps, job.png));
+    sinks.push_back(std::make_unique<pipeline::PosterSink>((folder / "poster.png").string(),
+                                                           scene::poster_frame(scene), job.png));
+    sinks.push_back(std::make_unique<pipeline::ContactSheet>(
+        (folder / "contact_sheet.png").string(), job.first, job.end, scene.fps, job.png));
   }
   return sinks;
 }
@@ -120,11 +121,11 @@ Result<FrameRange> frame_range(const RenderOptions& options, std::int64_t total)
 
 // The renderer of the job's frames on this thread (its context, its shaders compiled), timed and
 // described in `result`; null, with result.error set, when this OpenGL cannot draw the scene.
-std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Framing& framing,
+std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const view::Framing& framing,
                                                 RenderResult& result) {
-  const double start = process_cpu_seconds();
+  const double start = pipeline::process_cpu_seconds();
   const scene::Scene& scene = job.scene;
-  const render::RenderSettings settings = renderer_settings(scene, framing);
+  const render::RenderSettings settings = view::renderer_settings(scene, framing);
   std::unique_ptr<render::Renderer> renderer =
       render::Renderer::create(settings, job.shader_directory, result.error);
   if (!renderer) {
@@ -136,8 +137,8 @@ std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const Fram
   result.backend = render::backend_name(renderer->backend());
   result.device = renderer->device();
   result.opengl = renderer->opengl();
-  result.warnings = missing_character_warnings(scene, renderer->font());
-  result.renderer_seconds = process_cpu_seconds() - start;
+  result.warnings = view::missing_character_warnings(scene, renderer->font());
+  result.renderer_seconds = pipeline::process_cpu_seconds() - start;
   return renderer;
 }
 
@@ -256,50 +257,50 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
   RenderResult result;
   const scene::Scene& scene = job.scene;
   const auto setup_start = std::chrono::steady_clock::now();
-  Result<std::vector<std::unique_ptr<FrameSink>>> sinks = open_sinks(job, folder);
+  Result<std::vector<std::unique_ptr<pipeline::FrameSink>>> sinks = open_sinks(job, folder);
   if (!sinks) {
     result.error = sinks.error();
     return result;
   }
-  double start = process_cpu_seconds();
-  const Result<Framing> framing = frame_scene(scene, job.frame_count, stop_requested);
+  double start = pipeline::process_cpu_seconds();
+  const Result<view::Framing> framing = view::frame_scene(scene, job.frame_count, stop_requested);
   if (!framing) {
     result.error = framing.error();
     return result;
   }
   result.framing_steps = framing->physics_steps;
-  result.framing_seconds = process_cpu_seconds() - start;
+  result.framing_seconds = pipeline::process_cpu_seconds() - start;
   const std::unique_ptr<render::Renderer> renderer = make_renderer(job, *framing, result);
   if (!renderer) return result;
-  SimulatedFrames source(scene, *framing, stop_requested);
+  view::SimulatedFrames source(scene, *framing, stop_requested);
   for (const physics::BodyState& state : source.simulation().current()) {
     result.bodies.push_back({.energy_start = physics::kinetic_energy(state),
                              .angular_momentum_start = state.angular_momentum().norm()});
   }
-  start = process_cpu_seconds();
+  start = pipeline::process_cpu_seconds();
   const Result<std::int64_t> seek_steps = source.seek(job.first);
   if (!seek_steps) {
     result.error = seek_steps.error();
     return result;
   }
   result.seek_steps = *seek_steps;
-  result.seek_seconds = process_cpu_seconds() - start;
-  std::vector<FrameSink*> sink_list;
-  for (const std::unique_ptr<FrameSink>& sink : *sinks) {
+  result.seek_seconds = pipeline::process_cpu_seconds() - start;
+  std::vector<pipeline::FrameSink*> sink_list;
+  for (const std::unique_ptr<pipeline::FrameSink>& sink : *sinks) {
     sink_list.push_back(sink.get());
     result.stages.push_back(sink->stage());
   }
   result.setup_seconds = seconds_since(setup_start);
 
-  result.pipeline =
-      run_frames(job.first, job.end, source, *renderer, sink_list, job.serial, on_frame_done);
+  result.pipeline = pipeline::run_frames(job.first, job.end, source, *renderer, sink_list,
+                                         job.serial, on_frame_done);
   result.frame_steps = source.simulation().step_count();
   if (!result.pipeline.error.empty()) {
     result.error = result.pipeline.error;
     return result;  // each sink's destructor removes its partial file
   }
   const auto finish_start = std::chrono::steady_clock::now();
-  for (FrameSink* sink : sink_list) {
+  for (pipeline::FrameSink* sink : sink_list) {
     if (result.error.empty()) result.error = sink->finish();
   }
   result.finish_seconds = seconds_since(finish_start);
@@ -311,4 +312,4 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
   return result;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::job

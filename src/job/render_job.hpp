@@ -10,15 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "job/chunk_plan.hpp"
-#include "pipeline/frame_pipeline.hpp"
 #include "common/result.hpp"
 #include "io/png_io.hpp"
 #include "io/video_encoder.hpp"
+#include "job/chunk_plan.hpp"
+#include "pipeline/frame_pipeline.hpp"
 #include "render/offscreen_context.hpp"
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 
 // What the command line asks of a render. Each override, when set, replaces the scene's value
 // before the scene is checked.
@@ -84,9 +84,9 @@ struct BodyDiagnostics {
 };
 
 struct RenderResult {
-  std::string error;            // "" on success; then every output is complete
-  PipelineReport pipeline;      // the frames
-  double setup_seconds = 0.0;   // framing, renderer and sinks' set-up (s, wall)
+  std::string error;                  // "" on success; then every output is complete
+  pipeline::PipelineReport pipeline;  // the frames
+  double setup_seconds = 0.0;         // framing, renderer and sinks' set-up (s, wall)
   double finish_seconds = 0.0;  // finishing the sinks: draining the encoder, closing the MP4 (s)
   std::string renderer;         // the OpenGL implementation and the back end that drew
   std::string backend;          // "osmesa" or "egl": the back end that drew
@@ -121,4 +121,4 @@ std::string antialiasing_name(int msaa);
 // Peak resident memory of this process so far (bytes).
 std::int64_t peak_memory_bytes();
 
-}  // namespace tumble::app
+}  // namespace tumble::job

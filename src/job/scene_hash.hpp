@@ -7,7 +7,7 @@
 
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 
 // SHA-256 (hex) of the scene file's bytes followed by a line of the values, as rendered, that
 // the command line can override and that change the pictures: "\n# as rendered: width=W
@@ -17,4 +17,4 @@ namespace tumble::app {
 // do not change the pictures; join checks them as settings.
 std::string scene_hash(std::string_view file_bytes, const scene::Scene& rendered);
 
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -5,7 +5,7 @@
 
 #include "io/pixel_font.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 namespace {
 
 constexpr std::array<std::uint8_t, 3> kStripColor = {38, 40, 44};
@@ -106,4 +106,4 @@ std::string ContactSheet::finish() {
   return io::write_png(path_, sheet, settings_);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

@@ -10,7 +10,7 @@
 
 #include "pipeline/frame_sinks.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 
 inline constexpr int kSheetColumns = 4;
 inline constexpr int kSheetRows = 3;
@@ -48,4 +48,4 @@ class ContactSheet final : public FrameSink {
   std::vector<io::Image> tiles_;      // one per frame of frames_, once it has passed
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

@@ -12,7 +12,7 @@
 
 #include "common/bounded_queue.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 namespace {
 
 double thread_cpu_seconds() {
@@ -92,8 +92,8 @@ void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
   // thread never waits for a slot while every sink is busy. 4 × 2.8 MB at 1280×720 for PNG + MP4.
   const std::size_t slot_count = sinks.size() + 2;
   std::vector<Slot> slots(slot_count);
-  BoundedQueue<std::size_t> free_slots(slot_count);
-  std::deque<BoundedQueue<std::size_t>> queues;  // one per sink; a queue cannot move
+  common::BoundedQueue<std::size_t> free_slots(slot_count);
+  std::deque<common::BoundedQueue<std::size_t>> queues;  // one per sink; a queue cannot move
   for (std::size_t i = 0; i < sinks.size(); ++i) queues.emplace_back(slot_count);
   for (std::size_t i = 0; i < slot_count; ++i) free_slots.push(i);
 
@@ -104,7 +104,7 @@ void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
       if (report.error.empty()) report.error = error;
     }
     free_slots.abort();
-    for (BoundedQueue<std::size_t>& queue : queues) queue.abort();
+    for (common::BoundedQueue<std::size_t>& queue : queues) queue.abort();
   };
   const auto release = [&](std::size_t slot) {
     if (slots[slot].pending.fetch_sub(1) != 1) return;
@@ -153,10 +153,10 @@ void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
       continue;
     }
     bool queued = true;
-    for (BoundedQueue<std::size_t>& queue : queues) queued = queued && queue.push(*slot);
+    for (common::BoundedQueue<std::size_t>& queue : queues) queued = queued && queue.push(*slot);
     if (!queued) break;
   }
-  for (BoundedQueue<std::size_t>& queue : queues) queue.close();
+  for (common::BoundedQueue<std::size_t>& queue : queues) queue.close();
   for (std::thread& thread : threads) thread.join();
 }
 
@@ -188,4 +188,4 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, FrameSource& sou
   return report;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

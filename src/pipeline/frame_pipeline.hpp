@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/frame_sinks.hpp"
 #include "common/result.hpp"
+#include "pipeline/frame_sinks.hpp"
 #include "render/frame.hpp"
 #include "render/renderer.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 
 // What frame k shows, as plain items for the renderer. Overlays add their items here.
 class FrameSource {
@@ -49,4 +49,4 @@ PipelineReport run_frames(std::int64_t first, std::int64_t end, FrameSource& sou
                           render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
                           bool serial, const std::function<void(std::int64_t done)>& on_frame_done);
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

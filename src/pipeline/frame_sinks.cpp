@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <system_error>
 
-namespace tumble::app {
+namespace tumble::pipeline {
 
 namespace fs = std::filesystem;
 
@@ -43,4 +43,4 @@ std::string VideoSink::finish() {
   return encoder_->finish();
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

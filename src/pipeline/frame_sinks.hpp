@@ -12,7 +12,7 @@
 #include "io/png_io.hpp"
 #include "io/video_encoder.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 
 class FrameSink {
  public:
@@ -65,4 +65,4 @@ class VideoSink final : public FrameSink {
   io::VideoFormat format_;
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

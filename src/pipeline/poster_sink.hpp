@@ -6,7 +6,7 @@
 
 #include "pipeline/frame_sinks.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 
 // Writes frame `frame` (scene::poster_frame) to `path` as PNG, the same bytes as that frame's
 // frame_NNNNN.png with the same settings; writes nothing when the frame is not rendered.
@@ -25,4 +25,4 @@ class PosterSink final : public FrameSink {
   io::PngSettings settings_;
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

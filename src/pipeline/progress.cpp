@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace tumble::app {
+namespace tumble::pipeline {
 
 Progress::Progress(std::int64_t total, bool quiet, std::FILE* out, const char* unit)
     : total_(total),
@@ -50,4 +50,4 @@ void Progress::finish() {
   if (!quiet_ && terminal_) std::fputc('\n', out_);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

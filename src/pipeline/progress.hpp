@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 
-namespace tumble::app {
+namespace tumble::pipeline {
 
 class Progress {
  public:
@@ -27,4 +27,4 @@ class Progress {
   int last_decile_ = 0;
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

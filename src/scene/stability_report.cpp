@@ -4,7 +4,7 @@
 #include "sim/contact_advice.hpp"
 #include "sim/stability.hpp"
 
-namespace tumble::app {
+namespace tumble::scene {
 namespace {
 
 std::vector<sim::StepWarning> body_warnings(const scene::Scene& scene,
@@ -55,4 +55,4 @@ std::string blow_up_message(const scene::Scene& scene, const sim::BlowUp& blow_u
   return message;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::scene

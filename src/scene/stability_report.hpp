@@ -10,7 +10,7 @@
 #include "scene/scene.hpp"
 #include "sim/simulation.hpp"
 
-namespace tumble::app {
+namespace tumble::scene {
 
 // One line per warning, each naming its body: `body "cube": linear damping ...`.
 std::vector<std::string> stability_warnings(const scene::Scene& scene);
@@ -22,4 +22,4 @@ void print_stability_warnings(const scene::Scene& scene, std::FILE* out);
 // stable step where one is known, or else what to try.
 std::string blow_up_message(const scene::Scene& scene, const sim::BlowUp& blow_up);
 
-}  // namespace tumble::app
+}  // namespace tumble::scene

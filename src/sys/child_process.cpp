@@ -11,7 +11,7 @@
 
 extern char** environ;
 
-namespace tumble::app {
+namespace tumble::sys {
 namespace {
 
 // How reading a child's output ended.
@@ -100,4 +100,4 @@ std::string run_reading_lines(const std::string& program, const std::vector<std:
   return program + " " + how_it_ended(status);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::sys

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tumble::app {
+namespace tumble::sys {
 
 // Runs the executable at `program` (a path; PATH is not searched) with `arguments`, and hands
 // each line of its standard output, without the '\n', to `on_line` as it arrives. Its standard
@@ -18,4 +18,4 @@ namespace tumble::app {
 std::string run_reading_lines(const std::string& program, const std::vector<std::string>& arguments,
                               const std::function<bool(std::string_view line)>& on_line);
 
-}  // namespace tumble::app
+}  // namespace tumble::sys

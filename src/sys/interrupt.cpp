@@ -6,7 +6,7 @@
 #include <cstring>
 #include <ctime>
 
-namespace tumble::app {
+namespace tumble::sys {
 namespace {
 
 std::atomic<int> received{0};
@@ -57,4 +57,4 @@ const char* signal_name(int signal) {
   }
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::sys

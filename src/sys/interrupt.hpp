@@ -3,7 +3,7 @@
 // same request (`timeout` sends two), one after that kills as usual.
 #pragma once
 
-namespace tumble::app {
+namespace tumble::sys {
 
 // Catches SIGINT and SIGTERM for a command that checks interrupt_signal() as it goes.
 void install_interrupt_handlers();
@@ -14,4 +14,4 @@ int interrupt_signal();
 // "SIGINT", "SIGTERM", or "a signal" for any other.
 const char* signal_name(int signal);
 
-}  // namespace tumble::app
+}  // namespace tumble::sys

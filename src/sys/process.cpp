@@ -6,7 +6,7 @@
 #include <cerrno>
 #include <csignal>
 
-namespace tumble::app {
+namespace tumble::sys {
 
 void set_up_process() {
   for (int stream = 0; stream <= 2; ++stream) {
@@ -20,4 +20,4 @@ void set_up_process() {
   std::signal(SIGPIPE, SIG_IGN);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::sys

@@ -2,7 +2,7 @@
 // and writes that fail with an error instead of a signal.
 #pragma once
 
-namespace tumble::app {
+namespace tumble::sys {
 
 // Opens /dev/null on any of file descriptors 0, 1 and 2 that is closed (`tumble render ...
 // 2>&-`): otherwise the next file opened, such as the MP4, would get that number, and progress
@@ -13,4 +13,4 @@ namespace tumble::app {
 // instead of killing it half way through a render.
 void set_up_process();
 
-}  // namespace tumble::app
+}  // namespace tumble::sys

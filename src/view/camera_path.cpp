@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tumble::app {
+namespace tumble::view {
 
 double ease(double s) {
   return s * s * (3.0 - 2.0 * s);
@@ -44,4 +44,4 @@ render::Camera camera_at(const scene::CameraSpec& spec, const render::Camera& ba
   return camera;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::view

@@ -9,7 +9,7 @@
 #include "render/frame.hpp"
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 
 // The ease between two keys: smoothstep, 3s² − 2s³ for s in [0, 1] (the cubic Hermite curve with
 // zero slope at both ends), so the camera starts and stops each move at rest.
@@ -29,4 +29,4 @@ render::Camera keyed_camera(const std::vector<scene::CameraKey>& keys, const ren
 render::Camera camera_at(const scene::CameraSpec& spec, const render::Camera& base,
                          int follow_index, const std::vector<physics::BodyState>& states, double t);
 
-}  // namespace tumble::app
+}  // namespace tumble::view

@@ -6,7 +6,7 @@
 #include "scene/scene_builder.hpp"
 #include "scene/text_template.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 using scene::BodyQuantity;
@@ -98,4 +98,4 @@ physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::Bod
   return force;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::view

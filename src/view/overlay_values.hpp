@@ -11,7 +11,7 @@
 #include "scene/overlays.hpp"
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 
 // A vector quantity of the state (world frame; m, m/s, rad/s or kg m²/s); for a number
 // quantity, the number in x and zeros.
@@ -33,4 +33,4 @@ std::string format_text(const scene::TextTemplate& text,
 physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::BodySpec& body,
                            const physics::BodyState& state, double t);
 
-}  // namespace tumble::app
+}  // namespace tumble::view

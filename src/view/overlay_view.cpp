@@ -4,10 +4,10 @@
 #include <cmath>
 #include <variant>
 
-#include "view/overlay_values.hpp"
 #include "render/utf8.hpp"
+#include "view/overlay_values.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 // The body's axes x, y, z in the usual red, green, blue.
@@ -151,4 +151,4 @@ void OverlayItems::add_to(const std::vector<physics::BodyState>& states, double 
   }
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::view

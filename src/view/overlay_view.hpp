@@ -13,7 +13,7 @@
 #include "render/frame.hpp"
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 
 // Whether the scene's overlays draw text (texts, arrow labels): then the renderer needs a font.
 bool overlays_need_font(const scene::Scene& scene);
@@ -54,4 +54,4 @@ class OverlayItems {
   std::vector<std::deque<TrailPoint>> trails_;  // per overlay; empty but for trails
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::view

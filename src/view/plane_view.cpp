@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 using render::Vec3;
@@ -65,4 +65,4 @@ void frame_walls(const std::vector<render::Quad>& quads, double reach, Vec3& low
   }
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::view

@@ -7,7 +7,7 @@
 #include "render/frame.hpp"
 #include "scene/scene.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 
 // A plane whose unit normal has y above this is level (within 0.003° of it): the lowest visible
 // one is the floor, drawn as the ground (endless, gridded, with shadows). A plane any more tilted
@@ -35,4 +35,4 @@ DrawnPlanes drawn_planes(const scene::Scene& scene);
 void frame_walls(const std::vector<render::Quad>& quads, double reach, render::Vec3& low,
                  render::Vec3& high);
 
-}  // namespace tumble::app
+}  // namespace tumble::view

@@ -4,19 +4,19 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/scene_builder.hpp"
+#include "scene/stability_report.hpp"
 #include "view/camera_path.hpp"
 #include "view/plane_view.hpp"
-#include "scene/stability_report.hpp"
-#include "scene/scene_builder.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 
 Result<std::vector<physics::BodyState>> checked_states_at(sim::Simulation& simulation,
                                                           const scene::Scene& scene, double t,
                                                           const StopRequested& stop_requested) {
   if (stop_requested()) return Error{"interrupted"};
   std::vector<physics::BodyState> states = simulation.states_at(t);
-  if (simulation.blow_up()) return Error{blow_up_message(scene, *simulation.blow_up())};
+  if (simulation.blow_up()) return Error{scene::blow_up_message(scene, *simulation.blow_up())};
   return states;
 }
 
@@ -251,4 +251,4 @@ render::RenderSettings renderer_settings(const scene::Scene& scene, const Framin
   return settings;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::view

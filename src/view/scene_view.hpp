@@ -6,15 +6,15 @@
 #include <optional>
 #include <vector>
 
-#include "pipeline/frame_pipeline.hpp"
-#include "view/overlay_view.hpp"
 #include "common/result.hpp"
 #include "physics/rigid_body.hpp"
+#include "pipeline/frame_pipeline.hpp"
 #include "render/frame.hpp"
 #include "scene/scene.hpp"
 #include "sim/simulation.hpp"
+#include "view/overlay_view.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 
 // Where the camera and ground go: as the scene writes them, or chosen from the whole motion.
 struct Framing {
@@ -60,7 +60,7 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
 // The frame loop's source for a render: frame k shows the bodies at t = k / fps (s), their states
 // interpolated between the two physics steps around t, on a simulation of its own, and the
 // scene's overlays computed from those same states.
-class SimulatedFrames final : public FrameSource {
+class SimulatedFrames final : public pipeline::FrameSource {
  public:
   // `scene` and `framing` must outlive it.
   SimulatedFrames(const scene::Scene& scene, const Framing& framing, StopRequested stop_requested);
@@ -81,4 +81,4 @@ class SimulatedFrames final : public FrameSource {
   bool started_ = false;                  // whether a frame was asked for yet
 };
 
-}  // namespace tumble::app
+}  // namespace tumble::view

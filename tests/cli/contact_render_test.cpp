@@ -62,8 +62,8 @@ TEST_F(DroppedCube, LastFrameMatchesItsGolden) {
   ASSERT_EQ(golden.width, frame.width);
   ASSERT_EQ(golden.height, frame.height);
   // As the renderer's goldens: 8 levels per channel, on at most 1% of the pixels.
-  const tumble::io::DiffResult diff =
-      tumble::io::compare_images(golden, frame, {.threshold = 8, .max_pixels = 320 * 180 / 100});
+  const tumble::diff::DiffResult diff =
+      tumble::diff::compare_images(golden, frame, {.threshold = 8, .max_pixels = 320 * 180 / 100});
   EXPECT_TRUE(diff.match) << diff.differing_pixels << " pixels differ, by up to "
                           << diff.max_channel_difference;
 }

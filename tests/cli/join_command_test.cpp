@@ -224,9 +224,9 @@ TEST_F(JoinCommand, ChunksWithAnMp4AndAWebmJoinIntoBoth) {
   EXPECT_LT(worst, kFromSourceTolerance);
   EXPECT_EQ(tumble::testing::read_video((joined / "spin.mp4").string()).pictures.size(), 15u);
   const std::string report = read_file(joined / "report.json");
-  EXPECT_NE(report.find("\"videos\": {\"mp4\": " +
-                        tumble::app::json_string((joined / "spin.mp4").string()) +
-                        ", \"webm\": " + tumble::app::json_string((joined / "spin.webm").string())),
+  EXPECT_NE(report.find(
+                "\"videos\": {\"mp4\": " + tumble::io::json_string((joined / "spin.mp4").string()) +
+                ", \"webm\": " + tumble::io::json_string((joined / "spin.webm").string())),
             std::string::npos)
       << report;
 }

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
-#include "io/json_reader.hpp"
 #include "diff/image_diff.hpp"
+#include "io/json_reader.hpp"
 #include "io/png_io.hpp"
 #include "render/offscreen_context.hpp"
 #include "support/command_test.hpp"
@@ -64,8 +64,8 @@ TEST_F(RenderCommand, WritesEveryFrameAndAnH264Mp4OfTheRightShape) {
   // The video shows the frames that were written as PNG: decoded frame 14 against the PNG,
   // within what H.264 at CRF 20 loses on a small image full of edges (measured RMS 4.7 of 255;
   // the frame half a second earlier gives about 25).
-  const tumble::io::DiffResult diff =
-      tumble::io::compare_images(last, video.pictures[14].rgb, {.threshold = 255, .max_pixels = 0});
+  const tumble::diff::DiffResult diff = tumble::diff::compare_images(
+      last, video.pictures[14].rgb, {.threshold = 255, .max_pixels = 0});
   EXPECT_LT(diff.rms, 8.0);
 
   EXPECT_TRUE(fs::exists(dir_ / "out/spin/report.json"));
@@ -369,9 +369,9 @@ TEST_F(RenderCommand, ReportHashesTheSceneAsRenderedWithItsOverrides) {
     const Outcome run = tumble("render -q --no-video --frames 0:1 " + scene_path + " -o " +
                                path(root) + " " + options);
     EXPECT_EQ(run.exit_code, 0) << run.err;
-    const auto report = tumble::app::parse_json(read_file(dir_ / root / "spin/report.json"));
+    const auto report = tumble::io::parse_json(read_file(dir_ / root / "spin/report.json"));
     EXPECT_TRUE(report) << report.error();
-    const tumble::app::JsonValue* value = report ? report->find("scene_hash") : nullptr;
+    const tumble::io::JsonValue* value = report ? report->find("scene_hash") : nullptr;
     return value ? value->string : std::string();
   };
   const std::string first = hash(scene(), "a", "");
@@ -399,11 +399,11 @@ TEST_F(RenderCommand, AChunkStepsThePhysicsOnlyUpToItsFirstFrame) {
     const Outcome run = tumble("render -q --no-video " + framed + " -o " + path(root) +
                                " --width 64 --height 36 --frames " + frames);
     EXPECT_EQ(run.exit_code, 0) << run.err;
-    const auto report = tumble::app::parse_json(read_file(dir_ / root / "spin/report.json"));
+    const auto report = tumble::io::parse_json(read_file(dir_ / root / "spin/report.json"));
     EXPECT_TRUE(report) << report.error();
-    return report ? *report->find("physics_steps") : tumble::app::JsonValue();
+    return report ? *report->find("physics_steps") : tumble::io::JsonValue();
   };
-  const tumble::app::JsonValue chunk = steps("8:15", "chunk");
+  const tumble::io::JsonValue chunk = steps("8:15", "chunk");
   ASSERT_NE(chunk.find("framing"), nullptr);
   EXPECT_EQ(chunk.find("framing")->number, 0);  // camera and ground written: no framing pass
   EXPECT_EQ(chunk.find("to_first_frame")->number, 27);

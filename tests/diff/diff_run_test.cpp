@@ -11,7 +11,7 @@
 #include "diff/diff_inputs.hpp"
 #include "io/png_io.hpp"
 
-namespace tumble::app {
+namespace tumble::diff {
 namespace {
 
 namespace fs = std::filesystem;
@@ -85,4 +85,4 @@ TEST_F(DiffRun, OutcomesAndWorstFramesDoNotDependOnTheThreadCount) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::diff

@@ -11,12 +11,12 @@
 #include "diff/perceptual_diff.hpp"
 #include "diff/ssim.hpp"
 
-namespace tumble::io {
+namespace tumble::diff {
 namespace {
 
 // A textured image with no value near 0 or 255, so shifts of ±30 fit.
-Image textured(int width, int height) {
-  Image image(width, height);
+io::Image textured(int width, int height) {
+  io::Image image(width, height);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       std::uint8_t* p = image.row(y) + 3 * x;
@@ -28,13 +28,13 @@ Image textured(int width, int height) {
   return image;
 }
 
-Image flat(int width, int height, std::uint8_t level) {
-  Image image(width, height);
+io::Image flat(int width, int height, std::uint8_t level) {
+  io::Image image(width, height);
   image.rgb.assign(image.rgb.size(), level);
   return image;
 }
 
-std::uint8_t* pixel(Image& image, int x, int y) {
+std::uint8_t* pixel(io::Image& image, int x, int y) {
   return image.row(y) + 3 * x;
 }
 
@@ -49,7 +49,7 @@ FrameCriteria criteria(DiffMetric metric, std::optional<double> threshold = std:
 
 // Wang et al. 2004 written out directly: for every window position a 2D Gaussian (σ = 1.5)
 // normalised over the window, weighted means, variances and covariance, eq. 13, then the mean.
-double reference_ssim(const Image& a, const Image& b) {
+double reference_ssim(const io::Image& a, const io::Image& b) {
   int side = std::min({11, a.width, a.height});
   if (side % 2 == 0) --side;
   const int r = side / 2;
@@ -57,7 +57,7 @@ double reference_ssim(const Image& a, const Image& b) {
   for (int j = -r; j <= r; ++j) {
     for (int i = -r; i <= r; ++i) total_weight += std::exp(-(i * i + j * j) / 4.5);
   }
-  const auto luma = [](const Image& image, int x, int y) {
+  const auto luma = [](const io::Image& image, int x, int y) {
     const std::uint8_t* p = image.row(y) + 3 * x;
     return 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
   };
@@ -87,8 +87,8 @@ double reference_ssim(const Image& a, const Image& b) {
 }
 
 TEST(FrameMetrics, OneChangedPixelIsCountedByMaxAndPerceptual) {
-  const Image a = flat(9, 7, 100);
-  Image b = a;
+  const io::Image a = flat(9, 7, 100);
+  io::Image b = a;
   std::uint8_t* changed = pixel(b, 4, 3);
   changed[0] = 140;  // +40 red
   const FrameFigures max = compare_frame(a, b, criteria(DiffMetric::max));
@@ -121,14 +121,14 @@ TEST(FrameMetrics, OneChangedPixelIsCountedByMaxAndPerceptual) {
 // A vertical black-to-white edge whose one grey (anti-aliased) column changes shade, as when an
 // edge moves by a fraction of a pixel.
 TEST(FrameMetrics, AShiftedEdgePassesPerceptualIgnoringAntiAliasingAndFailsMax) {
-  Image a(12, 8);
+  io::Image a(12, 8);
   for (int y = 0; y < 8; ++y) {
     for (int x = 0; x < 12; ++x) {
       const std::uint8_t level = x < 5 ? 0 : x == 5 ? 128 : 255;
       std::fill_n(pixel(a, x, y), 3, level);
     }
   }
-  Image b = a;
+  io::Image b = a;
   for (int y = 0; y < 8; ++y) std::fill_n(pixel(b, 5, y), 3, 96);  // 32 levels darker
   EXPECT_TRUE(is_antialiased(a, 5, 3, b));
   EXPECT_TRUE(is_antialiased(a, 5, 0, b));   // at the border too
@@ -145,11 +145,11 @@ TEST(FrameMetrics, AShiftedEdgePassesPerceptualIgnoringAntiAliasingAndFailsMax) 
 }
 
 TEST(FrameMetrics, AChangeInsideAFlatAreaIsNoAntiAliasing) {
-  Image a = flat(12, 8, 0);
+  io::Image a = flat(12, 8, 0);
   for (int y = 0; y < 8; ++y) {
     for (int x = 6; x < 12; ++x) std::fill_n(pixel(a, x, y), 3, 255);
   }
-  Image b = a;
+  io::Image b = a;
   std::fill_n(pixel(b, 2, 4), 3, 128);  // a grey dot in the black: both neighbours darker-or-equal
   const FrameFigures figures = compare_frame(a, b, criteria(DiffMetric::perceptual, {}, true));
   EXPECT_EQ(figures.differing_pixels, 1);
@@ -157,8 +157,8 @@ TEST(FrameMetrics, AChangeInsideAFlatAreaIsNoAntiAliasing) {
 }
 
 TEST(FrameMetrics, AColourShiftOfKnownSizeGivesTheTextbookPsnrAndSsim) {
-  const Image a = textured(16, 14);
-  Image b = a;
+  const io::Image a = textured(16, 14);
+  io::Image b = a;
   for (std::uint8_t& level : b.rgb) level += 10;
   const FrameFigures psnr = compare_frame(a, b, criteria(DiffMetric::psnr));
   EXPECT_NEAR(psnr.psnr, 10 * std::log10(65025.0 / 100.0), 1e-12);  // 28.13 dB
@@ -181,14 +181,14 @@ TEST(FrameMetrics, SsimOnATinyImageUsesTheLargestOddWindowThatFits) {
   for (int k = -5; k <= 5; ++k) total += ssim_window_weight(k, 11);
   EXPECT_NEAR(total, 1.0, 1e-15);
   EXPECT_NEAR(ssim_window_weight(0, 11) / ssim_window_weight(1, 11), std::exp(1 / 4.5), 1e-12);
-  Image a = textured(8, 6);
-  Image b = a;
+  io::Image a = textured(8, 6);
+  io::Image b = a;
   pixel(b, 3, 3)[1] += 25;
   EXPECT_NEAR(mean_ssim(a, b), reference_ssim(a, b), 1e-12);
 }
 
 TEST(FrameMetrics, IdenticalImagesHaveInfinitePsnrAndMatchEveryMetric) {
-  const Image a = textured(20, 12);
+  const io::Image a = textured(20, 12);
   for (DiffMetric metric : {DiffMetric::max, DiffMetric::rms, DiffMetric::perceptual,
                             DiffMetric::ssim, DiffMetric::psnr}) {
     const FrameFigures figures = compare_frame(a, a, criteria(metric));
@@ -198,8 +198,8 @@ TEST(FrameMetrics, IdenticalImagesHaveInfinitePsnrAndMatchEveryMetric) {
 }
 
 TEST(FrameMetrics, MaxPercentAllowsAShareOfThePixels) {
-  const Image a = flat(10, 10, 50);
-  Image b = a;
+  const io::Image a = flat(10, 10, 50);
+  io::Image b = a;
   pixel(b, 1, 1)[0] = 200;
   pixel(b, 8, 8)[2] = 200;
   FrameCriteria c = criteria(DiffMetric::max);
@@ -227,14 +227,14 @@ TEST(FrameMetrics, TheYiqScaleTopsOutAtPixelmatchsConstant) {
 }
 
 TEST(FrameMetrics, TheDifferencePictureMarksCountedRedAndAntiAliasedYellow) {
-  Image a(12, 8);
+  io::Image a(12, 8);
   for (int y = 0; y < 8; ++y) {
     for (int x = 0; x < 12; ++x) std::fill_n(pixel(a, x, y), 3, x < 5 ? 0 : x == 5 ? 128 : 255);
   }
-  Image b = a;
+  io::Image b = a;
   std::fill_n(pixel(b, 5, 2), 3, 96);  // on the edge: anti-aliasing
   std::fill_n(pixel(b, 9, 4), 3, 0);   // a black dot in the white: counted
-  const Image picture = difference_picture(a, b, criteria(DiffMetric::perceptual, {}, true));
+  const io::Image picture = difference_picture(a, b, criteria(DiffMetric::perceptual, {}, true));
   const std::uint8_t* edge = picture.row(2) + 3 * 5;
   EXPECT_EQ(edge[0], 255);
   EXPECT_EQ(edge[1], 255);
@@ -247,4 +247,4 @@ TEST(FrameMetrics, TheDifferencePictureMarksCountedRedAndAntiAliasedYellow) {
 }
 
 }  // namespace
-}  // namespace tumble::io
+}  // namespace tumble::diff

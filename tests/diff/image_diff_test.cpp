@@ -9,27 +9,27 @@
 #include <utility>
 #include <vector>
 
-namespace tumble::io {
+namespace tumble::diff {
 namespace {
 
 constexpr int kWidth = 7;
 constexpr int kHeight = 5;
 
 // Each channel a different value, and no value near 0 or 255, so changes of either sign fit.
-Image base_image() {
-  Image image(kWidth, kHeight);
+io::Image base_image() {
+  io::Image image(kWidth, kHeight);
   for (std::size_t i = 0; i < image.rgb.size(); ++i) {
     image.rgb[i] = static_cast<std::uint8_t>(20 + (i * 37) % 200);
   }
   return image;
 }
 
-std::uint8_t* pixel(Image& image, int x, int y) {
+std::uint8_t* pixel(io::Image& image, int x, int y) {
   return image.row(y) + 3 * x;
 }
 
 TEST(CompareImages, IdenticalImagesHaveNoDifference) {
-  const Image a = base_image();
+  const io::Image a = base_image();
   const DiffResult result = compare_images(a, a, {});
   EXPECT_EQ(result.differing_pixels, 0);
   EXPECT_EQ(result.max_channel_difference, 0);
@@ -38,8 +38,8 @@ TEST(CompareImages, IdenticalImagesHaveNoDifference) {
 }
 
 TEST(CompareImages, OneChannelOfOnePixelChangedByTen) {
-  const Image a = base_image();
-  Image b = a;
+  const io::Image a = base_image();
+  io::Image b = a;
   pixel(b, 3, 2)[1] += 10;
   const DiffResult result = compare_images(a, b, {});
   EXPECT_EQ(result.differing_pixels, 1);
@@ -54,8 +54,8 @@ TEST(CompareImages, OneChannelOfOnePixelChangedByTen) {
 }
 
 TEST(CompareImages, APixelDiffersByItsLargestChannelAndRmsCountsEveryChannel) {
-  const Image a = base_image();
-  Image b = a;
+  const io::Image a = base_image();
+  io::Image b = a;
   std::uint8_t* changed = pixel(b, 0, 4);
   changed[0] += 3;
   changed[1] -= 7;
@@ -68,8 +68,8 @@ TEST(CompareImages, APixelDiffersByItsLargestChannelAndRmsCountsEveryChannel) {
 }
 
 TEST(CompareImages, APixelDiffersOnlyWhenAboveTheThreshold) {
-  const Image a = base_image();
-  Image b = a;
+  const io::Image a = base_image();
+  io::Image b = a;
   pixel(b, 6, 0)[2] -= 10;
   const DiffResult below = compare_images(a, b, {9, 0});
   EXPECT_EQ(below.differing_pixels, 1);
@@ -87,8 +87,8 @@ TEST(CompareImages, APixelDiffersOnlyWhenAboveTheThreshold) {
 }
 
 TEST(CompareImages, TheImagesMatchWhenAtMostMaxPixelsDiffer) {
-  const Image a = base_image();
-  Image b = a;
+  const io::Image a = base_image();
+  io::Image b = a;
   pixel(b, 0, 0)[0] += 1;
   pixel(b, 4, 1)[1] += 2;
   pixel(b, 6, 4)[2] += 3;
@@ -102,8 +102,8 @@ TEST(CompareImages, TheImagesMatchWhenAtMostMaxPixelsDiffer) {
 }
 
 TEST(CompareImages, BlackAgainstWhiteIsTheLargestPossibleDifference) {
-  const Image black(3, 2);
-  Image white(3, 2);
+  const io::Image black(3, 2);
+  io::Image white(3, 2);
   white.rgb.assign(white.rgb.size(), 255);
   const DiffResult result = compare_images(black, white, {254, 5});
   EXPECT_EQ(result.differing_pixels, 6);
@@ -113,14 +113,14 @@ TEST(CompareImages, BlackAgainstWhiteIsTheLargestPossibleDifference) {
 }
 
 TEST(DiffImage, HighlightsExactlyThePixelsAboveTheThreshold) {
-  const Image a = base_image();
-  Image b = a;
+  const io::Image a = base_image();
+  io::Image b = a;
   pixel(b, 1, 1)[0] += 1;   // below the threshold of 2: not highlighted
   pixel(b, 2, 3)[1] += 3;   // highlighted
   pixel(b, 5, 0)[2] -= 20;  // highlighted
   pixel(b, 6, 4)[0] += 2;   // at the threshold: not highlighted
   const std::set<std::pair<int, int>> expected = {{2, 3}, {5, 0}};
-  const Image diff = diff_image(a, b, 2);
+  const io::Image diff = diff_image(a, b, 2);
   ASSERT_EQ(diff.width, kWidth);
   ASSERT_EQ(diff.height, kHeight);
   for (int y = 0; y < kHeight; ++y) {
@@ -133,12 +133,12 @@ TEST(DiffImage, HighlightsExactlyThePixelsAboveTheThreshold) {
 }
 
 TEST(DiffImage, RedGrowsWithTheDifferenceAndTheRestIsDimmedGrey) {
-  Image a(4, 1);
+  io::Image a(4, 1);
   a.rgb = {255, 255, 255, 0, 0, 0, 100, 100, 100, 0, 0, 0};
-  Image b = a;
+  io::Image b = a;
   b.rgb[3] = 1;     // pixel 1 differs by 1
   b.rgb[11] = 255;  // pixel 3 differs by 255
-  const Image diff = diff_image(a, b, 0);
+  const io::Image diff = diff_image(a, b, 0);
   EXPECT_EQ(diff.rgb, (std::vector<std::uint8_t>{76, 76, 76,    // white at 30%
                                                  128, 0, 0,     // smallest difference
                                                  30, 30, 30,    // grey 100 at 30%
@@ -146,4 +146,4 @@ TEST(DiffImage, RedGrowsWithTheDifferenceAndTheRestIsDimmedGrey) {
 }
 
 }  // namespace
-}  // namespace tumble::io
+}  // namespace tumble::diff

@@ -6,24 +6,26 @@
 
 #include "io/quantisation.hpp"
 
-namespace tumble::io {
+namespace tumble::diff {
 namespace {
 
 // Two macroblocks side by side, mid grey.
-Image two_blocks() {
-  Image image(2 * kMacroblockSize, kMacroblockSize);
+io::Image two_blocks() {
+  io::Image image(2 * io::kMacroblockSize, io::kMacroblockSize);
   image.rgb.assign(image.rgb.size(), 120);
   return image;
 }
 
 // BT.709, limited range (swscale's SWS_CS_ITU709 is 1).
-QuantisationAllowance bt709(int qp) { return h264_allowance(qp, 0, 1, false); }
+io::QuantisationAllowance bt709(int qp) {
+  return io::h264_allowance(qp, 0, 1, false);
+}
 
 // compare_frame: perceptual forgives a failing pixel in a macroblock within the allowance (and
 // says how many), max does not.
 TEST(Quantisation, PerceptualForgivesPixelsWithinTheAllowanceAndMaxDoesNot) {
-  Image base = two_blocks();
-  Image changed = base;
+  io::Image base = two_blocks();
+  io::Image changed = base;
   changed.row(3)[3 * 5] = 200;  // one pixel of the left block: 80 levels more red
   // RMS over 256 pixels: Y' 80 · 0.2126 · 219/255 / 16 = 0.91, Cr 80 · 0.7874 / 1.5748 ·
   // 224/255 / 16 = 2.20: within half the step of QP 20 (6.5 / 2), not of QP 14 (3.25 / 2).
@@ -45,4 +47,4 @@ TEST(Quantisation, PerceptualForgivesPixelsWithinTheAllowanceAndMaxDoesNot) {
 }
 
 }  // namespace
-}  // namespace tumble::io
+}  // namespace tumble::diff

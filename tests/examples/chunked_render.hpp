@@ -64,7 +64,7 @@ inline std::vector<double> rms_to_each_frame(const Image& picture,
     Image png;
     EXPECT_EQ(io::read_png((frames / frame_name(k)).string(), png), "");
     rms.push_back(png.width == picture.width && png.height == picture.height
-                      ? io::compare_images(png, picture, {.threshold = 255, .max_pixels = 0}).rms
+                      ? diff::compare_images(png, picture, {.threshold = 255, .max_pixels = 0}).rms
                       : 255.0);
   }
   return rms;

@@ -6,7 +6,7 @@
 
 #include "io/json_text.hpp"
 
-namespace tumble::app {
+namespace tumble::io {
 namespace {
 
 TEST(JsonReader, ReadsEveryKindOfValue) {
@@ -54,4 +54,4 @@ TEST(JsonReader, RefusesWhatIsNotJsonNamingTheByte) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::io

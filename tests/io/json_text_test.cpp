@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace tumble::app {
+namespace tumble::io {
 namespace {
 
 TEST(JsonText, StringsEscapeQuotesBackslashesAndControlCharacters) {
@@ -38,4 +38,4 @@ TEST(JsonText, ArraysOfIntegersAndOfDoubles) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::io

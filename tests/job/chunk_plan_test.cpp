@@ -7,7 +7,7 @@
 #include <climits>
 #include <vector>
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 std::vector<std::string> texts(const std::vector<FrameRange>& ranges) {
@@ -79,4 +79,4 @@ TEST(ChunkPlan, ParsesIOverNFromOne) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::job

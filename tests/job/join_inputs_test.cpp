@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 TEST(JoinInputs, RangesThatCoverEveryFrameOnceHaveNoProblem) {
@@ -31,7 +31,7 @@ ChunkReport chunk(const std::string& folder, const std::string& settings, const 
   report.scene_file = "spin.toml";
   report.scene_hash = hash;
   report.scene_frames = 15;
-  report.settings = *parse_json(settings);
+  report.settings = *io::parse_json(settings);
   return report;
 }
 
@@ -49,4 +49,4 @@ TEST(JoinInputs, NamesTheSettingThatDiffersAndTheTwoFolders) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -9,7 +9,7 @@
 #include "job/render_job.hpp"
 #include "scene/scene_loader.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 scene::Scene cube() {
@@ -62,4 +62,4 @@ TEST(QualityPreset, AnUnknownNameIsAnErrorListingTheNames) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -6,7 +6,7 @@
 
 #include "io/sha256.hpp"
 
-namespace tumble::app {
+namespace tumble::job {
 namespace {
 
 TEST(SceneHash, IsTheSha256OfTheFileAndTheValuesAsRendered) {
@@ -42,4 +42,4 @@ TEST(SceneHash, ChangesWithTheFileAndWithEachOverrideButNotTheOutputs) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::job

@@ -9,7 +9,7 @@
 #include "support/command_test.hpp"
 #include "support/render_scenes.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 namespace {
 
 using testing::CommandTest;
@@ -106,4 +106,4 @@ TEST_F(ContactSheetRun, WithAFrameRangeBothKeepToTheFramesRendered) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

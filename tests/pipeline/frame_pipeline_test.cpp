@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace tumble::app {
+namespace tumble::pipeline {
 namespace {
 
 // A cube that turns a little each frame, so that every frame's picture differs.
@@ -105,4 +105,4 @@ TEST(FramePipeline, AnErrorFromTheSourceOrASinkStopsTheRunWithItsMessage) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

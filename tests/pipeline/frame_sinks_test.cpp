@@ -16,7 +16,7 @@
 #include "support/render_scenes.hpp"
 #include "support/video_reader.hpp"
 
-namespace tumble::app {
+namespace tumble::pipeline {
 namespace {
 
 using testing::CommandTest;
@@ -174,4 +174,4 @@ TEST_F(VideoSinkTest, TransparentBackgroundGivesAlphaInPngAndWebm) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::pipeline

@@ -25,7 +25,7 @@ using testing::kShaders;
 // Same machine, same Mesa: renders are bit-identical (see DrawingTwiceIsByteIdentical). The
 // tolerance absorbs another Mesa or LLVM version rounding a shading or rasterisation decision
 // differently: a pixel may differ by up to 8 of 255 per channel, and up to 1% of pixels by more.
-constexpr io::DiffOptions kGoldenTolerance{.threshold = 8, .max_pixels = 160 * 120 / 100};
+constexpr diff::DiffOptions kGoldenTolerance{.threshold = 8, .max_pixels = 160 * 120 / 100};
 
 // 4 samples per pixel, as the goldens were drawn before the edge filter became the default.
 RenderSettings small_settings() {

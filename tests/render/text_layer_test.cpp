@@ -25,7 +25,7 @@ using testing::kShaders;
 // Same machine, same Mesa and FreeType: bit-identical (DrawingTextTwiceIsByteIdentical). The
 // tolerance is the scene goldens' (renderer_test.cpp): 8 of 255 per channel, and 1% of the
 // pixels beyond that, for another Mesa, LLVM or FreeType rounding an edge's coverage otherwise.
-io::DiffOptions golden_tolerance(const io::Image& image) {
+diff::DiffOptions golden_tolerance(const io::Image& image) {
   return {.threshold = 8,
           .max_pixels = static_cast<std::int64_t>(image.width) * image.height / 100};
 }

@@ -27,7 +27,7 @@ inline io::Image draw(const render::RenderSettings& settings, const render::Fram
 }
 
 inline void expect_matches_golden(const io::Image& image, const std::string& name,
-                                  const io::DiffOptions& tolerance) {
+                                  const diff::DiffOptions& tolerance) {
   const std::string path = kGoldens + name + ".png";
   if (std::getenv("TUMBLE_UPDATE_GOLDEN")) {
     ASSERT_EQ(io::write_png(path, image, {.compression_level = 9, .filter = true}), "");
@@ -37,7 +37,7 @@ inline void expect_matches_golden(const io::Image& image, const std::string& nam
   ASSERT_EQ(io::read_png(path, golden), "");
   ASSERT_EQ(golden.width, image.width);
   ASSERT_EQ(golden.height, image.height);
-  const io::DiffResult diff = io::compare_images(golden, image, tolerance);
+  const diff::DiffResult diff = diff::compare_images(golden, image, tolerance);
   EXPECT_TRUE(diff.match) << name << ": " << diff.differing_pixels << " pixels differ, largest "
                           << diff.max_channel_difference << ", rms " << diff.rms;
 }

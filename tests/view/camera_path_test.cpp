@@ -7,11 +7,11 @@
 
 #include <cmath>
 
-#include "view/scene_view.hpp"
 #include "scene/scene_builder.hpp"
 #include "support/render_golden.hpp"
+#include "view/scene_view.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 using physics::Vec3;
@@ -141,4 +141,4 @@ TEST(CameraPath, RenderedBoxLandsWhereTheKeyedCameraProjectsIt) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::view

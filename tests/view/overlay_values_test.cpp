@@ -12,14 +12,14 @@
 #include <string>
 #include <variant>
 
-#include "view/scene_view.hpp"
 #include "physics/forces.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/text_template.hpp"
 #include "support/command_test.hpp"
+#include "view/scene_view.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 using physics::Vec3;
@@ -160,4 +160,4 @@ text = "{cube.speed:.4f}|{cube.position.y:.5f}"
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::view

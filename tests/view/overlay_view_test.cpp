@@ -10,12 +10,12 @@
 #include <string>
 #include <variant>
 
-#include "view/scene_view.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/render_golden.hpp"
+#include "view/scene_view.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 // A cube tossed up and spun about a tilted axis under gravity, the camera given (no framing
@@ -228,4 +228,4 @@ TEST(OverlayView, OnlyWhatTheOverlaysDrawIsSetUp) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::view

@@ -6,11 +6,11 @@
 #include <string>
 #include <variant>
 
-#include "view/scene_view.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
+#include "view/scene_view.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 using render::Vec3;
@@ -171,4 +171,4 @@ size = [3, 2]
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::view

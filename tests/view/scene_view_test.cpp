@@ -9,7 +9,7 @@
 
 #include "scene/scene_builder.hpp"
 
-namespace tumble::app {
+namespace tumble::view {
 namespace {
 
 using physics::Vec3;
@@ -129,4 +129,4 @@ TEST(SceneView, AStopDuringTheFramingPassIsAnError) {
 }
 
 }  // namespace
-}  // namespace tumble::app
+}  // namespace tumble::view

@@ -12,7 +12,7 @@
 
 #include "sys/interrupt.hpp"
 
-namespace tumble::app {
+namespace tumble::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -26,7 +26,7 @@ struct RunFigures {
 
 struct Run {
   std::string name;
-  FrameRange frames;
+  job::FrameRange frames;
   RunFigures figures;
   double cpu = 0.0;   // s, user + system of the whole process (every thread)
   double wall = 0.0;  // s
@@ -37,12 +37,12 @@ double seconds(const timeval& time) {
 }
 
 // The child's side: render, report, exit without running the parent's destructors.
-[[noreturn]] void render_in_child(const RenderJob& job, const fs::path& folder, int pipe_out) {
+[[noreturn]] void render_in_child(const job::RenderJob& job, const fs::path& folder, int pipe_out) {
   RunFigures figures;
   std::error_code ignored;
   fs::create_directories(folder, ignored);
-  const RenderResult result = render_scene(
-      job, folder, [] { return interrupt_signal() != 0; }, [](std::int64_t) {});
+  const job::RenderResult result = job::render_scene(
+      job, folder, [] { return sys::interrupt_signal() != 0; }, [](std::int64_t) {});
   figures.framing = result.framing_seconds;
   figures.renderer = result.renderer_seconds;
   figures.seek = result.seek_seconds;
@@ -53,7 +53,7 @@ double seconds(const timeval& time) {
 }
 
 // One render of `job` in a process of its own, timed.
-Result<Run> run_forked(const RenderJob& job, const fs::path& folder) {
+Result<Run> run_forked(const job::RenderJob& job, const fs::path& folder) {
   int pipe_ends[2];
   if (::pipe(pipe_ends) != 0) return Error{std::string("pipe: ") + std::strerror(errno)};
   const auto start = std::chrono::steady_clock::now();
@@ -83,7 +83,7 @@ Result<Run> run_forked(const RenderJob& job, const fs::path& folder) {
   return run;
 }
 
-std::string table(const std::vector<Run>& runs, const RenderJob& job, std::int64_t chunks) {
+std::string table(const std::vector<Run>& runs, const job::RenderJob& job, std::int64_t chunks) {
   const Run& whole = runs.front();
   double cpu = 0.0, wall = 0.0, overhead = 0.0;
   for (std::size_t i = 1; i < runs.size(); ++i) {
@@ -95,12 +95,12 @@ std::string table(const std::vector<Run>& runs, const RenderJob& job, std::int64
   out.precision(3);
   out << std::fixed << "Chunk benchmark: " << job.frame_count << " frames at "
       << job.scene.render.width << "x" << job.scene.render.height
-      << ", antialiasing: " << antialiasing_name(job.scene.render.msaa) << ", whole and as "
+      << ", antialiasing: " << job::antialiasing_name(job.scene.render.msaa) << ", whole and as "
       << chunks << " chunks, each a process of its own, one after another\n\n"
       << "| run | frames | CPU s | wall s | framing pass CPU s | context + shaders CPU s | physics "
          "to first frame CPU s (steps) |\n| --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
   for (const Run& run : runs) {
-    out << "| " << run.name << " | " << range_text(run.frames) << " | " << run.cpu << " | "
+    out << "| " << run.name << " | " << job::range_text(run.frames) << " | " << run.cpu << " | "
         << run.wall << " | " << run.figures.framing << " | " << run.figures.renderer << " | "
         << run.figures.seek << " (" << run.figures.seek_steps << ") |\n";
   }
@@ -115,13 +115,13 @@ std::string table(const std::vector<Run>& runs, const RenderJob& job, std::int64
 
 }  // namespace
 
-Result<std::string> bench_chunks(const RenderJob& job, std::int64_t chunks, const fs::path& scratch,
-                                 std::FILE* err) {
-  const Result<std::vector<FrameRange>> plan = plan_chunks(job.frame_count, chunks);
+Result<std::string> bench_chunks(const job::RenderJob& job, std::int64_t chunks,
+                                 const fs::path& scratch, std::FILE* err) {
+  const Result<std::vector<job::FrameRange>> plan = job::plan_chunks(job.frame_count, chunks);
   if (!plan) return Error{"--chunks: " + plan.error()};
   std::vector<Run> runs;
   for (std::size_t i = 0; i <= plan->size(); ++i) {
-    RenderJob variant = job;
+    job::RenderJob variant = job;
     std::string name = "whole";
     if (i > 0) {
       variant.first = (*plan)[i - 1].first;
@@ -131,11 +131,11 @@ Result<std::string> bench_chunks(const RenderJob& job, std::int64_t chunks, cons
     std::fprintf(err, "bench: %s ...\n", name.c_str());
     Result<Run> run = run_forked(variant, scratch / ("run-" + std::to_string(i)));
     if (!run) return Error{name + ": " + run.error()};
-    if (interrupt_signal() != 0) return Error{"stopped"};
+    if (sys::interrupt_signal() != 0) return Error{"stopped"};
     run->name = name;
     runs.push_back(*run);
   }
   return table(runs, job, chunks);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::bench

@@ -10,11 +10,11 @@
 
 #include "job/render_job.hpp"
 
-namespace tumble::app {
+namespace tumble::bench {
 
 // Renders `job` whole and as `chunks` chunks (app/chunk_plan.hpp) into folders below `scratch`,
 // with progress on `err`, and returns the table (Markdown); an error names what failed.
-Result<std::string> bench_chunks(const RenderJob& job, std::int64_t chunks,
+Result<std::string> bench_chunks(const job::RenderJob& job, std::int64_t chunks,
                                  const std::filesystem::path& scratch, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::bench

@@ -7,17 +7,17 @@
 #include <system_error>
 #include <vector>
 
-#include "sys/child_process.hpp"
-#include "io/json_text.hpp"
-#include "pipeline/progress.hpp"
 #include "bench/pile.hpp"
 #include "bench/pile_run.hpp"
 #include "bench/pile_run_stream.hpp"
 #include "bench/pile_table.hpp"
 #include "bench/tumble_pile.hpp"
 #include "io/atomic_file.hpp"
+#include "io/json_text.hpp"
+#include "pipeline/progress.hpp"
+#include "sys/child_process.hpp"
 
-namespace tumble::app {
+namespace tumble::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -50,9 +50,9 @@ struct PeerColumn {
 };
 
 PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, const Pile& pile,
-                    Progress& progress) {
+                    pipeline::Progress& progress) {
   bench::PileRunReader reader(pile);
-  const std::string ended = run_reading_lines(
+  const std::string ended = sys::run_reading_lines(
       peer.string(),
       {"--engine", "bullet", "--stream", "--bodies", std::to_string(options.bodies), "--seconds",
        exact(options.seconds), "--seed", std::to_string(options.seed)},
@@ -74,39 +74,40 @@ PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, co
 
 std::string engine_json(const PileRun& run, double dt) {
   const std::size_t peak = bench::peak_contact_step(run);
-  return "{\n    \"engine\": " + json_string(run.engine) +
+  return "{\n    \"engine\": " + io::json_string(run.engine) +
          ",\n    \"steps\": " + std::to_string(run.step_ms.size()) +
-         ",\n    \"median_ms_per_step\": " + json_number(bench::median_step_ms(run)) +
-         ",\n    \"median_cpu_ms_per_step\": " + json_number(bench::median_step_cpu_ms(run)) +
+         ",\n    \"median_ms_per_step\": " + io::json_number(bench::median_step_ms(run)) +
+         ",\n    \"median_cpu_ms_per_step\": " + io::json_number(bench::median_step_cpu_ms(run)) +
          ",\n    \"ms_per_step_at_peak_contacts\": " +
-         json_number(bench::ms_at_peak_contacts(run)) + ",\n    \"peak_contacts\": " +
+         io::json_number(bench::ms_at_peak_contacts(run)) + ",\n    \"peak_contacts\": " +
          (run.contacts.empty() ? "null" : std::to_string(run.contacts[peak])) +
-         ",\n    \"peak_contacts_t_s\": " + json_number(bench::peak_contact_time(run, dt)) +
+         ",\n    \"peak_contacts_t_s\": " + io::json_number(bench::peak_contact_time(run, dt)) +
          ",\n    \"contacts_at_end\": " +
          (run.contacts.empty() ? "null" : std::to_string(run.contacts.back())) +
-         ",\n    \"largest_penetration_m\": " + json_number(run.largest_penetration_m) +
+         ",\n    \"largest_penetration_m\": " + io::json_number(run.largest_penetration_m) +
          ",\n    \"boxes_out_of_bin\": " + std::to_string(run.escaped) +
-         ",\n    \"largest_speed_at_end_m_per_s\": " + json_number(run.largest_final_speed) +
-         ",\n    \"step_ms\": " + json_array(run.step_ms) +
-         ",\n    \"step_cpu_ms\": " + json_array(run.step_cpu_ms) +
-         ",\n    \"contacts\": " + json_array(run.contacts) +
-         ",\n    \"depth_m\": " + json_array(run.depth_m) +
-         ",\n    \"top_speed_m_per_s\": " + json_array(run.top_speed) + "\n  }";
+         ",\n    \"largest_speed_at_end_m_per_s\": " + io::json_number(run.largest_final_speed) +
+         ",\n    \"step_ms\": " + io::json_array(run.step_ms) +
+         ",\n    \"step_cpu_ms\": " + io::json_array(run.step_cpu_ms) +
+         ",\n    \"contacts\": " + io::json_array(run.contacts) +
+         ",\n    \"depth_m\": " + io::json_array(run.depth_m) +
+         ",\n    \"top_speed_m_per_s\": " + io::json_array(run.top_speed) + "\n  }";
 }
 
 std::string report_json(const BenchContactOptions& options, const Pile& pile, const PileRun& tumble,
                         const PileRun& bullet) {
   const bench::StepTimeRatios ratios = bench::step_time_ratios(tumble, bullet);
-  return "{\n  \"pile\": {\"summary\": " + json_string(pile.summary) +
+  return "{\n  \"pile\": {\"summary\": " + io::json_string(pile.summary) +
          ", \"bodies\": " + std::to_string(options.bodies) +
          ", \"seed\": " + std::to_string(options.seed) +
-         ", \"seconds\": " + json_number(options.seconds) + ", \"dt\": " + json_number(pile.dt) +
-         ", \"steps\": " + std::to_string(pile.steps) +
+         ", \"seconds\": " + io::json_number(options.seconds) +
+         ", \"dt\": " + io::json_number(pile.dt) + ", \"steps\": " + std::to_string(pile.steps) +
          "},\n  \"tumble\": " + engine_json(tumble, pile.dt) +
          ",\n  \"bullet\": " + engine_json(bullet, pile.dt) +
-         ",\n  \"tumble_over_bullet\": {\"median_ms_per_step\": " + json_number(ratios.median_ms) +
-         ", \"median_cpu_ms_per_step\": " + json_number(ratios.median_cpu_ms) +
-         ", \"ms_per_step_at_peak_contacts\": " + json_number(ratios.ms_at_peak_contacts) +
+         ",\n  \"tumble_over_bullet\": {\"median_ms_per_step\": " +
+         io::json_number(ratios.median_ms) +
+         ", \"median_cpu_ms_per_step\": " + io::json_number(ratios.median_cpu_ms) +
+         ", \"ms_per_step_at_peak_contacts\": " + io::json_number(ratios.ms_at_peak_contacts) +
          "}\n}\n";
 }
 
@@ -179,8 +180,8 @@ int run_bench_contact(const BenchContactOptions& options, std::FILE* out, std::F
   const Pile pile = bench::make_pile(options.bodies, options.seed, options.seconds);
   std::fprintf(out, "pile: %s, one thread\n", pile.summary.c_str());
   std::fflush(out);
-  Progress progress(static_cast<std::int64_t>(pile.steps) * (have_peer ? 2 : 1), options.quiet, err,
-                    "steps");
+  pipeline::Progress progress(static_cast<std::int64_t>(pile.steps) * (have_peer ? 2 : 1),
+                              options.quiet, err, "steps");
   std::vector<PileRun> runs;
   runs.push_back(bench::run_pile_in_tumble(pile, [&](const PileRun& so_far) {
     progress.update(static_cast<std::int64_t>(so_far.step_ms.size()));
@@ -208,4 +209,4 @@ int run_bench_contact(const BenchContactOptions& options, std::FILE* out, std::F
   return kExitOk;
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::bench

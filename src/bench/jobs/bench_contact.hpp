@@ -12,7 +12,7 @@
 
 #include "common/exit_codes.hpp"
 
-namespace tumble::app {
+namespace tumble::bench {
 
 struct BenchContactOptions {
   int bodies = 1000;       // boxes in the pile
@@ -32,4 +32,4 @@ std::filesystem::path contact_bench_path();
 // no files are written), or when a file cannot be written.
 int run_bench_contact(const BenchContactOptions& options, std::FILE* out, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::bench

@@ -10,13 +10,13 @@
 
 #include "bench/jobs/bench_chunks.hpp"
 #include "common/exit_codes.hpp"
-#include "sys/interrupt.hpp"
-#include "job/render_job.hpp"
 #include "io/atomic_file.hpp"
 #include "io/staged_directory.hpp"
+#include "job/render_job.hpp"
 #include "scene/scene_loader.hpp"
+#include "sys/interrupt.hpp"
 
-namespace tumble::app {
+namespace tumble::bench {
 namespace {
 
 namespace fs = std::filesystem;
@@ -74,12 +74,13 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   }
   // The benchmark's sizes, rate and length override the scene's, as `tumble render`'s do, and
   // are held to the same rules (render_job.hpp).
-  RenderOptions overrides;
+  job::RenderOptions overrides;
   overrides.width = options.width;
   overrides.height = options.height;
   overrides.duration = static_cast<double>(options.frames) / std::get<scene::Scene>(loaded).fps;
   if (options.msaa != 0) overrides.msaa = options.msaa;
-  const Result<RenderJob> job = make_render_job(std::get<scene::Scene>(loaded), overrides);
+  const Result<job::RenderJob> job =
+      job::make_render_job(std::get<scene::Scene>(loaded), overrides);
   if (!job) {
     std::fprintf(err, "tumble: %s\n", job.error().c_str());
     return kExitBadInput;
@@ -89,7 +90,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   // The frames and videos, written only to be timed, go to a hidden scratch folder beside the
   // report (".pipeline.partial-<pid>"), never committed: it is removed on the way out, whatever
   // happens, and nothing of the user's is replaced.
-  install_interrupt_handlers();
+  sys::install_interrupt_handlers();
   const io::StagedDirectory scratch((fs::path(options.out) / "pipeline").string());
   if (!scratch.ok()) {
     std::fprintf(err, "tumble: %s\n", scratch.error().c_str());
@@ -98,8 +99,8 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   const fs::path root = scratch.path();
   if (options.chunks > 0) {
     const Result<std::string> chunk_table = bench_chunks(*job, options.chunks, root, err);
-    if (const int signal = interrupt_signal()) {
-      std::fprintf(err, "tumble: bench pipeline stopped by %s\n", signal_name(signal));
+    if (const int signal = sys::interrupt_signal()) {
+      std::fprintf(err, "tumble: bench pipeline stopped by %s\n", sys::signal_name(signal));
       return kExitInterrupted + signal;
     }
     if (!chunk_table) {
@@ -118,7 +119,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     fs::create_directories(directory, error_code);
     // The checked job, written another way: outputs on or off (off entirely for the ceiling),
     // other PNG and x264 settings, one thread or the pipeline.
-    RenderJob variant = *job;
+    job::RenderJob variant = *job;
     variant.scene.output.frames = frames;
     variant.scene.output.video = video;
     variant.scene.output.preset = preset;
@@ -126,8 +127,8 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     variant.serial = serial;
     variant.stills = false;  // the paths compared write frames and an MP4, nothing else
     std::fprintf(err, "bench: %s ...\n", name.c_str());
-    const RenderResult rendered = render_scene(
-        variant, directory, [] { return interrupt_signal() != 0; }, [](std::int64_t) {});
+    const job::RenderResult rendered = job::render_scene(
+        variant, directory, [] { return sys::interrupt_signal() != 0; }, [](std::int64_t) {});
     result.name = name;
     result.seconds = rendered.pipeline.wall + rendered.finish_seconds;
     result.efficiency = rendered.pipeline.process_cpu / cores / rendered.pipeline.wall;
@@ -145,8 +146,8 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   if (error.empty())
     error = run("png_then_ffmpeg", true, true, false, "default", "medium", results[3]);
   results[3].how = "one thread: draw, libpng defaults; then the ffmpeg program encodes the PNGs";
-  if (const int signal = interrupt_signal()) {
-    std::fprintf(err, "tumble: bench pipeline stopped by %s\n", signal_name(signal));
+  if (const int signal = sys::interrupt_signal()) {
+    std::fprintf(err, "tumble: bench pipeline stopped by %s\n", sys::signal_name(signal));
     return kExitInterrupted + signal;
   }
   if (!error.empty()) {
@@ -175,7 +176,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   const double pipelined_fps = frames / results[1].seconds;
   std::ostringstream table;
   table << "Pipeline benchmark: " << options.frames << " frames at " << options.width << "x"
-        << options.height << ", antialiasing: " << antialiasing_name(scene.render.msaa) << ", "
+        << options.height << ", antialiasing: " << job::antialiasing_name(scene.render.msaa) << ", "
         << cores << " cores\n\n"
         << "| path | frames/s | seconds | pipelined is × faster | CPU efficiency | what |\n"
         << "| --- | ---: | ---: | ---: | ---: | --- |\n";
@@ -190,4 +191,4 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   return publish(table.str(), options, out, err);
 }
 
-}  // namespace tumble::app
+}  // namespace tumble::bench

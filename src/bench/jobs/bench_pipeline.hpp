@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-namespace tumble::app {
+namespace tumble::bench {
 
 struct BenchPipelineOptions {
   std::string scene_path;  // "" = a built-in lit, shadowed spinning cube over a gridded ground
@@ -23,4 +23,4 @@ struct BenchPipelineOptions {
 // against the whole render's) and writes it to OUT/pipeline.md; returns the process exit code.
 int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std::FILE* err);
 
-}  // namespace tumble::app
+}  // namespace tumble::bench

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "io/json_text.hpp"
 #include "bench/pile.hpp"
 #include "bench/tumble_pile.hpp"
+#include "io/json_text.hpp"
 #include "support/command_test.hpp"
 
 namespace {
@@ -95,22 +95,22 @@ TEST_F(BenchContactCommand, TumblesColumnIsTheRunOfTheSamePileBitForBit) {
   const std::string json = read_file(dir_ / "out" / "contact_bench.json");
   EXPECT_EQ(count_of(json, "\"steps\": 30"), 3u) << json;  // the pile's, and each engine's
   const std::string tumble = object_named(json, "tumble");
-  EXPECT_NE(tumble.find("\"contacts\": " + tumble::app::json_array(expected.contacts) + ","),
+  EXPECT_NE(tumble.find("\"contacts\": " + tumble::io::json_array(expected.contacts) + ","),
             std::string::npos)
       << tumble;
-  EXPECT_NE(tumble.find("\"depth_m\": " + tumble::app::json_array(expected.depth_m) + ","),
+  EXPECT_NE(tumble.find("\"depth_m\": " + tumble::io::json_array(expected.depth_m) + ","),
             std::string::npos)
       << tumble;
   EXPECT_NE(
-      tumble.find("\"top_speed_m_per_s\": " + tumble::app::json_array(expected.top_speed) + "\n"),
+      tumble.find("\"top_speed_m_per_s\": " + tumble::io::json_array(expected.top_speed) + "\n"),
       std::string::npos)
       << tumble;
   EXPECT_NE(tumble.find("\"largest_penetration_m\": " +
-                        tumble::app::json_number(expected.largest_penetration_m) + ","),
+                        tumble::io::json_number(expected.largest_penetration_m) + ","),
             std::string::npos)
       << tumble;
   EXPECT_NE(tumble.find("\"largest_speed_at_end_m_per_s\": " +
-                        tumble::app::json_number(expected.largest_final_speed) + ","),
+                        tumble::io::json_number(expected.largest_final_speed) + ","),
             std::string::npos)
       << tumble;
   EXPECT_NE(tumble.find("\"boxes_out_of_bin\": 0,"), std::string::npos) << tumble;
