@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/patch_friction.hpp"
+
 namespace tumble::physics {
 namespace {
 
@@ -82,11 +84,7 @@ PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
   if (arms.empty()) return out;
   for (const Vec3& arm : arms) out.centre_arm += arm;
   out.centre_arm /= static_cast<double>(arms.size());
-  for (const Vec3& arm : arms) {
-    const Vec3 offset = arm - out.centre_arm;
-    out.twist_arm += (offset - offset.dot(normal) * normal).norm();
-  }
-  out.twist_arm /= static_cast<double>(arms.size());
+  out.twist_arm = patch_twist_arm(arms, normal, out.centre_arm);
   return out;
 }
 
