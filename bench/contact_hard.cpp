@@ -13,12 +13,12 @@ int main(int argc, char** argv) {
   int held = 0, figures = 0;
   std::printf("%-15s %-52s %12s %9s  %s\n", "case", "measure", "value", "bound", "holds");
   for (const std::string& name : names) {
-    const tumble::bench::HardCase result = tumble::bench::run_hard_contact_case(name);
+    const tumble::bench::HardContactCase result = tumble::bench::run_hard_contact_case(name);
     if (result.figures.empty()) {
       std::fprintf(stderr, "contact_hard: no case named \"%s\"\n", name.c_str());
       return 2;
     }
-    for (const tumble::bench::HardFigure& figure : result.figures) {
+    for (const tumble::bench::HardContactFigure& figure : result.figures) {
       std::printf("%-15s %-52s %12.3e %9.0e  %s\n", result.name.c_str(), figure.measure.c_str(),
                   figure.value, figure.bound, figure.holds() ? "yes" : "NO");
       held += figure.holds();

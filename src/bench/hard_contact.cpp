@@ -125,7 +125,7 @@ World column(const std::vector<double>& masses, double g = kG) {
 
 // The largest distance any box moves from where it starts (m) and the deepest any box goes
 // into the floor (m), over `seconds`.
-std::vector<HardFigure> stays(const World& world, double seconds) {
+std::vector<HardContactFigure> stays(const World& world, double seconds) {
   double moved = 0.0, deepest = 0.0;
   run(world, seconds, [&](double, const std::vector<BodyState>& states) {
     for (std::size_t i = 0; i < states.size(); ++i) {
@@ -137,7 +137,7 @@ std::vector<HardFigure> stays(const World& world, double seconds) {
           {"deepest into the floor (m)", deepest, 1e-3}};
 }
 
-HardFigure top_drift(const World& world, double seconds) {
+HardContactFigure top_drift(const World& world, double seconds) {
   double drift = 0.0;
   run(world, seconds, [&](double, const std::vector<BodyState>& states) {
     drift = std::max(drift, (states.back().position() - world.boxes.back().position).norm());
@@ -145,7 +145,7 @@ HardFigure top_drift(const World& world, double seconds) {
   return {"top drift (m)", drift, 1e-2};
 }
 
-HardCase load(double force /* N */) {
+HardContactCase load(double force /* N */) {
   World world = column({1.0});
   world.boxes[0].push = Vec3(0.0, -force, 0.0);
   double off = 0.0;
@@ -162,7 +162,7 @@ HardCase load(double force /* N */) {
 // Kinetic energy after one elastic impact of two spinning boxes against before (relative), with
 // no gravity and no friction. An impact that never happened gives infinity, so the case cannot
 // hold by missing.
-HardFigure elastic_impact(const World& world) {
+HardContactFigure elastic_impact(const World& world) {
   const std::vector<BodyState> start = simulation_of(world).current();
   const double before = energy(world, start);
   std::vector<BodyState> end = start;
@@ -172,7 +172,7 @@ HardFigure elastic_impact(const World& world) {
           struck ? std::abs(energy(world, end) - before) / before : kInfinity, 1e-9};
 }
 
-HardCase edge_on_edge() {
+HardContactCase edge_on_edge() {
   World world;
   world.boxes.push_back(
       {.orientation = Quat(Eigen::AngleAxisd(std::numbers::pi / 4, Vec3::UnitZ())),
@@ -191,7 +191,7 @@ HardCase edge_on_edge() {
           {elastic_impact(world)}};
 }
 
-HardCase corner_on_face() {
+HardContactCase corner_on_face() {
   World world;
   world.boxes.push_back(
       {.angular_velocity = Vec3(0.0, 0.3, 0.0), .material = kElastic, .gravity = Vec3::Zero()});
@@ -207,7 +207,7 @@ HardCase corner_on_face() {
           {elastic_impact(world)}};
 }
 
-HardCase closed_room() {
+HardContactCase closed_room() {
   World world;
   const double half = 2.0;  // m: a 4 m room
   for (int axis = 0; axis < 3; ++axis) {
@@ -240,7 +240,7 @@ HardCase closed_room() {
            {"energy lost by 60 s (relative)", (start - last) / start, 1e-2}}};
 }
 
-HardCase cradle() {
+HardContactCase cradle() {
   constexpr double kSpeed = 2.0;  // m/s, the striker's
   World world;
   world.boxes.push_back({.position = Vec3(-1.5, 0.0, 0.0),
@@ -263,7 +263,7 @@ HardCase cradle() {
            {"fastest other cube / striker", others, 0.05}}};
 }
 
-HardCase head_on() {
+HardContactCase head_on() {
   World world;
   world.boxes.push_back({.position = Vec3(-1.0, 0.0, 0.0),
                          .velocity = Vec3(2.0, 0.0, 0.0),
@@ -286,7 +286,7 @@ HardCase head_on() {
 
 // A box of `size` standing on the floor on an edge, turned about z 1 degree past balance on it,
 // friction 1: the energy must never rise above its start.
-HardCase tipping(const std::string& name, const Vec3& size, double dt) {
+HardContactCase tipping(const std::string& name, const Vec3& size, double dt) {
   const double balance = std::atan2(size.x(), size.y());  // rad: the diagonal upright
   const Quat turn(Eigen::AngleAxisd(balance + std::numbers::pi / 180.0, Vec3::UnitZ()));
   double lowest = kInfinity;  // of the corners, relative to the centre (m)
@@ -311,7 +311,7 @@ HardCase tipping(const std::string& name, const Vec3& size, double dt) {
           {{"largest energy rise above the start (relative)", (highest - start) / start, 1e-9}}};
 }
 
-HardCase twist() {
+HardContactCase twist() {
   // Uniform pressure on a square of side s: the mean lever arm is (s/6)(sqrt 2 + ln(1 + sqrt 2)),
   // so a cube spinning at w0 stops at I w0 / (mu m g r), I = m s^2 / 6.
   constexpr double kSpin = 50.0;  // rad/s
@@ -334,7 +334,7 @@ HardCase twist() {
            {"largest move of the centre (m)", moved, 1e-3}}};
 }
 
-HardCase symmetry() {
+HardContactCase symmetry() {
   World world = on_floor();
   world.boxes.push_back({.size = Vec3(1.0, 0.05, 1.0), .position = Vec3(0.0, 0.025, 0.0)});
   world.boxes.push_back({.size = Vec3::Constant(0.05),
@@ -354,7 +354,7 @@ HardCase symmetry() {
 
 // At rest by `by` s (and until `by` + 1 s): the fastest box and the fastest spin from then on,
 // and the deepest two boxes go into each other at any step.
-std::vector<HardFigure> comes_to_rest(const World& world, double by) {
+std::vector<HardContactFigure> comes_to_rest(const World& world, double by) {
   double speed = 0.0, spin = 0.0, overlap = 0.0;
   run(world, by + 1.0, [&](double t, const std::vector<BodyState>& states) {
     for (std::size_t i = 0; i < states.size(); ++i) {
@@ -382,35 +382,37 @@ World crossed_rods(double upper_height /* m */) {
   return world;
 }
 
-using CaseMaker = std::function<HardCase()>;
+using CaseMaker = std::function<HardContactCase()>;
 
 const std::vector<std::pair<std::string, CaseMaker>>& makers() {
   static const std::vector<std::pair<std::string, CaseMaker>> all = {
       {"ratio_100",
        [] {
-         return HardCase{"ratio_100", "a 100 kg cube resting on a 1 kg cube on the floor, 30 s",
-                         stays(column({1.0, 100.0}), 30.0)};
+         return HardContactCase{"ratio_100",
+                                "a 100 kg cube resting on a 1 kg cube on the floor, 30 s",
+                                stays(column({1.0, 100.0}), 30.0)};
        }},
       {"ratio_1000",
        [] {
-         return HardCase{"ratio_1000", "a 1000 kg cube resting on a 1 kg cube on the floor, 30 s",
-                         stays(column({1.0, 1000.0}), 30.0)};
+         return HardContactCase{"ratio_1000",
+                                "a 1000 kg cube resting on a 1 kg cube on the floor, 30 s",
+                                stays(column({1.0, 1000.0}), 30.0)};
        }},
       {"plate_1000",
        [] {
          World world = on_floor();
          world.boxes.push_back({.size = Vec3(2.0, 0.02, 2.0), .position = Vec3(0.0, 0.01, 0.0)});
          world.boxes.push_back({.mass = 1000.0, .position = Vec3(0.0, 0.52, 0.0)});
-         return HardCase{"plate_1000", "a 1000 kg cube on a 1 kg 2 x 0.02 x 2 m plate, 30 s",
-                         stays(world, 30.0)};
+         return HardContactCase{"plate_1000", "a 1000 kg cube on a 1 kg 2 x 0.02 x 2 m plate, 30 s",
+                                stays(world, 30.0)};
        }},
       {"chain_1_100",
        [] {
          std::vector<double> masses;
          for (int i = 0; i < 10; ++i) masses.push_back(i % 2 ? 100.0 : 1.0);
-         return HardCase{"chain_1_100",
-                         "a column of 10 cubes of 1 and 100 kg in turn, 30 s",
-                         {top_drift(column(masses), 30.0)}};
+         return HardContactCase{"chain_1_100",
+                                "a column of 10 cubes of 1 and 100 kg in turn, 30 s",
+                                {top_drift(column(masses), 30.0)}};
        }},
       {"load_1e+03", [] { return load(1e3); }},
       {"load_1e+04", [] { return load(1e4); }},
@@ -426,9 +428,9 @@ const std::vector<std::pair<std::string, CaseMaker>>& makers() {
              fastest = std::max(fastest, state.velocity().norm());
            }
          });
-         return HardCase{"stack_pushed",
-                         "a 2-stack with its top pushed down by 2e5 N, 10 s",
-                         {{"fastest box at a step (m/s)", fastest, 0.01}}};
+         return HardContactCase{"stack_pushed",
+                                "a 2-stack with its top pushed down by 2e5 N, 10 s",
+                                {{"fastest box at a step (m/s)", fastest, 0.01}}};
        }},
       {"edge_on_edge", edge_on_edge},
       {"corner_on_face", corner_on_face},
@@ -443,26 +445,26 @@ const std::vector<std::pair<std::string, CaseMaker>>& makers() {
       {"symmetry", symmetry},
       {"rods_crossed",
        [] {
-         return HardCase{"rods_crossed", "two 3 m rods lying crossed on the floor",
-                         comes_to_rest(crossed_rods(0.075), 5.0)};
+         return HardContactCase{"rods_crossed", "two 3 m rods lying crossed on the floor",
+                                comes_to_rest(crossed_rods(0.075), 5.0)};
        }},
       {"rod_dropped",
        [] {
-         return HardCase{"rod_dropped", "a 3 m rod dropped from 0.5 m across another",
-                         comes_to_rest(crossed_rods(0.5), 5.0)};
+         return HardContactCase{"rod_dropped", "a 3 m rod dropped from 0.5 m across another",
+                                comes_to_rest(crossed_rods(0.5), 5.0)};
        }},
       {"stack_dt10",
        [] {
          World world = column({1.0, 1.0, 1.0});
          world.dt = 0.1;
-         std::vector<HardFigure> figures = comes_to_rest(world, 5.0);
-         return HardCase{"stack_dt10", "a 3-cube stack at dt = 1/10 s", figures};
+         std::vector<HardContactFigure> figures = comes_to_rest(world, 5.0);
+         return HardContactCase{"stack_dt10", "a 3-cube stack at dt = 1/10 s", figures};
        }},
       {"tower_g100",
        [] {
-         return HardCase{"tower_g100",
-                         "a 5-cube tower under g = 100 m/s², 30 s",
-                         {top_drift(column({1.0, 1.0, 1.0, 1.0, 1.0}, 100.0), 30.0)}};
+         return HardContactCase{"tower_g100",
+                                "a 5-cube tower under g = 100 m/s², 30 s",
+                                {top_drift(column({1.0, 1.0, 1.0, 1.0, 1.0}, 100.0), 30.0)}};
        }},
   };
   return all;
@@ -476,7 +478,7 @@ std::vector<std::string> hard_contact_case_names() {
   return names;
 }
 
-HardCase run_hard_contact_case(const std::string& name) {
+HardContactCase run_hard_contact_case(const std::string& name) {
   for (const auto& [known, make] : makers()) {
     if (known == name) return make();
   }

@@ -11,17 +11,17 @@
 namespace tumble::bench {
 
 // One measured figure of a case against its bound.
-struct HardFigure {
+struct HardContactFigure {
   std::string measure;  // what was measured, with its unit: "top drift (m)"
   double value = 0.0;
   double bound = 0.0;  // the bound: the case holds when value <= bound
   bool holds() const { return value <= bound; }
 };
 
-struct HardCase {
+struct HardContactCase {
   std::string name;     // short, for the command line: "ratio_100"
   std::string summary;  // one line for people
-  std::vector<HardFigure> figures;
+  std::vector<HardContactFigure> figures;
 };
 
 // The names of every case, in a fixed order.
@@ -29,6 +29,6 @@ std::vector<std::string> hard_contact_case_names();
 
 // Runs the case named `name` (one of hard_contact_case_names()); an unknown name gives a case
 // with no figures.
-HardCase run_hard_contact_case(const std::string& name);
+HardContactCase run_hard_contact_case(const std::string& name);
 
 }  // namespace tumble::bench

@@ -11,16 +11,18 @@ namespace tumble::bench {
 namespace {
 
 void expect_holds(const std::string& name) {
-  const HardCase result = run_hard_contact_case(name);
+  const HardContactCase result = run_hard_contact_case(name);
   ASSERT_FALSE(result.figures.empty()) << name;
-  for (const HardFigure& figure : result.figures) {
+  for (const HardContactFigure& figure : result.figures) {
     EXPECT_LE(figure.value, figure.bound) << name << ": " << figure.measure;
   }
 }
 
 // Uniform pressure over the face: a cube at 50 rad/s, μ = 0.5, stops at 4.44 s ± 2 %
 // (t = I ω / (μ m g r̄), r̄ = 0.3826 × side), and its centre moves less than 1 mm.
-TEST(HardContact, ASpinningCubeStopsWhenUniformPressureOverItsFaceSays) { expect_holds("twist"); }
+TEST(HardContact, ASpinningCubeStopsWhenUniformPressureOverItsFaceSays) {
+  expect_holds("twist");
+}
 
 TEST(HardContact, EveryCaseHasAFigure) {
   for (const std::string& name : hard_contact_case_names()) {
