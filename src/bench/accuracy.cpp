@@ -95,30 +95,28 @@ AccuracySettings quick_accuracy_settings() {
           .timing = {.samples = 1, .min_sample_seconds = 0.0}};
 }
 
-std::vector<const HardCase*> selected_hard_cases(const AccuracySettings& settings) {
-  std::vector<const HardCase*> out;
-  if (settings.cases.empty()) {
-    for (const HardCase& c : hard_cases()) out.push_back(&c);
+// The cases named in `names`, in that order, or all of `all` when none are named.
+template <typename Case, typename Find>
+std::vector<const Case*> select_cases(const std::vector<std::string>& names,
+                                      const std::vector<Case>& all, Find find, const char* kind) {
+  std::vector<const Case*> out;
+  if (names.empty()) {
+    for (const Case& c : all) out.push_back(&c);
   }
-  for (const std::string& name : settings.cases) {
-    const HardCase* c = find_hard_case(name);
-    if (!c) throw std::invalid_argument("no hard case named " + name);
+  for (const std::string& name : names) {
+    const Case* c = find(name);
+    if (!c) throw std::invalid_argument(std::string("no ") + kind + " named " + name);
     out.push_back(c);
   }
   return out;
 }
 
+std::vector<const HardCase*> selected_hard_cases(const AccuracySettings& settings) {
+  return select_cases(settings.cases, hard_cases(), find_hard_case, "hard case");
+}
+
 std::vector<const ContactCase*> selected_contact_cases(const AccuracySettings& settings) {
-  std::vector<const ContactCase*> out;
-  if (settings.contact_cases.empty()) {
-    for (const ContactCase& c : contact_cases()) out.push_back(&c);
-  }
-  for (const std::string& name : settings.contact_cases) {
-    const ContactCase* c = find_contact_case(name);
-    if (!c) throw std::invalid_argument("no contact case named " + name);
-    out.push_back(c);
-  }
-  return out;
+  return select_cases(settings.contact_cases, contact_cases(), find_contact_case, "contact case");
 }
 
 AccuracyRow measure_accuracy(const HardCase& c, physics::Integrator integrator, double dt,
