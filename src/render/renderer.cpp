@@ -91,6 +91,20 @@ std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
   return std::array<int, 4>{x0, y0, x1 - x0, y1 - y0};
 }
 
+// A vertex array of one attribute (location 0) of `components` floats a vertex, from `bytes`
+// bytes of `vertices`, left bound; its names go to `vao` and `vbo`.
+void vertex_array(const float* vertices, std::size_t bytes, int components, GLuint& vao,
+                  GLuint& vbo) {
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), vertices, GL_STATIC_DRAW);
+  glVertexAttribPointer(0, components, GL_FLOAT, GL_FALSE,
+                        static_cast<GLsizei>(components * sizeof(float)), nullptr);
+  glEnableVertexAttribArray(0);
+}
+
 }  // namespace
 
 // What the passes of one frame share.
@@ -181,21 +195,9 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
 
   // Ground: one square as a triangle strip.
   const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
-  glGenVertexArrays(1, &ground_vao);
-  glBindVertexArray(ground_vao);
-  glGenBuffers(1, &ground_vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, ground_vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
-  glEnableVertexAttribArray(0);
+  vertex_array(corners, sizeof(corners), 2, ground_vao, ground_vbo);
   // Quads: the same square in the x-z plane, in three dimensions for the shadow shader.
-  glGenVertexArrays(1, &quad_vao);
-  glBindVertexArray(quad_vao);
-  glGenBuffers(1, &quad_vbo);
-  glBindBuffer(GL_ARRAY_BUFFER, quad_vbo);
-  glBufferData(GL_ARRAY_BUFFER, sizeof(kUnitSquare), kUnitSquare, GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-  glEnableVertexAttribArray(0);
+  vertex_array(kUnitSquare[0], sizeof(kUnitSquare), 3, quad_vao, quad_vbo);
   glBindVertexArray(0);
 
   if (settings.shadows) {
