@@ -220,18 +220,9 @@ void read_overlays(TableReader& root, Scene& scene) {
   if (!root.has("overlays")) return;
   const toml::array* overlays = root.table().get("overlays")->as_array();
   if (!overlays) root.fail("overlays", "expected [[overlays]] tables");
-  if (overlays->size() > kMaxOverlays) {
-    root.fail_at((*overlays)[kMaxOverlays].source(), "overlays",
-                 std::to_string(overlays->size()) + " overlays, more than the limit of " +
-                     std::to_string(kMaxOverlays));
-  }
-  for (std::size_t i = 0; i < overlays->size(); ++i) {
-    const std::string path = "overlays[" + std::to_string(i) + "]";
-    const toml::table* table = (*overlays)[i].as_table();
-    if (!table) root.fail_at((*overlays)[i].source(), path, "expected an [[overlays]] table");
-    TableReader in(*table, path, root.file());
-    scene.overlays.push_back(read_overlay(in, scene));
-  }
+  root.each_table(
+      *overlays, "overlays", kMaxOverlays, "an [[overlays]] table",
+      [&](TableReader& in, std::size_t) { scene.overlays.push_back(read_overlay(in, scene)); });
 }
 
 }  // namespace tumble::scene::detail

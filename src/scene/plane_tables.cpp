@@ -179,22 +179,15 @@ void read_planes(TableReader& root, Scene& scene) {
   if (!root.has("planes")) return;
   const toml::array* planes = root.table().get("planes")->as_array();
   if (!planes) root.fail("planes", "expected [[planes]] tables");
-  if (planes->size() > static_cast<std::size_t>(kMaxPlanes)) {
-    root.fail_at((*planes)[static_cast<std::size_t>(kMaxPlanes)].source(), "planes",
-                 std::to_string(planes->size()) + " planes, more than the limit of " +
-                     std::to_string(kMaxPlanes));
-  }
   std::set<std::string> names;
-  for (std::size_t i = 0; i < planes->size(); ++i) {
-    const std::string path = "planes[" + std::to_string(i) + "]";
-    const toml::table* table = (*planes)[i].as_table();
-    if (!table) root.fail_at((*planes)[i].source(), path, "expected a [[planes]] table");
-    TableReader in(*table, path, root.file());
-    scene.planes.push_back(read_plane(in, i));
-    if (!names.insert(scene.planes.back().name).second) {
-      in.fail("name", "duplicate plane name " + in_quotes(scene.planes.back().name));
-    }
-  }
+  root.each_table(*planes, "planes", static_cast<std::size_t>(kMaxPlanes), "a [[planes]] table",
+                  [&](TableReader& in, std::size_t i) {
+                    scene.planes.push_back(read_plane(in, i));
+                    if (!names.insert(scene.planes.back().name).second) {
+                      in.fail("name",
+                              "duplicate plane name " + in_quotes(scene.planes.back().name));
+                    }
+                  });
   refuse_bodies_inside(root, scene);
 }
 

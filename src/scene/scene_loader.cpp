@@ -272,22 +272,14 @@ Scene read_scene(const toml::table& root, const std::string& file) {
 
   const toml::array* bodies = in.required("bodies").as_array();
   if (!bodies || bodies->empty()) in.fail("bodies", "expected at least one [[bodies]] table");
-  if (bodies->size() > static_cast<std::size_t>(kMaxBodies)) {
-    in.fail_at((*bodies)[static_cast<std::size_t>(kMaxBodies)].source(), "bodies",
-               std::to_string(bodies->size()) + " bodies, more than the limit of " +
-                   std::to_string(kMaxBodies));
-  }
   std::set<std::string> names;
-  for (std::size_t i = 0; i < bodies->size(); ++i) {
-    const std::string path = "bodies[" + std::to_string(i) + "]";
-    const toml::table* table = (*bodies)[i].as_table();
-    if (!table) in.fail_at((*bodies)[i].source(), path, "expected a [[bodies]] table");
-    TableReader body(*table, path, file);
-    scene.bodies.push_back(read_body(body, i, file));
-    if (!names.insert(scene.bodies.back().name).second) {
-      body.fail("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
-    }
-  }
+  in.each_table(*bodies, "bodies", static_cast<std::size_t>(kMaxBodies), "a [[bodies]] table",
+                [&](TableReader& body, std::size_t i) {
+                  scene.bodies.push_back(read_body(body, i, file));
+                  if (!names.insert(scene.bodies.back().name).second) {
+                    body.fail("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
+                  }
+                });
   const double body_steps =
       static_cast<double>(scene.bodies.size()) * (scene.duration / scene.physics.dt);
   if (body_steps > static_cast<double>(kMaxBodySteps)) {

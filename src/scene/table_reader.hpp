@@ -178,6 +178,25 @@ class TableReader {
     return table;
   }
 
+  // Reads each table of the array `tables` written at `key` with `read(reader, index)`: at most
+  // `limit` of them, each a table (`what` names one for the message: "a [[planes]] table").
+  template <typename Read>
+  void each_table(const toml::array& tables, std::string_view key, std::size_t limit,
+                  std::string_view what, Read read) const {
+    if (tables.size() > limit) {
+      fail_at(tables[limit].source(), key,
+              std::to_string(tables.size()) + " " + std::string(key) + ", more than the limit of " +
+                  std::to_string(limit));
+    }
+    for (std::size_t i = 0; i < tables.size(); ++i) {
+      const std::string path = std::string(key) + "[" + std::to_string(i) + "]";
+      const toml::table* table = tables[i].as_table();
+      if (!table) fail_at(tables[i].source(), path, "expected " + std::string(what));
+      TableReader in(*table, path, file_);
+      read(in, i);
+    }
+  }
+
   const toml::table& table() const { return table_; }
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
