@@ -13,6 +13,18 @@ std::vector<sim::StepWarning> body_warnings(const scene::Scene& scene,
                          scene.physics.integrator, scene.physics.dt, scene.duration);
 }
 
+// `body "a"`, `bodies "a" and "b"`, or `bodies "a", "b", "c" and 4 more`.
+std::string names_of(const scene::Scene& scene, const std::vector<std::size_t>& bodies) {
+  constexpr std::size_t kNamed = 3;
+  std::string out = bodies.size() == 1 ? "body " : "bodies ";
+  for (std::size_t k = 0; k < bodies.size() && k < kNamed; ++k) {
+    if (k > 0) out += k + 1 == bodies.size() ? " and " : ", ";
+    out += "\"" + scene.bodies[bodies[k]].name + "\"";
+  }
+  if (bodies.size() > kNamed) out += " and " + std::to_string(bodies.size() - kNamed) + " more";
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> stability_warnings(const scene::Scene& scene) {
@@ -27,6 +39,16 @@ std::vector<std::string> stability_warnings(const scene::Scene& scene) {
                                                          scene.physics.contact, scene.physics.dt)) {
       lines.push_back("body \"" + body.name + "\": " + problem);
     }
+  }
+  std::vector<physics::BodyModel> models;
+  std::vector<physics::BodyState> initial;
+  for (const scene::BodySpec& body : scene.bodies) {
+    models.push_back(scene::body_model(scene, body));
+    initial.push_back(scene::initial_state(body));
+  }
+  for (const sim::BodiesAdvice& advice :
+       sim::check_contact_world(models, initial, planes, scene.physics.contact, scene.physics.dt)) {
+    lines.push_back(names_of(scene, advice.bodies) + ": " + advice.message);
   }
   return lines;
 }

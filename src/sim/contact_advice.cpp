@@ -1,7 +1,11 @@
 #include "sim/contact_advice.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <variant>
+
+#include "physics/box_box.hpp"
 
 namespace tumble::sim {
 
@@ -28,6 +32,120 @@ std::vector<std::string> check_contact(const physics::BodyModel& model,
                   settings.restitution_threshold, kThresholdOverStepSpeed, step_speed, wanted);
     out.push_back(text);
     break;
+  }
+  return out;
+}
+
+namespace {
+
+// Closer than this at the start counts as touching (m).
+constexpr double kTouching = 1e-3;
+
+physics::Vec3 constant_acceleration(const physics::BodyModel& model) {
+  physics::Vec3 total = physics::Vec3::Zero();  // m/s²
+  for (const physics::ForceLaw& law : model.forces) {
+    if (const auto* g = std::get_if<physics::Gravity>(&law)) total += g->acceleration;
+    if (const auto* f = std::get_if<physics::ConstantForce>(&law)) {
+      total += f->force * model.constants.inverse_mass;
+    }
+  }
+  return total;
+}
+
+double gravity_of(const physics::BodyModel& model) {
+  physics::Vec3 total = physics::Vec3::Zero();
+  for (const physics::ForceLaw& law : model.forces) {
+    if (const auto* g = std::get_if<physics::Gravity>(&law)) total += g->acceleration;
+  }
+  return total.norm();
+}
+
+// The root of `i` in a union-find forest, with path halving.
+std::size_t root_of(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+std::string formatted(const char* format, auto... values) {
+  char text[400];
+  std::snprintf(text, sizeof text, format, values...);
+  return text;
+}
+
+}  // namespace
+
+std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyModel>& models,
+                                              const std::vector<physics::BodyState>& initial,
+                                              const std::vector<physics::Plane>& planes,
+                                              const physics::ContactSettings& settings, double dt) {
+  std::vector<BodiesAdvice> out;
+  if (settings.method != physics::ContactMethod::impulse) return out;
+  const std::size_t count = models.size();
+  std::vector<bool> on_plane(count, false), touches(count, false);
+  std::vector<std::size_t> parent(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    parent[i] = i;
+    for (const physics::Plane& plane : planes) {
+      if (physics::closest_corner_separation(initial[i], models[i].half_size, plane) < kTouching) {
+        on_plane[i] = touches[i] = true;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t j = i + 1; j < count && settings.collide_bodies; ++j) {
+      if (!models[i].collides || !models[j].collides) continue;
+      const physics::BoxPose a{initial[i].position(), initial[i].rotation(), models[i].half_size};
+      const physics::BoxPose b{initial[j].position(), initial[j].rotation(), models[j].half_size};
+      if (physics::box_box_axis(a, b).separation >= kTouching) continue;
+      touches[i] = touches[j] = true;
+      parent[root_of(parent, i)] = root_of(parent, j);
+      const double heavy = std::max(models[i].constants.mass, models[j].constants.mass);
+      const double light = std::min(models[i].constants.mass, models[j].constants.mass);
+      if (heavy > kMostMassRatio * light) {
+        out.push_back({{i, j},
+                       formatted("touch with a mass ratio of %.3g (%.3g kg on %.3g kg), beyond "
+                                 "the %.0f the contact solver holds: the lighter body is pressed "
+                                 "into what holds it or squeezed out (100:1 sank 8.8 cm in 5 s); "
+                                 "bring the masses within %.0fx of each other",
+                                 heavy / light, heavy, light, kMostMassRatio, kMostMassRatio)});
+      }
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    if (!touches[i]) continue;
+    const double acceleration = constant_acceleration(models[i]).norm();  // m/s²
+    const double edge = 2.0 * models[i].half_size.minCoeff();             // m
+    const double per_step = 0.5 * acceleration * dt * dt;                 // m
+    if (per_step > edge) {
+      out.push_back(
+          {{i},
+           formatted("its constant load (%.3g m/s²) moves it %.3g m in one step of "
+                     "%.3g s, more than its smallest edge (%.3g m): one step's "
+                     "contact cannot carry it and it ends its steps inside what holds "
+                     "it; use dt <= %.3g s",
+                     acceleration, per_step, dt, edge, std::sqrt(2.0 * edge / acceleration))});
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    if (root_of(parent, i) != i) continue;
+    std::vector<std::size_t> stack;
+    bool grounded = false;
+    double gravity = 0.0;  // m/s²
+    for (std::size_t j = 0; j < count; ++j) {
+      if (root_of(parent, j) != i) continue;
+      stack.push_back(j);
+      grounded = grounded || on_plane[j];
+      gravity = std::max(gravity, gravity_of(models[j]));
+    }
+    const double sink = gravity * dt * dt;  // m
+    if (stack.size() < 3 || !grounded || sink <= kMostStackSink) continue;
+    out.push_back(
+        {stack, formatted("a stack of %zu bodies stepped at dt = %.3g s sinks |g| dt² = %.3g "
+                          "m a step under gravity, beyond the %.0f mm at which the contact "
+                          "solver settles a stack (a 3-cube stack at dt = 1/30 s jitters at "
+                          "0.14 m/s for ever); use dt <= %.3g s",
+                          stack.size(), dt, sink, kMostStackSink * 1e3,
+                          std::sqrt(kMostStackSink / gravity))});
   }
   return out;
 }

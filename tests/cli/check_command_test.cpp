@@ -55,6 +55,39 @@ TEST_F(CheckCommand, PrintsTheWarningsOfAValidSceneAndExitsZero) {
   EXPECT_EQ(run.err, "");
 }
 
+// A 100 kg cube resting on a 1 kg cube on the floor: beyond the mass ratio the contact solver
+// holds (bench/contact_hard's ratio_100 sinks the light cube 8.8 cm).
+TEST_F(CheckCommand, NamesTheBodiesOfAMassRatioTheContactCannotHold) {
+  const fs::path scene = write("ratio.toml", R"(duration = 1.0
+[[planes]]
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+[[bodies]]
+name = "light"
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.0, 0.5, 0.0]
+[[bodies.forces]]
+kind = "gravity"
+[[bodies]]
+name = "heavy"
+shape = "cube"
+size = 1.0
+mass = 100.0
+position = [0.0, 1.5, 0.0]
+[[bodies.forces]]
+kind = "gravity"
+)");
+  const Outcome run = tumble("check " + scene.string());
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("tumble: warning: bodies \"light\" and \"heavy\": touch with a mass "
+                         "ratio of 100 (100 kg on 1 kg), beyond the 50 the contact solver holds"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("; 1 warning\n"), std::string::npos) << run.out;
+}
+
 TEST_F(CheckCommand, AnInvalidSceneExitsTwoWithItsLocation) {
   const fs::path scene =
       write("bad.toml", "duration = 1.0\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = -1.0\n");
