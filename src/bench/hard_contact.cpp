@@ -156,7 +156,7 @@ HardContactCase load(double force /* N */) {
   std::snprintf(name, sizeof name, "load_%.0e", force);
   return {name,
           "a 1 kg cube on the floor pushed down by a constant force, 10 s",
-          {{"largest |y - 0.5| at a step (m)", off, 1e-3}}};
+          {{"largest offset of y from 0.5 m at a step (m)", off, 1e-3}}};
 }
 
 // Kinetic energy after one elastic impact of two spinning boxes against before (relative), with
