@@ -6,7 +6,6 @@
 
 #include "physics/contact_island.hpp"
 #include "physics/contact_solver.hpp"
-#include "physics/plane_rest.hpp"
 
 namespace tumble::physics {
 namespace {
@@ -292,18 +291,6 @@ void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
 BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
                          const std::vector<Plane>& planes, const ContactSettings& settings,
                          PlaneContacts& contacts) {
-  const double weight = impulse_position_weight(integrator, advance.remaining);
-  BodyState out;
-  if (rest_alone_on_planes(model, advance.end, advance.rotation, weight, planes, settings, contacts,
-                           out)) {
-    return out;
-  }
-  return rest_on_planes_as_island(integrator, model, advance, planes, settings, contacts);
-}
-
-BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model,
-                                   const PlaneAdvance& advance, const std::vector<Plane>& planes,
-                                   const ContactSettings& settings, PlaneContacts& contacts) {
   const IslandBody body{.model = &model,
                         .end = advance.end,
                         .rotation = advance.rotation,

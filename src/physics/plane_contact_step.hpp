@@ -77,17 +77,11 @@ void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
                                   std::vector<FrictionPatch>& patches,
                                   std::vector<PositionPoint>& positions);
 
-// Step 3 of step_with_planes for a body that touches planes at the end of `advance`:
-// physics/plane_rest.hpp's solve of one body, or the island solve (contact_island.hpp) for the
-// steps that one does not take (a bounce).
+// Step 3 of step_with_planes for a body that touches planes at the end of `advance`: the island
+// solve (contact_island.hpp) of that one body, as an island of one in the world step has it.
 BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
                          const std::vector<Plane>& planes, const ContactSettings& settings,
                          PlaneContacts& contacts);
-// The same step through the island solve always: what rest_on_planes gives, to the bit, and what
-// plane_rest_test compares it with.
-BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model,
-                                   const PlaneAdvance& advance, const std::vector<Plane>& planes,
-                                   const ContactSettings& settings, PlaneContacts& contacts);
 
 // Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
 // 1. the free step; if no corner ends inside a plane, that is the step (a body that touches
