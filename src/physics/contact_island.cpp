@@ -90,12 +90,12 @@ PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
   return out;
 }
 
-void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
-                    std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
-                    std::span<const PositionPoint> positions, const ContactSettings& settings,
-                    std::vector<ProjectedPose>& poses, std::span<BodyState> out) {
-  solve_contacts(solver, points, patches,
-                 {.iterations = solver_passes(points.size()),
+void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
+                    const ContactSettings& settings, std::span<BodyState> out) {
+  const std::span<const SolverBody> solver = rows.bodies;
+  std::vector<ProjectedPose>& poses = rows.poses;
+  solve_contacts(rows.bodies, rows.points, rows.patches,
+                 {.iterations = solver_passes(rows.points.size()),
                   .tolerance = kRestingTolerance,
                   .restitution_threshold = settings.restitution_threshold,
                   .warm_start = true});
@@ -116,7 +116,7 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
                 .inverse_inertia = &solved.inverse_inertia};
   }
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
-    if (project_pass(poses, positions) == 0.0) break;
+    if (project_pass(poses, rows.positions) == 0.0) break;
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out[i] = BodyState(poses[i].primary, bodies[i].model->constants);

@@ -95,26 +95,28 @@ TEST_P(RestingRun, TouchesEveryPlaneNeverSinksGainsNoEnergyAndEndsAtRest) {
   BodyState state =
       make_state(model.constants, c.position, c.velocity, c.orientation, c.angular_velocity);
   const ContactSettings settings{};
-  PlaneContacts memory;
+  WorldContacts contacts;
   const double start_energy = energy(state, c.gravity);
   int touching = 0, patches = 0;
   double deepest = 0.0, most_gained = -1.0;  // m, J
   for (int n = 0; n < 600; ++n) {
     state = step_with_planes(Integrator::rk4, model, state, n * kStep, kStep, c.planes, settings,
-                             memory);
-    const bool touches = std::any_of(memory.manifolds.begin(), memory.manifolds.end(),
+                             contacts);
+    const std::vector<Manifold>& manifolds = contacts.memory.planes[0];
+    const bool touches = std::any_of(manifolds.begin(), manifolds.end(),
                                      [](const Manifold& m) { return m.count > 0; });
     touching += touches;
-    for (const Manifold& m : memory.manifolds) patches += m.count > 0;
+    for (const Manifold& m : manifolds) patches += m.count > 0;
     for (const Plane& plane : c.planes) {
       deepest = std::max(deepest, -closest_corner_separation(state, model.half_size, plane));
     }
     most_gained = std::max(most_gained, energy(state, c.gravity) - start_energy);
   }
   const double speed = state.velocity().norm() + state.angular_velocity().norm();
-  std::printf("[ measured ] %s: %d touching steps (%d patches), deepest %.1e m, energy gained "
-              "at most %.1e J, final speed %.1e\n",
-              c.name, touching, patches, deepest, most_gained, speed);
+  std::printf(
+      "[ measured ] %s: %d touching steps (%d patches), deepest %.1e m, energy gained "
+      "at most %.1e J, final speed %.1e\n",
+      c.name, touching, patches, deepest, most_gained, speed);
   EXPECT_GE(touching, 300);  // most of the run: the body touches from its first second on
   EXPECT_GE(patches, touching * static_cast<int>(c.planes.size()) / 2);  // each plane, mostly
   EXPECT_LT(deepest, 1e-9);  // the projection leaves no corner inside
@@ -135,15 +137,11 @@ TEST(RestingBounce, LeavesAtRestitutionTimesTheApproach) {
   const std::vector<Plane> planes = {Plane{.material = model.material}};
   // Resting on the floor, then struck downwards at 2 m/s: its corners touched at the start, so the
   // approach is a resting contact's, faster than the restitution threshold.
-  const BodyState end = make_state(model.constants, Vec3(0.0, 0.5 - 1e-9, 0.0),
-                                   Vec3(0.0, -2.0, 0.0), Quat::Identity(), Vec3::Zero());
-  PlaneContacts memory;
-  memory.manifolds.resize(1);
-  memory.separations = {
-      corner_separations(end.rotation(), end.position(), model.half_size, planes[0])};
-  PlaneAdvance advance{
-      .end = end, .rotation = end.rotation(), .remaining = kStep, .touching = true};
-  const BodyState bounced = rest_on_planes(Integrator::rk4, model, advance, planes, {}, memory);
+  const BodyState start = make_state(model.constants, Vec3(0.0, 0.5 - 1e-9, 0.0),
+                                     Vec3(0.0, -2.0, 0.0), Quat::Identity(), Vec3::Zero());
+  WorldContacts contacts;
+  const BodyState bounced =
+      step_with_planes(Integrator::rk4, model, start, 0.0, kStep, planes, {}, contacts);
   EXPECT_NEAR(bounced.velocity().y(), 1.0, 1e-9);
 }
 
