@@ -23,11 +23,11 @@ double project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
   }
   if (separation >= 0.0) return 0.0;
   const Vec3& n = point.normal;
-  const Vec3 turn_a = *a.inverse_inertia * arm_a.cross(n);
+  const Vec3 turn_a = a.solved->turn(arm_a.cross(n));
   double inverse_mass = a.inverse_mass + arm_a.cross(n).dot(turn_a);
   Vec3 turn_b = Vec3::Zero();
   if (b) {
-    turn_b = *b->inverse_inertia * arm_b.cross(n);
+    turn_b = b->solved->turn(arm_b.cross(n));
     inverse_mass += b->inverse_mass + arm_b.cross(n).dot(turn_b);
   }
   const double push = -separation / inverse_mass;  // position-level impulse (kg m)
@@ -111,9 +111,8 @@ void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
     primary.position += body.weight * (solved.velocity - body.end.velocity());
     primary.orientation = rotated(
         primary.orientation, body.weight * (solved.angular_velocity - body.end.angular_velocity()));
-    poses[i] = {.primary = primary,
-                .inverse_mass = body.model->constants.inverse_mass,
-                .inverse_inertia = &solved.inverse_inertia};
+    poses[i] = {
+        .primary = primary, .inverse_mass = body.model->constants.inverse_mass, .solved = &solved};
   }
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
     if (project_pass(poses, rows.positions) == 0.0) break;

@@ -68,8 +68,8 @@ struct PositionPoint {
 // A pose being projected, and what the projection needs of its mass.
 struct ProjectedPose {
   PrimaryState primary;
-  double inverse_mass = 0.0;              // 1/kg
-  const Mat3* inverse_inertia = nullptr;  // world (1/(kg m²))
+  double inverse_mass = 0.0;           // 1/kg
+  const SolverBody* solved = nullptr;  // its inverse inertia, world frame (SolverBody::turn)
 };
 
 // One pass of the projection: pushes the poses apart along each point still inside until its

@@ -10,13 +10,6 @@ namespace {
 constexpr int kBounceIterations = 100;
 constexpr double kBounceTolerance = 1e-13;
 
-[[gnu::always_inline]] inline double speed(const ImpulseDirection& d, const SolverBody& a,
-                                           const SolverBody* b) {
-  double out = a.velocity.dot(d.linear) + a.angular_velocity.dot(d.moment_a);
-  if (b) out -= b->velocity.dot(d.linear) + b->angular_velocity.dot(d.moment_b);
-  return out;
-}
-
 // An impulse (N s) along the direction on a, and its opposite on b.
 [[gnu::always_inline]] inline void push(const ImpulseDirection& d, SolverBody& a, SolverBody* b,
                                         double impulse) {
@@ -36,8 +29,9 @@ SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
 double solve_normal(std::span<SolverBody> bodies, ContactConstraint& c) {
   SolverBody& a = bodies[c.a];
   SolverBody* b = second(bodies, c);
-  const double accumulated = std::max(
-      0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + c.speculative_speed));
+  const double accumulated =
+      std::max(0.0, c.normal_impulse -
+                        c.normal.mass * (relative_speed(c.normal, a, b) + c.speculative_speed));
   const double change = accumulated - c.normal_impulse;
   c.normal_impulse = accumulated;
   push(c.normal, a, b, change);
@@ -55,7 +49,7 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
   // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
   double wanted[2];
   for (int k = 0; k < 2; ++k) {
-    wanted[k] = f.tangent_impulse[k] - f.tangent[k].mass * speed(f.tangent[k], a, b);
+    wanted[k] = f.tangent_impulse[k] - f.tangent[k].mass * relative_speed(f.tangent[k], a, b);
   }
   const double limit = f.friction * normal;
   const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
@@ -68,8 +62,8 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
     largest = std::max(largest, std::abs(change));
   }
   const double twist_limit = limit * f.twist_arm;
-  const double twist =
-      std::clamp(f.twist_impulse - f.twist.mass * speed(f.twist, a, b), -twist_limit, twist_limit);
+  const double twist = std::clamp(f.twist_impulse - f.twist.mass * relative_speed(f.twist, a, b),
+                                  -twist_limit, twist_limit);
   const double change = twist - f.twist_impulse;
   push(f.twist, a, b, change);
   f.twist_impulse = twist;
@@ -102,7 +96,7 @@ double bounce_pass(std::span<SolverBody> bodies, std::span<const ContactConstrai
     SolverBody* b = second(bodies, c);
     const double target = -c.restitution * c.approach_speed;
     const double total =
-        std::max(0.0, accumulated[i] - c.normal.mass * (speed(c.normal, a, b) - target));
+        std::max(0.0, accumulated[i] - c.normal.mass * (relative_speed(c.normal, a, b) - target));
     const double change = total - accumulated[i];
     accumulated[i] = total;
     push(c.normal, a, b, change);
@@ -183,7 +177,7 @@ void solve_substep_normal(std::span<SolverBody> bodies, ContactConstraint& c, do
   SolverBody* b = second(bodies, c);
   const double allowed = separation > 0.0 ? separation / h : 0.0;  // approach speed (m/s)
   const double accumulated =
-      std::max(0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + allowed));
+      std::max(0.0, c.normal_impulse - c.normal.mass * (relative_speed(c.normal, a, b) + allowed));
   const double change = accumulated - c.normal_impulse;
   c.normal_impulse = accumulated;
   c.largest_impulse = std::max(c.largest_impulse, accumulated);
@@ -235,51 +229,13 @@ void bounce(std::span<SolverBody> bodies, std::span<const ContactConstraint> poi
   if (any) bounce_points(bodies, points, bouncing, kBounceIterations, energy_bound);
 }
 
-namespace {
-
-// The direction along `linear` (null for a twist: no linear part, no share of the masses) whose
-// moments are moment_a on a and moment_b on b (when there is a b).
-// (Computed in locals and stored once: reading back a half-written member stalls on the store.)
-ImpulseDirection direction_with(const Vec3* linear, const Vec3& moment_a, const SolverBody& a,
-                                const SolverBody* b, const Vec3& moment_b) {
-  const Vec3 turn_a = a.inverse_inertia * moment_a;
-  double inverse = (linear ? a.inverse_mass : 0.0) + moment_a.dot(turn_a);
-  Vec3 moment_b_out = Vec3::Zero(), turn_b = Vec3::Zero();
-  if (b) {
-    moment_b_out = moment_b;
-    turn_b = b->inverse_inertia * moment_b;
-    inverse += (linear ? b->inverse_mass : 0.0) + moment_b.dot(turn_b);
-  }
-  return {.linear = linear ? *linear : Vec3::Zero(),
-          .moment_a = moment_a,
-          .turn_a = turn_a,
-          .moment_b = moment_b_out,
-          .turn_b = turn_b,
-          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
-}
-
-}  // namespace
-
-ImpulseDirection impulse_direction(const Vec3& along, const SolverBody& a, const Vec3& arm_a,
-                                   const SolverBody* b, const Vec3& arm_b) {
-  return direction_with(&along, arm_a.cross(along), a, b,
-                        b ? Vec3(arm_b.cross(along)) : Vec3::Zero());
-}
-
-ImpulseDirection twist_direction(const Vec3& axis, const SolverBody& a, const SolverBody* b) {
-  return direction_with(nullptr, axis, a, b, axis);
-}
-
-double relative_speed(const ImpulseDirection& d, const SolverBody& a, const SolverBody* b) {
-  return speed(d, a, b);
-}
-
 SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constants,
                             const Mat3& rotation) {
   SolverBody out{.velocity = state.velocity(),
                  .angular_velocity = state.angular_velocity(),
                  .inverse_mass = constants.inverse_mass};
   if (constants.isotropic) {  // a scalar tensor in every frame
+    out.isotropic = true;
     out.inverse_inertia = Mat3::Identity() * constants.inverse_inertia.x();
     out.inertia = Mat3::Identity() * constants.inertia.x();
   } else {

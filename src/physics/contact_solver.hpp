@@ -35,6 +35,15 @@ struct SolverBody {
   // the kinetic energy.
   Mat3 inverse_inertia = Mat3::Zero();
   Mat3 inertia = Mat3::Zero();
+  // A cube's (BodyConstants::isotropic): I⁻¹ is the scalar inverse_inertia(0, 0) in every frame,
+  // and a turn costs three products, not a 3 × 3 one (the rows of a resting cube and its
+  // projection build about a dozen turns a step).
+  bool isotropic = false;
+
+  // I⁻¹ moment (1/(kg m) for a moment arm in m): the turn an impulse along a row gives.
+  Vec3 turn(const Vec3& moment) const {
+    return isotropic ? Vec3(inverse_inertia(0, 0) * moment) : Vec3(inverse_inertia * moment);
+  }
 
   // The body as the state has it: velocities and mass at that pose, whose body-to-world
   // rotation is `rotation` (passed in: the caller has it already).
@@ -55,7 +64,7 @@ inline constexpr std::uint32_t kStatic = UINT32_MAX;
 // reads and writes precomputed (the Jacobian row and its image through the inverse masses): the
 // relative speed along d is v_a·d + ω_a·(r_a × d) - v_b·d - ω_b·(r_b × d), and an impulse λ along
 // d changes v_a by λ d/m_a and ω_a by λ I_a⁻¹(r_a × d), and b by the opposite.
-// Its fields have no default values on purpose: make_constraint sets every one, and zeroing them
+// Its fields have no default values on purpose: impulse_direction sets every one, and zeroing them
 // first cost a third of building a constraint (a `rep stos` per direction).
 struct ImpulseDirection {
   Vec3 linear;    // d: unit, world frame
@@ -115,14 +124,13 @@ struct FrictionPatch {
 // along it (so the same normal always gives the same basis).
 void tangent_basis(const Vec3& normal, Vec3 (&out)[2]);
 
-// The direction `along` (unit, world) at a point `arm_a` (m, world) from a's centre, and at
-// `arm_b` from b's when there is a b (null against a static shape).
-ImpulseDirection impulse_direction(const Vec3& along, const SolverBody& a, const Vec3& arm_a,
-                                   const SolverBody* b, const Vec3& arm_b);
-// The turning direction about the unit `axis` (world): no linear part, the same moment on both.
-ImpulseDirection twist_direction(const Vec3& axis, const SolverBody& a, const SolverBody* b);
 // Relative speed along a direction: of a's point minus b's (m/s).
-double relative_speed(const ImpulseDirection& d, const SolverBody& a, const SolverBody* b);
+[[gnu::always_inline]] inline double relative_speed(const ImpulseDirection& d, const SolverBody& a,
+                                                    const SolverBody* b) {
+  double out = a.velocity.dot(d.linear) + a.angular_velocity.dot(d.moment_a);
+  if (b) out -= b->velocity.dot(d.linear) + b->angular_velocity.dot(d.moment_b);
+  return out;
+}
 
 // What a solve is asked for.
 struct SolveSettings {

@@ -175,19 +175,20 @@ double impulse_position_weight(Integrator integrator, double h) {
   return 0.5 * h;
 }
 
-PlaneAdvance advance_among_planes(const StepContext& context, std::uint32_t body) {
+void advance_among_planes(const StepContext& context, std::uint32_t body) {
   const Integrator integrator = context.integrator;
   const BodyModel& model = context.models[body];
   const std::span<const Plane> planes = context.planes;
   std::vector<Manifold>& manifolds = context.memory.planes[body];
   std::vector<CornerSeparations>& separations = context.scratch.separations[body];
   manifolds.resize(planes.size());
-  PlaneAdvance out{.end = step(integrator, model, context.in[body], context.t, context.dt),
-                   .remaining = context.dt};
+  PlaneAdvance& out = context.scratch.advances[body];
+  out.end = step(integrator, model, context.in[body], context.t, context.dt);
+  out.remaining = context.dt;
   out.touching = touching(out.end, model.half_size, planes, separations, out.rotation);
   if (!out.touching) {
     for (Manifold& m : manifolds) m.count = 0;  // nothing to warm start from
-    return out;
+    return;
   }
   BodyState state = context.in[body];
   double time = context.t;
@@ -204,10 +205,9 @@ PlaneAdvance advance_among_planes(const StepContext& context, std::uint32_t body
     out.touching = touching(out.end, model.half_size, planes, separations, out.rotation);
     if (!out.touching) {
       for (Manifold& m : manifolds) m.count = 0;
-      return out;
+      return;
     }
   }
-  return out;
 }
 
 void append_plane_rows(const StepContext& context, const BodyInRows& body, double margin) {
@@ -269,8 +269,8 @@ BodyState rest_on_planes(const StepContext& context, std::uint32_t body) {
 }
 
 bool step_among_planes(const StepContext& context, std::uint32_t body) {
+  advance_among_planes(context, body);
   PlaneAdvance& advance = context.scratch.advances[body];
-  advance = advance_among_planes(context, body);
   context.out[body] = advance.touching ? rest_on_planes(context, body) : std::move(advance.end);
   return advance.touching;
 }

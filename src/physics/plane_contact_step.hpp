@@ -25,11 +25,11 @@ inline constexpr int kMaxImpactsPerStep = 8;
 // step's gravity, also undoes the sinking the step's gravity caused.
 double impulse_position_weight(Integrator integrator, double h /* s */);
 
-// Steps 1 and 2 of step_with_planes for body `body` of the context: its free step, and its
-// impacts with the planes at their times. memory.planes[body] keeps the last step's manifolds
-// while it touches (their impulses warm-start the rest), and scratch.separations[body] the
-// corners of the end.
-PlaneAdvance advance_among_planes(const StepContext& context, std::uint32_t body);
+// Steps 1 and 2 of step_with_planes for body `body` of the context, into scratch.advances[body]:
+// its free step, and its impacts with the planes at their times. memory.planes[body] keeps the last
+// step's manifolds while it touches (their impulses warm-start the rest), and
+// scratch.separations[body] the corners of the end.
+void advance_among_planes(const StepContext& context, std::uint32_t body);
 
 // A body as the rows of its plane contacts see it: its index in the world, its index among
 // scratch.rows.bodies, and its rotation (body to world) at the pose the rows are for.

@@ -137,7 +137,7 @@ void substep_island(const StepContext& context, int substeps,
           rotated(primary.orientation, h * solver[i].angular_velocity).normalized();
       scratch.poses[i] = {.primary = primary,
                           .inverse_mass = bodies[i].model->constants.inverse_mass,
-                          .inverse_inertia = &solver[i].inverse_inertia};
+                          .solved = &solver[i]};
     }
     for (int pass = 0; pass < kMostProjectionPasses; ++pass) {
       if (project_pass(scratch.poses, positions) > -kProjectionTolerance) break;

@@ -44,7 +44,7 @@ void advance_bodies(const StepContext& context) {
       advance = {.end = step(context.integrator, context.models[i], in, context.t, context.dt),
                  .remaining = context.dt};
     } else {
-      advance = advance_among_planes(context, i);
+      advance_among_planes(context, i);
     }
   }
 }
@@ -268,7 +268,7 @@ bool wake_touched(const StepContext& context, int islands) {
       if (!memory.asleep[i]) continue;
       memory.asleep[i] = 0;
       memory.still_for[i] = 0.0;
-      scratch.advances[i] = advance_among_planes(context, i);
+      advance_among_planes(context, i);
       scratch.reaches[i] =
           reach(context.in[i], scratch.advances[i].end, context.models[i].half_size, context.dt);
       woke = true;
