@@ -148,7 +148,7 @@ void StepBoxAbovePlane(benchmark::State& state) {
   const BodyModel model = box_under_gravity(state.range(1));
   const Integrator integrator = integrator_at(state.range(0));
   const std::vector<Plane> floor = {Plane{}};
-  PlaneContacts memory;
+  WorldContacts memory;
   const BodyState start = box_at(model, 10.0);
   for (auto _ : state) {
     benchmark::DoNotOptimize(

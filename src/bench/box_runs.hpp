@@ -45,7 +45,7 @@ class BoxRun {
   void step();  // one step of kBenchStep
 
   const physics::BodyState& state() const { return states_[0]; }
-  bool asleep() const { return !world_.asleep.empty() && world_.asleep[0] != 0; }
+  bool asleep() const { return !world_.memory.asleep.empty() && world_.memory.asleep[0] != 0; }
 
  private:
   void advance();
@@ -56,13 +56,13 @@ class BoxRun {
   std::vector<physics::Plane> planes_;
   physics::ContactSettings settings_;
   std::vector<physics::BodyState> states_, next_;
-  physics::PlaneContacts plane_memory_;
+  physics::WorldContacts plane_memory_;
   physics::WorldContacts world_;
   // The sliding start, and the memory it had: a restart copies them back (no allocation once
   // the buffers have their sizes).
   bool restarts_ = false;
   physics::BodyState start_;
-  physics::PlaneContacts plane_memory_at_start_;
+  physics::WorldContacts plane_memory_at_start_;
   physics::WorldContacts world_at_start_;
   int steps_since_start_ = 0;
   double time_ = 0.0;  // s

@@ -19,7 +19,7 @@ struct ContactCount {
 ContactCount count_contacts(const physics::WorldContacts& contacts,
                             const std::vector<physics::BodyState>& states, const Pile& pile) {
   ContactCount out;
-  for (const physics::PairContact& pair : contacts.pairs) {
+  for (const physics::PairContact& pair : contacts.memory.pairs) {
     for (int k = 0; k < pair.manifold.count; ++k) {
       const double s = pair.manifold.points[static_cast<std::size_t>(k)].separation;
       if (s < physics::kTouchingDistance) ++out.points;
@@ -27,7 +27,7 @@ ContactCount count_contacts(const physics::WorldContacts& contacts,
     }
   }
   for (std::size_t i = 0; i < states.size(); ++i) {
-    for (const physics::Manifold& m : contacts.planes[i].manifolds) out.points += m.count;
+    for (const physics::Manifold& m : contacts.memory.planes[i]) out.points += m.count;
     for (const physics::Plane& plane : pile.planes) {
       out.depth = std::max(out.depth, -physics::closest_corner_separation(
                                           states[i], 0.5 * pile.boxes[i].size, plane));

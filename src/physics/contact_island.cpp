@@ -25,11 +25,11 @@ double project(const PositionPoint& point, ProjectedPose& a, ProjectedPose* b) {
   }
   if (separation >= 0.0) return 0.0;
   const Vec3& n = point.normal;
-  const Vec3 turn_a = *a.inverse_inertia * arm_a.cross(n);
+  const Vec3 turn_a = a.solved->turn(arm_a.cross(n));
   double inverse_mass = a.inverse_mass + arm_a.cross(n).dot(turn_a);
   Vec3 turn_b = Vec3::Zero();
   if (b) {
-    turn_b = *b->inverse_inertia * arm_b.cross(n);
+    turn_b = b->solved->turn(arm_b.cross(n));
     inverse_mass += b->inverse_mass + arm_b.cross(n).dot(turn_b);
   }
   const double push = -separation / inverse_mass;  // position-level impulse (kg m)
@@ -88,12 +88,12 @@ PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
   return out;
 }
 
-void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
-                    std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
-                    std::span<const PositionPoint> positions, const ContactSettings& settings,
-                    std::vector<ProjectedPose>& poses, std::span<BodyState> out) {
-  solve_contacts(solver, points, patches,
-                 {.iterations = solver_passes(points.size()),
+void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
+                    const ContactSettings& settings, std::span<BodyState> out) {
+  const std::span<const SolverBody> solver = rows.bodies;
+  std::vector<ProjectedPose>& poses = rows.poses;
+  solve_contacts(rows.bodies, rows.points, rows.patches,
+                 {.iterations = solver_passes(rows.points.size()),
                   .tolerance = kRestingTolerance,
                   .restitution_threshold = settings.restitution_threshold,
                   .warm_start = true});
@@ -109,12 +109,11 @@ void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> so
     primary.position += body.weight * (solved.velocity - body.end.velocity());
     primary.orientation = rotated(
         primary.orientation, body.weight * (solved.angular_velocity - body.end.angular_velocity()));
-    poses[i] = {.primary = primary,
-                .inverse_mass = body.model->constants.inverse_mass,
-                .inverse_inertia = &solved.inverse_inertia};
+    poses[i] = {
+        .primary = primary, .inverse_mass = body.model->constants.inverse_mass, .solved = &solved};
   }
   for (int iteration = 0; iteration < kProjectionIterations; ++iteration) {
-    if (project_pass(poses, positions) == 0.0) break;
+    if (project_pass(poses, rows.positions) == 0.0) break;
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out[i] = BodyState(poses[i].primary, bodies[i].model->constants);

@@ -68,8 +68,8 @@ struct PositionPoint {
 // A pose being projected, and what the projection needs of its mass.
 struct ProjectedPose {
   PrimaryState primary;
-  double inverse_mass = 0.0;              // 1/kg
-  const Mat3* inverse_inertia = nullptr;  // world (1/(kg m²))
+  double inverse_mass = 0.0;           // 1/kg
+  const SolverBody* solved = nullptr;  // its inverse inertia, world frame (SolverBody::turn)
 };
 
 // One pass of the projection: pushes the poses apart along each point still inside until its
@@ -78,16 +78,30 @@ struct ProjectedPose {
 // reached it (m): negative when any point was inside, else 0.
 double project_pass(std::span<ProjectedPose> poses, std::span<const PositionPoint> positions);
 
-// Solves the island's velocity constraints (warm-started from each point's source), then moves
+// What a solve runs on, built by the row builder (contact_rows.hpp) and scratch of the step:
+// the bodies' velocities, a normal row and a position point per contact point (positions[i] is
+// points[i]'s), a friction patch per manifold, and the poses of the projection.
+struct ContactRows {
+  std::vector<SolverBody> bodies;
+  std::vector<ContactConstraint> points;
+  std::vector<PositionPoint> positions;
+  std::vector<FrictionPatch> patches;
+  std::vector<ProjectedPose> poses;  // scratch of the projection, a pose per body
+  void clear() {
+    bodies.clear();
+    points.clear();
+    positions.clear();
+    patches.clear();
+  }
+};
+
+// Solves the island's velocity constraints (warm-started from the rows' impulses), then moves
 // each body's pose by weight × its velocity change and projects the positions out of every
 // PositionPoint still inside (non-linear Gauss-Seidel, Catto, Box2D 2.4 "solve position
-// constraints": it moves no momentum, so it adds no kinetic energy). `solver` holds one
-// SolverBody per body, made from its end state; `poses` is scratch for the projection (a pose per
-// body). The corrected states go to `out`.
-void resolve_island(std::span<const IslandBody> bodies, std::span<SolverBody> solver,
-                    std::span<ContactConstraint> points, std::span<FrictionPatch> patches,
-                    std::span<const PositionPoint> positions, const ContactSettings& settings,
-                    std::vector<ProjectedPose>& poses, std::span<BodyState> out);
+// constraints": it moves no momentum, so it adds no kinetic energy). rows.bodies holds one
+// SolverBody per body, made from its end state. The corrected states go to `out`.
+void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
+                    const ContactSettings& settings, std::span<BodyState> out);
 
 // The centre of the points at `arms` (m, world, from one body's centre) and their mean distance
 // from it across `normal` (unit): what a friction patch needs.

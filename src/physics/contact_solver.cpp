@@ -10,14 +10,6 @@ namespace {
 constexpr int kBounceIterations = 100;
 constexpr double kBounceTolerance = 1e-13;
 
-// Relative speed along a direction: of a's point minus b's (m/s).
-[[gnu::always_inline]] inline double speed(const ImpulseDirection& d, const SolverBody& a,
-                                           const SolverBody* b) {
-  double out = a.velocity.dot(d.linear) + a.angular_velocity.dot(d.moment_a);
-  if (b) out -= b->velocity.dot(d.linear) + b->angular_velocity.dot(d.moment_b);
-  return out;
-}
-
 // An impulse (N s) along the direction on a, and its opposite on b.
 [[gnu::always_inline]] inline void push(const ImpulseDirection& d, SolverBody& a, SolverBody* b,
                                         double impulse) {
@@ -29,59 +21,6 @@ constexpr double kBounceTolerance = 1e-13;
   b->angular_velocity -= impulse * d.turn_b;
 }
 
-// The direction `along` (unit, world) at a point `arm_a` (m, world) from a's centre, and at
-// `arm_b` from b's when there is a b.
-// (Computed in locals and stored once: reading back a half-written member stalls on the store.)
-ImpulseDirection direction(const Vec3& along, const SolverBody& a, const Vec3& arm_a,
-                           const SolverBody* b, const Vec3& arm_b) {
-  const Vec3 moment_a = arm_a.cross(along);
-  const Vec3 turn_a = a.inverse_inertia * moment_a;
-  double inverse = a.inverse_mass + moment_a.dot(turn_a);
-  Vec3 moment_b = Vec3::Zero(), turn_b = Vec3::Zero();
-  if (b) {
-    moment_b = arm_b.cross(along);
-    turn_b = b->inverse_inertia * moment_b;
-    inverse += b->inverse_mass + moment_b.dot(turn_b);
-  }
-  return {.linear = along,
-          .moment_a = moment_a,
-          .turn_a = turn_a,
-          .moment_b = moment_b,
-          .turn_b = turn_b,
-          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
-}
-
-ContactConstraint constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
-                             std::uint32_t b, const SolverBody* body_b, const Vec3& arm_b,
-                             const Vec3& normal, const Material& material) {
-  // The direction into a local first: built in place, it had the whole constraint zeroed before
-  // the call (a `rep stos` of 23 words, a fifth of building a constraint).
-  const ImpulseDirection along = direction(normal, body_a, arm_a, body_b, arm_b);
-  return {.a = a,
-          .b = b,
-          .normal = along,
-          .restitution = material.restitution,
-          .approach_speed = speed(along, body_a, body_b)};
-}
-
-// The turning direction about the unit `axis`: no linear part, the same moment on both bodies.
-ImpulseDirection twist_direction(const Vec3& axis, const SolverBody& a, const SolverBody* b) {
-  const Vec3 turn_a = a.inverse_inertia * axis;
-  double inverse = axis.dot(turn_a);
-  Vec3 moment_b = Vec3::Zero(), turn_b = Vec3::Zero();
-  if (b) {
-    moment_b = axis;
-    turn_b = b->inverse_inertia * axis;
-    inverse += axis.dot(turn_b);
-  }
-  return {.linear = Vec3::Zero(),
-          .moment_a = axis,
-          .turn_a = turn_a,
-          .moment_b = moment_b,
-          .turn_b = turn_b,
-          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
-}
-
 SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
   return c.b == kStatic ? nullptr : &bodies[c.b];
 }
@@ -90,8 +29,9 @@ SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
 double solve_normal(std::span<SolverBody> bodies, ContactConstraint& c) {
   SolverBody& a = bodies[c.a];
   SolverBody* b = second(bodies, c);
-  const double accumulated = std::max(
-      0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + c.speculative_speed));
+  const double accumulated =
+      std::max(0.0, c.normal_impulse -
+                        c.normal.mass * (relative_speed(c.normal, a, b) + c.speculative_speed));
   const double change = accumulated - c.normal_impulse;
   c.normal_impulse = accumulated;
   push(c.normal, a, b, change);
@@ -109,7 +49,7 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
   // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
   double wanted[2];
   for (int k = 0; k < 2; ++k) {
-    wanted[k] = f.tangent_impulse[k] - f.tangent[k].mass * speed(f.tangent[k], a, b);
+    wanted[k] = f.tangent_impulse[k] - f.tangent[k].mass * relative_speed(f.tangent[k], a, b);
   }
   const double limit = f.friction * normal;
   const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
@@ -122,8 +62,8 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
     largest = std::max(largest, std::abs(change));
   }
   const double twist_limit = limit * f.twist_arm;
-  const double twist =
-      std::clamp(f.twist_impulse - f.twist.mass * speed(f.twist, a, b), -twist_limit, twist_limit);
+  const double twist = std::clamp(f.twist_impulse - f.twist.mass * relative_speed(f.twist, a, b),
+                                  -twist_limit, twist_limit);
   const double change = twist - f.twist_impulse;
   push(f.twist, a, b, change);
   f.twist_impulse = twist;
@@ -156,7 +96,7 @@ double bounce_pass(std::span<SolverBody> bodies, std::span<const ContactConstrai
     SolverBody* b = second(bodies, c);
     const double target = -c.restitution * c.approach_speed;
     const double total =
-        std::max(0.0, accumulated[i] - c.normal.mass * (speed(c.normal, a, b) - target));
+        std::max(0.0, accumulated[i] - c.normal.mass * (relative_speed(c.normal, a, b) - target));
     const double change = total - accumulated[i];
     accumulated[i] = total;
     push(c.normal, a, b, change);
@@ -237,7 +177,7 @@ void solve_substep_normal(std::span<SolverBody> bodies, ContactConstraint& c, do
   SolverBody* b = second(bodies, c);
   const double allowed = separation > 0.0 ? separation / h : 0.0;  // approach speed (m/s)
   const double accumulated =
-      std::max(0.0, c.normal_impulse - c.normal.mass * (speed(c.normal, a, b) + allowed));
+      std::max(0.0, c.normal_impulse - c.normal.mass * (relative_speed(c.normal, a, b) + allowed));
   const double change = accumulated - c.normal_impulse;
   c.normal_impulse = accumulated;
   c.largest_impulse = std::max(c.largest_impulse, accumulated);
@@ -295,6 +235,7 @@ SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constan
                  .angular_velocity = state.angular_velocity(),
                  .inverse_mass = constants.inverse_mass};
   if (constants.isotropic) {  // a scalar tensor in every frame
+    out.isotropic = true;
     out.inverse_inertia = Mat3::Identity() * constants.inverse_inertia.x();
     out.inertia = Mat3::Identity() * constants.inertia.x();
   } else {
@@ -328,34 +269,6 @@ void tangent_basis(const Vec3& normal, Vec3 (&out)[2]) {
   out[1] = normal.cross(out[0]);
 }
 
-ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
-                                  const Vec3& normal, const Material& material) {
-  return constraint(a, body_a, arm_a, kStatic, nullptr, Vec3::Zero(), normal, material);
-}
-
-ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
-                                  std::uint32_t b, const SolverBody& body_b, const Vec3& arm_b,
-                                  const Vec3& normal, const Material& material) {
-  return constraint(a, body_a, arm_a, b, &body_b, arm_b, normal, material);
-}
-
-FrictionPatch make_patch(std::uint32_t a, const SolverBody& body_a, const Vec3& centre_arm_a,
-                         std::uint32_t b, const SolverBody* body_b, const Vec3& centre_arm_b,
-                         const Vec3& normal, double friction, double twist_arm, std::uint32_t first,
-                         std::uint32_t count) {
-  Vec3 tangents[2];
-  tangent_basis(normal, tangents);
-  return {.a = a,
-          .b = b,
-          .tangent = {direction(tangents[0], body_a, centre_arm_a, body_b, centre_arm_b),
-                      direction(tangents[1], body_a, centre_arm_a, body_b, centre_arm_b)},
-          .twist = twist_direction(normal, body_a, body_b),
-          .friction = friction,
-          .twist_arm = twist_arm,
-          .first = first,
-          .count = count};
-}
-
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                     std::span<FrictionPatch> patches, const SolveSettings& settings) {
   // Which points may bounce is known before the solve; the energy guard needs the energy then.
@@ -366,35 +279,20 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
   const double energy_before = some_may_bounce ? total_kinetic_energy(bodies) : 0.0;
 
   if (settings.warm_start) {
-    for (ContactConstraint& c : points) {
-      if (!c.source) continue;
-      c.normal_impulse = c.source->normal;
+    for (const ContactConstraint& c : points) {
       push(c.normal, bodies[c.a], second(bodies, c), c.normal_impulse);
     }
-    for (FrictionPatch& f : patches) {
-      if (!f.source) continue;
+    for (const FrictionPatch& f : patches) {
+      if (!f.keeps_friction) continue;
       SolverBody& a = bodies[f.a];
       SolverBody* b = f.b == kStatic ? nullptr : &bodies[f.b];
-      for (int k = 0; k < 2; ++k) {
-        f.tangent_impulse[k] = f.source->tangent.dot(f.tangent[k].linear);
-        push(f.tangent[k], a, b, f.tangent_impulse[k]);
-      }
-      f.twist_impulse = f.source->twist;
+      for (int k = 0; k < 2; ++k) push(f.tangent[k], a, b, f.tangent_impulse[k]);
       push(f.twist, a, b, f.twist_impulse);
     }
   }
   for (int pass = 0; pass < settings.iterations; ++pass) {
     const double change = inelastic_pass(bodies, points, patches);
     if (change <= settings.tolerance * largest_normal_impulse(points)) break;
-  }
-  for (ContactConstraint& c : points) {
-    if (c.source) c.source->normal = c.normal_impulse;
-  }
-  for (FrictionPatch& f : patches) {
-    if (!f.source) continue;
-    f.source->tangent =
-        f.tangent_impulse[0] * f.tangent[0].linear + f.tangent_impulse[1] * f.tangent[1].linear;
-    f.source->twist = f.twist_impulse;
   }
 
   // The bounce, from the velocities the inelastic solve left (Poisson-like: compression first,

@@ -35,6 +35,15 @@ struct SolverBody {
   // the kinetic energy.
   Mat3 inverse_inertia = Mat3::Zero();
   Mat3 inertia = Mat3::Zero();
+  // A cube's (BodyConstants::isotropic): I⁻¹ is the scalar inverse_inertia(0, 0) in every frame,
+  // and a turn costs three products, not a 3 × 3 one (the rows of a resting cube and its
+  // projection build about a dozen turns a step).
+  bool isotropic = false;
+
+  // I⁻¹ moment (1/(kg m) for a moment arm in m): the turn an impulse along a row gives.
+  Vec3 turn(const Vec3& moment) const {
+    return isotropic ? Vec3(inverse_inertia(0, 0) * moment) : Vec3(inverse_inertia * moment);
+  }
 
   // The body as the state has it: velocities and mass at that pose, whose body-to-world
   // rotation is `rotation` (passed in: the caller has it already).
@@ -55,7 +64,7 @@ inline constexpr std::uint32_t kStatic = UINT32_MAX;
 // reads and writes precomputed (the Jacobian row and its image through the inverse masses): the
 // relative speed along d is v_a·d + ω_a·(r_a × d) - v_b·d - ω_b·(r_b × d), and an impulse λ along
 // d changes v_a by λ d/m_a and ω_a by λ I_a⁻¹(r_a × d), and b by the opposite.
-// Its fields have no default values on purpose: make_constraint sets every one, and zeroing them
+// Its fields have no default values on purpose: impulse_direction sets every one, and zeroing them
 // first cost a third of building a constraint (a `rep stos` per direction).
 struct ImpulseDirection {
   Vec3 linear;    // d: unit, world frame
@@ -81,8 +90,16 @@ struct ContactConstraint {
   // The largest normal impulse of any sub-step (N s): a sub-stepped point that pushed at all may
   // bounce, though its last sub-step may have been apart.
   double largest_impulse = 0.0;
-  // Where the result goes back to for warm starting: a point of one manifold.
-  Impulses* source = nullptr;
+};
+
+// The manifold a patch's rows were built from, which its impulses go back to by index after the
+// solve (contact_rows.hpp, store_impulses): body `owner`'s with plane `plane`, or, with plane
+// kPairManifold, pair `owner`'s (an index into the step's pairs). The points [first, first +
+// count) of the patch are that manifold's points 0 to count - 1.
+inline constexpr std::uint32_t kPairManifold = UINT32_MAX;
+struct ManifoldRef {
+  std::uint32_t owner = 0;
+  std::uint32_t plane = kPairManifold;
 };
 
 // The friction of one manifold: the points [first, first + count) of the constraint list, all
@@ -97,30 +114,23 @@ struct FrictionPatch {
   std::uint32_t first = 0, count = 0;
   double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ Σ normal (N s)
   double twist_impulse = 0.0;              // accumulated, |twist| <= μ twist_arm Σ normal (N m s)
-  PatchImpulses* source = nullptr;         // the manifold's, for warm starting
+  ManifoldRef source;
+  // Whether the friction impulses are warm-started (the row builder sets them) and go back to the
+  // manifold: not between bodies in a converged solve (above).
+  bool keeps_friction = false;
 };
 
 // Two unit vectors spanning the plane normal to the unit `normal`, from the world axis least
 // along it (so the same normal always gives the same basis).
 void tangent_basis(const Vec3& normal, Vec3 (&out)[2]);
 
-// A point at `arm_a` from a's centre (m, world) touching a static shape whose normal (unit,
-// world) is `normal`.
-ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
-                                  const Vec3& normal, const Material& material);
-// A point between two bodies: at `arm_a` from a's centre and `arm_b` from b's (m, world), the
-// normal pointing from b towards a.
-ContactConstraint make_constraint(std::uint32_t a, const SolverBody& body_a, const Vec3& arm_a,
-                                  std::uint32_t b, const SolverBody& body_b, const Vec3& arm_b,
-                                  const Vec3& normal, const Material& material);
-
-// The friction patch of the `count` points from `first` of the constraint list, all of them
-// between a and b (kStatic, `body_b` then null) along `normal`: at their centre, `centre_arm_*`
-// from each body's centre (m, world), with tangents from tangent_basis(normal).
-FrictionPatch make_patch(std::uint32_t a, const SolverBody& body_a, const Vec3& centre_arm_a,
-                         std::uint32_t b, const SolverBody* body_b, const Vec3& centre_arm_b,
-                         const Vec3& normal, double friction, double twist_arm, std::uint32_t first,
-                         std::uint32_t count);
+// Relative speed along a direction: of a's point minus b's (m/s).
+[[gnu::always_inline]] inline double relative_speed(const ImpulseDirection& d, const SolverBody& a,
+                                                    const SolverBody* b) {
+  double out = a.velocity.dot(d.linear) + a.angular_velocity.dot(d.moment_a);
+  if (b) out -= b->velocity.dot(d.linear) + b->angular_velocity.dot(d.moment_b);
+  return out;
+}
 
 // What a solve is asked for.
 struct SolveSettings {
@@ -129,7 +139,9 @@ struct SolveSettings {
   // ends the solve early: impacts converge in a few passes, resting stacks use all of them.
   double tolerance = 1e-12;
   double restitution_threshold = 0.5;  // m/s: slower approaches do not bounce
-  bool warm_start = false;             // apply the points' impulses first (from `source`)
+  // Apply the rows' accumulated impulses first (the row builder started them from the last
+  // step's, contact_rows.hpp), friction only where the patch keeps_friction.
+  bool warm_start = false;
 };
 
 // Solves the points against the bodies' velocities in place: first the inelastic solve (normal
@@ -138,8 +150,9 @@ struct SolveSettings {
 // bounce raised the kinetic energy of the bodies above its value before the solve, it is scaled
 // back until it does not (sequential bounces at several points can otherwise create energy: Box3D
 // issue 83). The bodies given are solved as one group: a caller with unrelated groups (islands)
-// solves each alone, so that one group's bounce does not scale another's. Accumulated impulses are
-// written back to each point's and patch's `source`. Every point belongs to exactly one patch.
+// solves each alone, so that one group's bounce does not scale another's. The accumulated impulses
+// of the inelastic solve stay in the rows (store_impulses takes them back to the manifolds). Every
+// point belongs to exactly one patch.
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                     std::span<FrictionPatch> patches, const SolveSettings& settings);
 

@@ -4,28 +4,26 @@
 #include <cmath>
 #include <limits>
 
-#include "physics/contact_island.hpp"
-#include "physics/contact_solver.hpp"
-#include "physics/plane_rest.hpp"
+#include "physics/contact_rows.hpp"
 
 namespace tumble::physics {
 namespace {
 
 // Whether the box's bounding sphere at `position` (m, world) comes within `margin` (m) of any
 // plane: one dot product per plane, and the whole test for a body that touches nothing.
-bool near_any(const Vec3& position, const Vec3& half_size, const std::vector<Plane>& planes,
+bool near_any(const Vec3& position, const Vec3& half_size, std::span<const Plane> planes,
               double margin) {
   const double reach = half_size.norm() + margin;
   return std::any_of(planes.begin(), planes.end(),
                      [&](const Plane& plane) { return separation(plane, position) <= reach; });
 }
 
-// Into `out`, one per plane: the corner separations of the box at (rotation, position), or +∞
-// for every corner of a plane that the box's bounding sphere is further from than `margin` (m).
-// Returns the lowest separation.
-double corner_separations(const Mat3& rotation, const Vec3& position, const Vec3& half_size,
-                          const std::vector<Plane>& planes, double margin,
-                          std::vector<CornerSeparations>& out) {
+// Into `out`, one per plane: the corner separations of the box at `pose`, or +∞ for every corner
+// of a plane that the box's bounding sphere is further from than `margin` (m). Returns the lowest
+// separation.
+double corner_separations(const PoseRef& pose, const Vec3& half_size, std::span<const Plane> planes,
+                          double margin, std::vector<CornerSeparations>& out) {
+  const Vec3& position = pose.position;
   out.resize(planes.size());
   const double reach = half_size.norm() + margin;
   double lowest = std::numeric_limits<double>::infinity();
@@ -34,13 +32,13 @@ double corner_separations(const Mat3& rotation, const Vec3& position, const Vec3
       out[p].fill(std::numeric_limits<double>::infinity());
       continue;
     }
-    out[p] = corner_separations(rotation, position, half_size, planes[p]);
+    out[p] = corner_separations(pose.rotation, position, half_size, planes[p]);
     lowest = std::min(lowest, *std::min_element(out[p].begin(), out[p].end()));
   }
   return lowest;
 }
 
-double lowest_separation(const BodyState& state, const std::vector<Plane>& planes,
+double lowest_separation(const BodyState& state, std::span<const Plane> planes,
                          const std::vector<ImpactCorner>& corners) {
   const Mat3 rotation = state.rotation();
   double lowest = std::numeric_limits<double>::infinity();
@@ -54,7 +52,7 @@ double lowest_separation(const BodyState& state, const std::vector<Plane>& plane
 // Into `out`: the corners inside a plane at the end of the step (`end`, the separations there)
 // that were apart from it at `start` (by more than kTouchingDistance).
 void find_impact_corners(const BodyState& start, const std::vector<CornerSeparations>& end,
-                         const Vec3& half_size, const std::vector<Plane>& planes,
+                         const Vec3& half_size, std::span<const Plane> planes,
                          std::vector<ImpactCorner>& out) {
   out.clear();
   Mat3 start_rotation;
@@ -80,9 +78,11 @@ void find_impact_corners(const BodyState& start, const std::vector<CornerSeparat
 // integrator's motion from `start`, approached from the outside: Illinois regula falsi on the
 // lowest separation, which is positive at 0 and negative at h. The answer is a time at which the
 // corners are still outside, by at most a small fraction of kTouchingDistance.
-double time_of_impact(Integrator integrator, const BodyModel& model, const BodyState& start,
-                      double t, double h, const std::vector<Plane>& planes,
-                      const std::vector<ImpactCorner>& corners) {
+double time_of_impact(const StepContext& context, const BodyModel& model, const BodyState& start,
+                      double t, double h) {
+  const Integrator integrator = context.integrator;
+  const std::span<const Plane> planes = context.planes;
+  const std::vector<ImpactCorner>& corners = context.scratch.impact_corners;
   double outside = 0.0, inside = h;
   double outside_gap = lowest_separation(start, planes, corners);
   double inside_gap = lowest_separation(step(integrator, model, start, t, h), planes, corners);
@@ -108,39 +108,6 @@ double time_of_impact(Integrator integrator, const BodyModel& model, const BodyS
   return outside;
 }
 
-// Into `found` (one per plane) the manifold of each plane (its corners closer than `margin`, m,
-// from the corner separations), and onto `points` a constraint for each of its points and onto
-// `patches` its friction, pointing back at it for the impulses; `body` is the body's index among
-// the solver's bodies.
-void find_constraints(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
-                      const SolverBody& solver_body, const std::vector<Plane>& planes,
-                      const std::vector<CornerSeparations>& separations, double margin,
-                      std::vector<Manifold>& found, std::vector<ContactConstraint>& points,
-                      std::vector<FrictionPatch>& patches) {
-  found.resize(planes.size());
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    Manifold& manifold = found[p];
-    manifold = box_plane_manifold(separations[p], model.half_size, margin);
-    if (manifold.count == 0) continue;
-    const Plane& plane = planes[p];
-    const Material material = combine(model.material, plane.material);
-    Vec3 arms[kMaxManifoldPoints];
-    const auto first = static_cast<std::uint32_t>(points.size());
-    for (int i = 0; i < manifold.count; ++i) {
-      ContactPoint& point = manifold.points[static_cast<std::size_t>(i)];
-      arms[i] = rotation * point.body_point;
-      points.push_back(make_constraint(body, solver_body, arms[i], plane.normal, material));
-      points.back().source = &point.impulses;
-    }
-    const PatchShape shape =
-        patch_shape({arms, static_cast<std::size_t>(manifold.count)}, plane.normal);
-    patches.push_back(make_patch(body, solver_body, shape.centre_arm, kStatic, nullptr,
-                                 Vec3::Zero(), plane.normal, material.friction, shape.twist_arm,
-                                 first, static_cast<std::uint32_t>(manifold.count)));
-    patches.back().source = &manifold.friction;
-  }
-}
-
 // The state with the solver's impulses added to its momenta (an instant impulse: pose unchanged).
 BodyState with_impulses(const BodyState& state, const SolverBody& body,
                         const BodyConstants& constants) {
@@ -150,32 +117,45 @@ BodyState with_impulses(const BodyState& state, const SolverBody& body,
   return BodyState(primary, constants);
 }
 
-BodyState resolve_impact(const BodyModel& model, const BodyState& at,
-                         const std::vector<Plane>& planes, const ContactSettings& settings,
-                         PlaneContacts& contacts) {
+// The impact of the body at `at` with the planes it touches there, as an instant impulse.
+BodyState resolve_impact(const StepContext& context, std::uint32_t body, const BodyState& at) {
+  const BodyModel& model = context.models[body];
   const Mat3 rotation = at.rotation();
-  corner_separations(rotation, at.position(), model.half_size, planes, kTouchingDistance,
-                     contacts.separations);
-  SolverBody bodies[1] = {SolverBody::from(at, model.constants, rotation)};
-  contacts.points.clear();
-  contacts.patches.clear();
-  find_constraints(model, 0, rotation, bodies[0], planes, contacts.separations, kTouchingDistance,
-                   contacts.found, contacts.points, contacts.patches);
+  std::vector<CornerSeparations>& separations = context.scratch.separations[body];
+  corner_separations({at.position(), rotation}, model.half_size, context.planes, kTouchingDistance,
+                     separations);
+  ContactRows& rows = context.scratch.rows;
+  rows.clear();
+  rows.bodies.push_back(SolverBody::from(at, model.constants, rotation));
+  for (std::uint32_t p = 0; p < context.planes.size(); ++p) {
+    const Manifold found = box_plane_manifold(separations[p], model.half_size, kTouchingDistance);
+    if (found.count == 0) continue;
+    const Plane& plane = context.planes[p];
+    append_rows({.manifold = found,
+                 .plane = plane,
+                 .material = combine(model.material, plane.material),
+                 .body = 0,
+                 .rotation = rotation,
+                 .source = {.owner = body, .plane = p},
+                 .keeps_friction = false},
+                rows);
+  }
   // An impact is solved to convergence: its bounce decides the energy of everything after it.
-  solve_contacts(bodies, contacts.points, contacts.patches,
+  // Its impulses go nowhere: the rest of the step finds its own.
+  solve_contacts(rows.bodies, rows.points, rows.patches,
                  {.iterations = 100,
-                  .restitution_threshold = settings.restitution_threshold,
+                  .restitution_threshold = context.settings.restitution_threshold,
                   .warm_start = false});
-  return with_impulses(at, bodies[0], model.constants);
+  return with_impulses(at, rows.bodies[0], model.constants);
 }
 
 // Whether a corner of the box at `state` is within kTouchingDistance of a plane; if so, into
 // `separations` its corner separations and into `rotation` its rotation matrix.
-bool touching(const BodyState& state, const Vec3& half_size, const std::vector<Plane>& planes,
+bool touching(const BodyState& state, const Vec3& half_size, std::span<const Plane> planes,
               std::vector<CornerSeparations>& separations, Mat3& rotation) {
   if (!near_any(state.position(), half_size, planes, kTouchingDistance)) return false;
   rotation = state.rotation();
-  return corner_separations(rotation, state.position(), half_size, planes, kTouchingDistance,
+  return corner_separations({state.position(), rotation}, half_size, planes, kTouchingDistance,
                             separations) < kTouchingDistance;
 }
 
@@ -195,138 +175,104 @@ double impulse_position_weight(Integrator integrator, double h) {
   return 0.5 * h;
 }
 
-PlaneAdvance advance_among_planes(Integrator integrator, const BodyModel& model,
-                                  const BodyState& in, double t, double dt,
-                                  const std::vector<Plane>& planes, const ContactSettings& settings,
-                                  PlaneContacts& contacts) {
-  contacts.manifolds.resize(planes.size());
-  PlaneAdvance out{.end = step(integrator, model, in, t, dt), .remaining = dt};
-  out.touching = touching(out.end, model.half_size, planes, contacts.separations, out.rotation);
+void advance_among_planes(const StepContext& context, std::uint32_t body) {
+  const Integrator integrator = context.integrator;
+  const BodyModel& model = context.models[body];
+  const std::span<const Plane> planes = context.planes;
+  std::vector<Manifold>& manifolds = context.memory.planes[body];
+  std::vector<CornerSeparations>& separations = context.scratch.separations[body];
+  manifolds.resize(planes.size());
+  PlaneAdvance& out = context.scratch.advances[body];
+  out.end = step(integrator, model, context.in[body], context.t, context.dt);
+  out.remaining = context.dt;
+  out.touching = touching(out.end, model.half_size, planes, separations, out.rotation);
   if (!out.touching) {
-    for (Manifold& m : contacts.manifolds) m.count = 0;  // nothing to warm start from
-    return out;
+    for (Manifold& m : manifolds) m.count = 0;  // nothing to warm start from
+    return;
   }
-  BodyState state = in;
-  double time = t;
+  BodyState state = context.in[body];
+  double time = context.t;
   for (int impacts = 0; impacts < kMaxImpactsPerStep; ++impacts) {
-    find_impact_corners(state, contacts.separations, model.half_size, planes,
-                        contacts.impact_corners);
-    if (contacts.impact_corners.empty()) break;
-    const double until = time_of_impact(integrator, model, state, time, out.remaining, planes,
-                                        contacts.impact_corners);
+    find_impact_corners(state, separations, model.half_size, planes,
+                        context.scratch.impact_corners);
+    if (context.scratch.impact_corners.empty()) break;
+    const double until = time_of_impact(context, model, state, time, out.remaining);
     const BodyState at = until > 0.0 ? step(integrator, model, state, time, until) : state;
-    state = resolve_impact(model, at, planes, settings, contacts);
+    state = resolve_impact(context, body, at);
     time += until;
     out.remaining -= until;
     out.end = step(integrator, model, state, time, out.remaining);
-    out.touching = touching(out.end, model.half_size, planes, contacts.separations, out.rotation);
+    out.touching = touching(out.end, model.half_size, planes, separations, out.rotation);
     if (!out.touching) {
-      for (Manifold& m : contacts.manifolds) m.count = 0;
-      return out;
+      for (Manifold& m : manifolds) m.count = 0;
+      return;
     }
   }
-  return out;
 }
 
-namespace {
-
-// add_plane_points with the corners closer than `margin` (m) from contacts.separations.
-void add_plane_points_within(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
-                             const SolverBody& solver_body, const std::vector<Plane>& planes,
-                             double margin, PlaneContacts& contacts,
-                             std::vector<ContactConstraint>& points,
-                             std::vector<FrictionPatch>& patches,
-                             std::vector<PositionPoint>& positions) {
-  find_constraints(model, body, rotation, solver_body, planes, contacts.separations, margin,
-                   contacts.found, points, patches);
-  // Warm start from the last step's impulses of the same corners, and of the same plane's
-  // friction.
-  // (Through local references: the pushes onto `positions` would otherwise have every access to
-  // the two manifolds reload them.)
-  for (std::size_t p = 0; p < planes.size(); ++p) {
-    Manifold& found = contacts.found[p];
-    const Manifold& last = contacts.manifolds[p];
-    if (found.count > 0 && last.count > 0) found.friction = last.friction;
-    const Plane& plane = planes[p];
-    for (int i = 0; i < found.count; ++i) {
-      ContactPoint& now = found.points[static_cast<std::size_t>(i)];
-      for (int j = 0; j < last.count; ++j) {
-        const ContactPoint& before = last.points[static_cast<std::size_t>(j)];
-        if (before.feature == now.feature) now.impulses = before.impulses;
-      }
-      positions.push_back(
-          {.a = body, .anchor_a = now.body_point, .normal = plane.normal, .base = -plane.offset});
-    }
+void append_plane_rows(const StepContext& context, const BodyInRows& body, double margin) {
+  const BodyModel& model = context.models[body.body];
+  std::vector<Manifold>& manifolds = context.memory.planes[body.body];
+  const std::vector<CornerSeparations>& separations = context.scratch.separations[body.body];
+  for (std::uint32_t p = 0; p < context.planes.size(); ++p) {
+    const Plane& plane = context.planes[p];
+    Manifold& manifold = manifolds[p];
+    Manifold found = box_plane_manifold(separations[p], model.half_size, margin);
+    // Warm start from the last step's impulses of the same corners, and of the same plane's
+    // friction.
+    if (found.count > 0 && manifold.count > 0) found.friction = manifold.friction;
+    keep_impulses(found, manifold);
+    manifold = found;
+    if (manifold.count == 0) continue;
+    append_rows({.manifold = manifold,
+                 .plane = plane,
+                 .material = combine(model.material, plane.material),
+                 .body = body.solver,
+                 .rotation = body.rotation,
+                 .source = {.owner = body.body, .plane = p},
+                 .keeps_friction = true},
+                context.scratch.rows);
   }
-  // The points' sources stay where they are: swapping vectors keeps their buffers.
-  contacts.manifolds.swap(contacts.found);
 }
 
-}  // namespace
-
-void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
-                      const SolverBody& solver_body, const std::vector<Plane>& planes,
-                      PlaneContacts& contacts, std::vector<ContactConstraint>& points,
-                      std::vector<FrictionPatch>& patches, std::vector<PositionPoint>& positions) {
-  add_plane_points_within(model, body, rotation, solver_body, planes, kTouchingDistance, contacts,
-                          points, patches, positions);
-}
-
-void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
-                                  const BodyState& start, const Mat3& rotation, double margin,
-                                  const SolverBody& solver_body, const std::vector<Plane>& planes,
-                                  PlaneContacts& contacts, std::vector<ContactConstraint>& points,
-                                  std::vector<FrictionPatch>& patches,
-                                  std::vector<PositionPoint>& positions) {
-  contacts.manifolds.resize(planes.size());
-  if (!near_any(start.position(), model.half_size, planes, margin)) {
-    for (Manifold& m : contacts.manifolds) m.count = 0;
+void append_speculative_plane_rows(const StepContext& context, const BodyInRows& body,
+                                   double margin) {
+  const BodyModel& model = context.models[body.body];
+  const BodyState& start = context.in[body.body];
+  std::vector<Manifold>& manifolds = context.memory.planes[body.body];
+  manifolds.resize(context.planes.size());
+  if (!near_any(start.position(), model.half_size, context.planes, margin)) {
+    for (Manifold& m : manifolds) m.count = 0;
     return;
   }
-  corner_separations(rotation, start.position(), model.half_size, planes, margin,
-                     contacts.separations);
-  add_plane_points_within(model, body, rotation, solver_body, planes, margin, contacts, points,
-                          patches, positions);
+  corner_separations({start.position(), body.rotation}, model.half_size, context.planes, margin,
+                     context.scratch.separations[body.body]);
+  append_plane_rows(context, body, margin);
 }
 
-BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
-                         const std::vector<Plane>& planes, const ContactSettings& settings,
-                         PlaneContacts& contacts) {
-  const double weight = impulse_position_weight(integrator, advance.remaining);
+BodyState rest_on_planes(const StepContext& context, std::uint32_t body) {
+  const PlaneAdvance& advance = context.scratch.advances[body];
+  const BodyModel& model = context.models[body];
+  const IslandBody island{.model = &model,
+                          .end = advance.end,
+                          .rotation = advance.rotation,
+                          .weight = impulse_position_weight(context.integrator, advance.remaining)};
+  ContactRows& rows = context.scratch.rows;
+  rows.clear();
+  rows.bodies.push_back(SolverBody::from(island.end, model.constants, island.rotation));
+  append_plane_rows(context, {.body = body, .solver = 0, .rotation = island.rotation},
+                    kTouchingDistance);
   BodyState out;
-  if (rest_alone_on_planes(model, advance.end, advance.rotation, weight, planes, settings, contacts,
-                           out)) {
-    return out;
-  }
-  return rest_on_planes_as_island(integrator, model, advance, planes, settings, contacts);
-}
-
-BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model,
-                                   const PlaneAdvance& advance, const std::vector<Plane>& planes,
-                                   const ContactSettings& settings, PlaneContacts& contacts) {
-  const IslandBody body{.model = &model,
-                        .end = advance.end,
-                        .rotation = advance.rotation,
-                        .weight = impulse_position_weight(integrator, advance.remaining)};
-  SolverBody solver[1] = {SolverBody::from(body.end, model.constants, body.rotation)};
-  contacts.points.clear();
-  contacts.patches.clear();
-  contacts.positions.clear();
-  add_plane_points(model, 0, body.rotation, solver[0], planes, contacts, contacts.points,
-                   contacts.patches, contacts.positions);
-  BodyState out;
-  resolve_island({&body, 1}, solver, contacts.points, contacts.patches, contacts.positions,
-                 settings, contacts.poses, {&out, 1});
+  resolve_island({&island, 1}, rows, context.settings, {&out, 1});
+  store_impulses(rows, context.memory.planes, {});
   return out;
 }
 
-BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
-                           double t, double dt, const std::vector<Plane>& planes,
-                           const ContactSettings& settings, PlaneContacts& contacts) {
-  PlaneAdvance advance =
-      advance_among_planes(integrator, model, in, t, dt, planes, settings, contacts);
-  if (!advance.touching) return std::move(advance.end);
-  return rest_on_planes(integrator, model, advance, planes, settings, contacts);
+bool step_among_planes(const StepContext& context, std::uint32_t body) {
+  advance_among_planes(context, body);
+  PlaneAdvance& advance = context.scratch.advances[body];
+  context.out[body] = advance.touching ? rest_on_planes(context, body) : std::move(advance.end);
+  return advance.touching;
 }
 
 }  // namespace tumble::physics

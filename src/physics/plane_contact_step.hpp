@@ -6,9 +6,7 @@
 #include <vector>
 
 #include "physics/contact.hpp"
-#include "physics/contact_island.hpp"
-#include "physics/contact_solver.hpp"
-#include "physics/integrators.hpp"
+#include "physics/step_context.hpp"
 
 namespace tumble::physics {
 
@@ -19,25 +17,6 @@ inline constexpr double kTouchingDistance = 1e-6;
 // every contact as resting (a box chattering on a corner cannot stall the step).
 inline constexpr int kMaxImpactsPerStep = 8;
 
-// A corner of the box that may hit a plane within a step.
-struct ImpactCorner {
-  std::size_t plane = 0;
-  Vec3 body_point = Vec3::Zero();  // body frame (m)
-};
-
-// One body's contact between steps: its last manifold with each plane (warm starting), and
-// scratch space kept from step to step so that a step of a touching body allocates nothing.
-struct PlaneContacts {
-  std::vector<Manifold> manifolds;             // one per plane, in the planes' order
-  std::vector<Manifold> found;                 // scratch
-  std::vector<CornerSeparations> separations;  // scratch: of the pose being looked at, per plane
-  std::vector<ContactConstraint> points;       // scratch
-  std::vector<PositionPoint> positions;        // scratch
-  std::vector<FrictionPatch> patches;          // scratch
-  std::vector<ImpactCorner> impact_corners;    // scratch
-  std::vector<ProjectedPose> poses;            // scratch
-};
-
 // How far an impulse applied over a step of h moves the body in that step, as a multiple of the
 // velocity change it causes: the position weight each integrator gives a force held constant over
 // the step. euler 0 (its positions use the velocities from the start), symplectic_euler h (the
@@ -46,48 +25,39 @@ struct PlaneContacts {
 // step's gravity, also undoes the sinking the step's gravity caused.
 double impulse_position_weight(Integrator integrator, double h /* s */);
 
-// A body's step among planes up to its resting contacts: steps 1 and 2 of step_with_planes.
-struct PlaneAdvance {
-  BodyState end;                     // the free step's end after the impacts
-  Mat3 rotation = Mat3::Identity();  // end's, when touching
-  double remaining = 0.0;            // s: the part of the step after the last impact
-  bool touching = false;  // a corner of `end` touches a plane: contacts.separations holds them
+// Steps 1 and 2 of step_with_planes for body `body` of the context, into scratch.advances[body]:
+// its free step, and its impacts with the planes at their times. memory.planes[body] keeps the last
+// step's manifolds while it touches (their impulses warm-start the rest), and
+// scratch.separations[body] the corners of the end.
+void advance_among_planes(const StepContext& context, std::uint32_t body);
+
+// A body as the rows of its plane contacts see it: its index in the world, its index among
+// scratch.rows.bodies, and its rotation (body to world) at the pose the rows are for.
+struct BodyInRows {
+  std::uint32_t body;
+  std::uint32_t solver;
+  const Mat3& rotation;
 };
-PlaneAdvance advance_among_planes(Integrator integrator, const BodyModel& model,
-                                  const BodyState& in, double t /* s */, double dt /* s */,
-                                  const std::vector<Plane>& planes, const ContactSettings& settings,
-                                  PlaneContacts& contacts);
 
-// Step 3's points and friction patches of a touching body (`body`: its index among the island's
-// solver bodies, whose entry is `solver_body`): each plane's manifold from contacts.separations,
-// warm-started from the last step's, onto `points` (velocity) and `positions` (projection).
-// contacts.manifolds then holds the new manifolds, which the solve writes its impulses into.
-void add_plane_points(const BodyModel& model, std::uint32_t body, const Mat3& rotation,
-                      const SolverBody& solver_body, const std::vector<Plane>& planes,
-                      PlaneContacts& contacts, std::vector<ContactConstraint>& points,
-                      std::vector<FrictionPatch>& patches, std::vector<PositionPoint>& positions);
+// Onto context.scratch.rows, for each plane, the rows of the body's manifold from its corners
+// closer than `margin` (m) in scratch.separations[body], warm-started from the last step's
+// manifold by feature (and the same plane's friction); memory.planes[body] then holds these
+// manifolds, which store_impulses writes the solve's impulses into.
+void append_plane_rows(const StepContext& context, const BodyInRows& body, double margin);
 
-// The same for the sub-stepped solve of an island (physics/substep_island.hpp): each plane's
-// manifold of the box at its start pose (`start`, whose rotation is `rotation`), its corners
-// closer than `margin` (m: as far as the box moves in the step) as speculative points.
-void add_speculative_plane_points(const BodyModel& model, std::uint32_t body,
-                                  const BodyState& start, const Mat3& rotation, double margin,
-                                  const SolverBody& solver_body, const std::vector<Plane>& planes,
-                                  PlaneContacts& contacts, std::vector<ContactConstraint>& points,
-                                  std::vector<FrictionPatch>& patches,
-                                  std::vector<PositionPoint>& positions);
+// The same for the sub-stepped solve of an island (physics/substep_island.hpp): the manifolds of
+// the body at its start pose (context.in, its rotation body.rotation), its corners closer than
+// `margin` (m: as far as the box moves in the step) as speculative points.
+void append_speculative_plane_rows(const StepContext& context, const BodyInRows& body,
+                                   double margin);
 
-// Step 3 of step_with_planes for a body that touches planes at the end of `advance`:
-// physics/plane_rest.hpp's solve of one body, or the island solve (contact_island.hpp) for the
-// steps that one does not take (a bounce).
-BodyState rest_on_planes(Integrator integrator, const BodyModel& model, const PlaneAdvance& advance,
-                         const std::vector<Plane>& planes, const ContactSettings& settings,
-                         PlaneContacts& contacts);
-// The same step through the island solve always: what rest_on_planes gives, to the bit, and what
-// plane_rest_test compares it with.
-BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model,
-                                   const PlaneAdvance& advance, const std::vector<Plane>& planes,
-                                   const ContactSettings& settings, PlaneContacts& contacts);
+// Step 3 of step_with_planes for a body whose scratch.advances entry touches planes: the island
+// solve (contact_island.hpp) of that one body, as an island of one in the world step has it.
+BodyState rest_on_planes(const StepContext& context, std::uint32_t body);
+
+// Steps 1 to 3 of step_with_planes for body `body` of the context, into context.out[body];
+// returns whether it touches a plane.
+bool step_among_planes(const StepContext& context, std::uint32_t body);
 
 // Advances a body from t to t + dt (s) with the integrator, then keeps it outside every plane:
 // 1. the free step; if no corner ends inside a plane, that is the step (a body that touches
@@ -101,9 +71,10 @@ BodyState rest_on_planes_as_island(Integrator integrator, const BodyModel& model
 //    moves the pose by impulse_position_weight × its velocity change, and a non-linear
 //    Gauss-Seidel projection of the pose (Catto, Box2D 2.4 "solve position constraints") pushes
 //    what is still inside out to the surface, moving no momentum, so it adds no kinetic energy.
-// `contacts` carries the body's manifolds from step to step (sized to the planes on first use).
+// `contacts` carries the body's manifolds from step to step: this is step_world for a world of
+// this one body, which does not sleep (world_step.cpp).
 BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
                            double t /* s */, double dt /* s */, const std::vector<Plane>& planes,
-                           const ContactSettings& settings, PlaneContacts& contacts);
+                           const ContactSettings& settings, WorldContacts& contacts);
 
 }  // namespace tumble::physics

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <variant>
 
+#include "physics/step_context.hpp"
+
 namespace tumble::physics {
 namespace {
 
@@ -67,23 +69,22 @@ int substeps_for(double reach) {
       std::clamp(wanted, static_cast<double>(kSubsteps), static_cast<double>(kMostSubsteps)));
 }
 
-void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
-                    std::span<SolverBody> solver, std::span<ContactConstraint> points,
-                    std::span<const PositionPoint> positions, std::span<FrictionPatch> patches,
-                    double t, double dt, int substeps, const ContactSettings& settings,
-                    SubstepScratch& scratch, const std::function<void(int)>& refresh) {
+void substep_island(const StepContext& context, int substeps,
+                    const std::function<void(int)>& refresh) {
+  const Integrator integrator = context.integrator;
+  const double t = context.t, dt = context.dt;
+  const ContactSettings& settings = context.settings;
+  const std::span<SubstepBody> bodies = context.scratch.substep_bodies;
+  ContactRows& rows = context.scratch.rows;
+  const std::span<SolverBody> solver = rows.bodies;
+  const std::span<ContactConstraint> points = rows.points;
+  const std::span<const PositionPoint> positions = rows.positions;
+  const std::span<FrictionPatch> patches = rows.patches;
+  SubstepScratch& scratch = context.scratch.substep;
   const double h = dt / substeps;
 
-  // Warm start: a sub-step's share of the last step's impulses.
-  for (ContactConstraint& c : points) {
-    c.normal_impulse = c.source ? c.source->normal : 0.0;
-    c.largest_impulse = 0.0;
-  }
-  for (FrictionPatch& f : patches) {
-    if (!f.source) continue;
-    for (int k = 0; k < 2; ++k) f.tangent_impulse[k] = f.source->tangent.dot(f.tangent[k].linear);
-    f.twist_impulse = f.source->twist;
-  }
+  // Warm start: a sub-step's share of the last step's impulses (the rows start from them).
+  for (ContactConstraint& c : points) c.largest_impulse = 0.0;
   scale_impulses(points, patches, 1.0 / substeps);
 
   const bool may_bounce = std::any_of(points.begin(), points.end(), [&](const auto& c) {
@@ -136,7 +137,7 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
           rotated(primary.orientation, h * solver[i].angular_velocity).normalized();
       scratch.poses[i] = {.primary = primary,
                           .inverse_mass = bodies[i].model->constants.inverse_mass,
-                          .inverse_inertia = &solver[i].inverse_inertia};
+                          .solved = &solver[i]};
     }
     for (int pass = 0; pass < kMostProjectionPasses; ++pass) {
       if (project_pass(scratch.poses, positions) > -kProjectionTolerance) break;
@@ -171,15 +172,6 @@ void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
   }
 
   scale_impulses(points, patches, substeps);
-  for (const ContactConstraint& c : points) {
-    if (c.source) c.source->normal = c.normal_impulse;
-  }
-  for (const FrictionPatch& f : patches) {
-    if (!f.source) continue;
-    f.source->tangent =
-        f.tangent_impulse[0] * f.tangent[0].linear + f.tangent_impulse[1] * f.tangent[1].linear;
-    f.source->twist = f.twist_impulse;
-  }
 }
 
 }  // namespace tumble::physics

@@ -65,19 +65,17 @@ struct SubstepScratch {
   std::vector<char> falls_freely;  // per body: whether gravity is all that acts on it
 };
 
-// Advances the island's bodies from t to t + dt (s). `solver` holds a SolverBody per body made
-// at the start pose; points[i] and positions[i] are one contact point (its row at the start pose,
-// and where it sits in the two bodies), every point in exactly one patch. The points' and
-// patches' sources hold impulses over a whole step: they warm-start the sub-steps with a
-// `substeps`-th of them, and get the last sub-step's times `substeps` back. `refresh`, if given,
-// runs before each sub-step after the first, with its number: it may rewrite points, positions
-// and patches in place (a caller finding the contacts of fast bodies again), keeping the lists'
-// sizes.
-void substep_island(Integrator integrator, std::span<SubstepBody> bodies,
-                    std::span<SolverBody> solver, std::span<ContactConstraint> points,
-                    std::span<const PositionPoint> positions, std::span<FrictionPatch> patches,
-                    double t /* s */, double dt /* s */, int substeps,
-                    const ContactSettings& settings, SubstepScratch& scratch,
+struct StepContext;
+
+// Advances the island's bodies (context.scratch.substep_bodies) from context.t to t + dt, in
+// `substeps` sub-steps. scratch.rows holds a SolverBody per body made at the start pose and the
+// rows of its points (their rows at the start pose, and where they sit in the two bodies), every
+// point in exactly one patch. The rows' accumulated impulses are over a whole step: they
+// warm-start the sub-steps with a `substeps`-th of them, and are the last sub-step's times
+// `substeps` after. `refresh`, if given, runs before each sub-step after the first, with its
+// number: it may rewrite the rows in place (a caller finding the contacts of fast bodies again),
+// keeping the lists' sizes.
+void substep_island(const StepContext& context, int substeps,
                     const std::function<void(int)>& refresh = {});
 
 }  // namespace tumble::physics

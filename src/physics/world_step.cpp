@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "physics/contact_rows.hpp"
 #include "physics/island_solve.hpp"
 
 namespace tumble::physics {
@@ -32,29 +33,28 @@ std::uint32_t find_root(std::vector<std::uint32_t>& root, std::uint32_t i) {
 }
 
 // The free steps, each with its impacts on planes.
-void advance_bodies(Integrator integrator, std::span<const BodyModel> models,
-                    std::span<const BodyState> in, double t, double dt,
-                    const std::vector<Plane>& planes, const ContactSettings& settings,
-                    WorldContacts& contacts) {
-  contacts.advances.resize(in.size());
-  contacts.planes.resize(in.size());
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    if (contacts.asleep[i]) {
+void advance_bodies(const StepContext& context) {
+  for (std::uint32_t i = 0; i < context.in.size(); ++i) {
+    PlaneAdvance& advance = context.scratch.advances[i];
+    const BodyState& in = context.in[i];
+    if (context.memory.asleep[i]) {
       // Unmoved, and still in its island: its manifolds keep the impulses it fell asleep with.
-      contacts.advances[i] = {
-          .end = in[i], .rotation = in[i].rotation(), .remaining = dt, .touching = true};
-    } else if (planes.empty()) {
-      contacts.advances[i] = {.end = step(integrator, models[i], in[i], t, dt), .remaining = dt};
+      advance = {.end = in, .rotation = in.rotation(), .remaining = context.dt, .touching = true};
+    } else if (context.planes.empty()) {
+      advance = {.end = step(context.integrator, context.models[i], in, context.t, context.dt),
+                 .remaining = context.dt};
     } else {
-      contacts.advances[i] = advance_among_planes(integrator, models[i], in[i], t, dt, planes,
-                                                  settings, contacts.planes[i]);
+      advance_among_planes(context, i);
     }
   }
 }
 
-// Notes in pair.stamp where its bodies stand as its manifold is found with `margin` (m).
-void stamp(const BodyState& a, const Mat3& a_rotation, const BodyState& b, double margin,
-           PairContact& pair) {
+// Notes in pair.stamp where its bodies stand at the start as its manifold is found with `margin`
+// (m).
+void stamp(const StepContext& context, double margin, PairContact& pair) {
+  const BodyState& a = context.in[pair.bodies.first];
+  const BodyState& b = context.in[pair.bodies.second];
+  const Mat3& a_rotation = context.scratch.start_rotations[pair.bodies.first];
   PairStamp& out = pair.stamp;
   out.valid = true;
   out.offset = a_rotation.transpose() * (b.position() - a.position());
@@ -67,11 +67,16 @@ void stamp(const BodyState& a, const Mat3& a_rotation, const BodyState& b, doubl
   }
 }
 
-// Whether the pair `before` keeps its manifold at the bodies' poses now, needing `margin` (m);
-// if so, `pair` gets it, with its normal turned with A and its separations measured now.
-bool reuse(const PairContact& before, const BodyState& a, const Mat3& a_rotation,
-           const BodyState& b, const Mat3& b_rotation, const Vec3& b_half_size, double margin,
+// Whether the pair `before` keeps its manifold at the bodies' poses at the start, needing
+// `margin` (m); if so, `pair` gets it, with its normal turned with A and its separations
+// measured now.
+bool reuse(const StepContext& context, const PairContact& before, double margin,
            PairContact& pair) {
+  const BodyState& a = context.in[pair.bodies.first];
+  const BodyState& b = context.in[pair.bodies.second];
+  const Mat3& a_rotation = context.scratch.start_rotations[pair.bodies.first];
+  const Mat3& b_rotation = context.scratch.start_rotations[pair.bodies.second];
+  const Vec3& b_half_size = context.models[pair.bodies.second].half_size;
   const PairStamp& then = before.stamp;
   if (!then.valid) return false;
   const Vec3 moved = a_rotation.transpose() * (b.position() - a.position()) - then.offset;
@@ -86,102 +91,96 @@ bool reuse(const PairContact& before, const BodyState& a, const Mat3& a_rotation
   for (int k = 0; k < pair.manifold.count; ++k) {
     PairPoint& point = pair.manifold.points[static_cast<std::size_t>(k)];
     // The two anchors were one point when the manifold was found.
-    const Vec3 apart =
-        world_point(b, b_rotation, point.point_b) - world_point(a, a_rotation, point.point_a);
+    const Vec3 apart = world_point({b.position(), b_rotation}, point.point_b) -
+                       world_point({a.position(), a_rotation}, point.point_a);
     point.separation = then.separation[static_cast<std::size_t>(k)] + n.dot(apart);
   }
   return true;
 }
 
-// Into contacts.found: the touching pairs of colliding bodies, with their manifolds at the start
+// Into scratch.found: the touching pairs of colliding bodies, with their manifolds at the start
 // of the step and the last step's impulses of the same features.
-void find_pairs(std::span<const BodyModel> models, std::span<const BodyState> in,
-                WorldContacts& contacts) {
-  contacts.found.clear();
-  contacts.colliders.clear();
+void find_pairs(const StepContext& context) {
+  StepScratch& scratch = context.scratch;
+  const std::span<const BodyModel> models = context.models;
+  const std::span<const BodyState> in = context.in;
+  scratch.found.clear();
+  scratch.colliders.clear();
   for (std::uint32_t i = 0; i < in.size(); ++i) {
-    if (models[i].collides) contacts.colliders.push_back(i);
+    if (models[i].collides) scratch.colliders.push_back(i);
   }
-  if (contacts.colliders.size() < 2) return;
-  contacts.start_rotations.resize(in.size());
-  contacts.bounds.clear();
-  for (const std::uint32_t i : contacts.colliders) {
-    contacts.start_rotations[i] = in[i].rotation();
-    const PlaneAdvance& advance = contacts.advances[i];
+  if (scratch.colliders.size() < 2) return;
+  scratch.start_rotations.resize(in.size());
+  scratch.bounds.clear();
+  for (const std::uint32_t i : scratch.colliders) {
+    scratch.start_rotations[i] = in[i].rotation();
+    const PlaneAdvance& advance = scratch.advances[i];
     const Mat3 end_rotation = advance.touching ? advance.rotation : advance.end.rotation();
-    contacts.bounds.push_back(merged(
-        box_bounds(in[i].position(), contacts.start_rotations[i], models[i].half_size,
+    scratch.bounds.push_back(merged(
+        box_bounds(in[i].position(), scratch.start_rotations[i], models[i].half_size,
                    kTouchingDistance),
         box_bounds(advance.end.position(), end_rotation, models[i].half_size, kTouchingDistance)));
   }
-  overlapping_pairs(contacts.bounds, contacts.order, contacts.candidates);
-  std::size_t previous = 0;  // contacts.pairs is sorted as the candidates are: merge, not search
-  for (const BodyPair& candidate : contacts.candidates) {
-    const std::uint32_t a = contacts.colliders[candidate.first];
-    const std::uint32_t b = contacts.colliders[candidate.second];
+  overlapping_pairs(scratch.bounds, scratch.order, scratch.candidates);
+  const std::vector<PairContact>& last = context.memory.pairs;
+  std::size_t previous = 0;  // the last step's pairs are sorted as the candidates are: merge
+  for (const BodyPair& candidate : scratch.candidates) {
+    const std::uint32_t a = scratch.colliders[candidate.first];
+    const std::uint32_t b = scratch.colliders[candidate.second];
     const BodyPair bodies{a, b};
-    while (previous < contacts.pairs.size() && contacts.pairs[previous].bodies < bodies) {
-      ++previous;
-    }
+    while (previous < last.size() && last[previous].bodies < bodies) ++previous;
     const PairContact* before =
-        previous < contacts.pairs.size() && contacts.pairs[previous].bodies == bodies
-            ? &contacts.pairs[previous]
-            : nullptr;
+        previous < last.size() && last[previous].bodies == bodies ? &last[previous] : nullptr;
     // Speculative points as far as the two can close on each other in the step.
-    const double margin = kTouchingDistance + contacts.reaches[a] + contacts.reaches[b];
+    const double margin = kTouchingDistance + scratch.reaches[a] + scratch.reaches[b];
     PairContact pair;
     pair.bodies = bodies;
-    if (before && reuse(*before, in[a], contacts.start_rotations[a], in[b],
-                        contacts.start_rotations[b], models[b].half_size, margin, pair)) {
-      contacts.found.push_back(pair);
+    if (before && reuse(context, *before, margin, pair)) {
+      scratch.found.push_back(pair);
       continue;
     }
     pair.manifold = box_box_manifold(
-        pose_of(in[a], contacts.start_rotations[a], models[a].half_size),
-        pose_of(in[b], contacts.start_rotations[b], models[b].half_size), margin + kReuseDistance);
+        pose_of(in[a], scratch.start_rotations[a], models[a].half_size),
+        pose_of(in[b], scratch.start_rotations[b], models[b].half_size), margin + kReuseDistance);
     if (pair.manifold.count == 0) continue;
-    stamp(in[a], contacts.start_rotations[a], in[b], margin + kReuseDistance, pair);
+    stamp(context, margin + kReuseDistance, pair);
     if (before) {
       pair.manifold.friction = before->manifold.friction;
-      for (int k = 0; k < pair.manifold.count; ++k) {
-        PairPoint& now = pair.manifold.points[static_cast<std::size_t>(k)];
-        for (int j = 0; j < before->manifold.count; ++j) {
-          const PairPoint& then = before->manifold.points[static_cast<std::size_t>(j)];
-          if (then.feature == now.feature) now.impulses = then.impulses;
-        }
-      }
+      keep_impulses(pair.manifold, before->manifold);
     }
-    contacts.found.push_back(pair);
+    scratch.found.push_back(pair);
   }
 }
 
-// Into contacts.island_of: each body's island (kNone for a body touching nothing), numbered in
+// Into scratch.island_of: each body's island (kNone for a body touching nothing), numbered in
 // the order of their lowest bodies, so the solve's order depends on body order alone.
-int group_islands(std::size_t body_count, WorldContacts& contacts) {
-  contacts.root.resize(body_count);
-  for (std::uint32_t i = 0; i < body_count; ++i) contacts.root[i] = i;
-  for (const PairContact& pair : contacts.found) {
-    const std::uint32_t a = find_root(contacts.root, pair.bodies.first);
-    const std::uint32_t b = find_root(contacts.root, pair.bodies.second);
-    if (a != b) contacts.root[std::max(a, b)] = std::min(a, b);
+int group_islands(const StepContext& context) {
+  const std::size_t body_count = context.in.size();
+  StepScratch& scratch = context.scratch;
+  scratch.root.resize(body_count);
+  for (std::uint32_t i = 0; i < body_count; ++i) scratch.root[i] = i;
+  for (const PairContact& pair : scratch.found) {
+    const std::uint32_t a = find_root(scratch.root, pair.bodies.first);
+    const std::uint32_t b = find_root(scratch.root, pair.bodies.second);
+    if (a != b) scratch.root[std::max(a, b)] = std::min(a, b);
   }
-  contacts.island_of.assign(body_count, kNone);
-  std::vector<std::uint32_t>& number_of_root = contacts.local;  // reused as scratch here
+  scratch.island_of.assign(body_count, kNone);
+  std::vector<std::uint32_t>& number_of_root = scratch.local;  // reused as scratch here
   number_of_root.assign(body_count, kNone);
   int islands = 0;
-  std::vector<char>& paired = contacts.paired;
+  std::vector<char>& paired = scratch.paired;
   paired.assign(body_count, 0);
-  for (const PairContact& pair : contacts.found) {
+  for (const PairContact& pair : scratch.found) {
     paired[pair.bodies.first] = paired[pair.bodies.second] = 1;
   }
   for (std::uint32_t i = 0; i < body_count; ++i) {
-    if (!contacts.advances[i].touching && !paired[i]) continue;
-    const std::uint32_t r = find_root(contacts.root, i);
+    if (!scratch.advances[i].touching && !paired[i]) continue;
+    const std::uint32_t r = find_root(scratch.root, i);
     if (number_of_root[r] == kNone) number_of_root[r] = static_cast<std::uint32_t>(islands++);
-    contacts.island_of[i] = number_of_root[r];
+    scratch.island_of[i] = number_of_root[r];
   }
   // Bodies and pairs by island, each in its own order (a counting sort, which is stable).
-  std::vector<std::uint32_t>& next = contacts.next_slot;
+  std::vector<std::uint32_t>& next = scratch.next_slot;
   const auto bucket = [islands, &next](std::size_t count, auto island_of_item,
                                        std::vector<std::uint32_t>& offsets,
                                        std::vector<std::uint32_t>& items) {
@@ -197,12 +196,12 @@ int group_islands(std::size_t body_count, WorldContacts& contacts) {
     }
   };
   bucket(
-      body_count, [&](std::uint32_t k) { return contacts.island_of[k]; }, contacts.member_offsets,
-      contacts.members);
+      body_count, [&](std::uint32_t k) { return scratch.island_of[k]; }, scratch.member_offsets,
+      scratch.members);
   bucket(
-      contacts.found.size(),
-      [&](std::uint32_t k) { return contacts.island_of[contacts.found[k].bodies.first]; },
-      contacts.pair_offsets, contacts.pair_order);
+      scratch.found.size(),
+      [&](std::uint32_t k) { return scratch.island_of[scratch.found[k].bodies.first]; },
+      scratch.pair_offsets, scratch.pair_order);
   return islands;
 }
 
@@ -216,18 +215,18 @@ int group_islands(std::size_t body_count, WorldContacts& contacts) {
 // than kRefindReach in the step, for only the sub-steps find fast pairs' points again. Its points
 // are counted as its pairs' and four for each body touching a plane.
 constexpr int kConvergedPasses = 100;
-bool converges(std::uint32_t island, const WorldContacts& contacts) {
+bool converges(const StepContext& context, std::uint32_t island) {
+  const StepScratch& scratch = context.scratch;
   std::size_t points = 0;
-  for (std::uint32_t k = contacts.pair_offsets[island]; k < contacts.pair_offsets[island + 1];
-       ++k) {
-    const PairContact& pair = contacts.found[contacts.pair_order[k]];
+  for (std::uint32_t k = scratch.pair_offsets[island]; k < scratch.pair_offsets[island + 1]; ++k) {
+    const PairContact& pair = scratch.found[scratch.pair_order[k]];
     const auto [a, b] = pair.bodies;
-    if (contacts.reaches[a] + contacts.reaches[b] > kRefindReach) return false;
+    if (scratch.reaches[a] + scratch.reaches[b] > kRefindReach) return false;
     points += static_cast<std::size_t>(pair.manifold.count);
   }
-  for (std::uint32_t k = contacts.member_offsets[island]; k < contacts.member_offsets[island + 1];
+  for (std::uint32_t k = scratch.member_offsets[island]; k < scratch.member_offsets[island + 1];
        ++k) {
-    if (contacts.advances[contacts.members[k]].touching) points += kMaxManifoldPoints;
+    if (scratch.advances[scratch.members[k]].touching) points += kMaxManifoldPoints;
   }
   return solver_passes(points) >= kConvergedPasses;
 }
@@ -248,31 +247,30 @@ bool can_sleep(const BodyModel& model) {
   });
 }
 
-bool island_asleep(std::uint32_t island, const WorldContacts& contacts) {
-  const auto members = members_of(island, contacts);
+bool island_asleep(const StepContext& context, std::uint32_t island) {
+  const auto members = members_of(island, context.scratch);
   return std::all_of(members.begin(), members.end(),
-                     [&](std::uint32_t i) { return contacts.asleep[i] != 0; });
+                     [&](std::uint32_t i) { return context.memory.asleep[i] != 0; });
 }
 
 // Wakes the sleeping bodies of every island that has a body awake in it, each with its free step
 // and its reach now; returns whether any woke.
-bool wake_touched(Integrator integrator, std::span<const BodyModel> models,
-                  std::span<const BodyState> in, double t, double dt,
-                  const std::vector<Plane>& planes, const ContactSettings& settings, int islands,
-                  WorldContacts& contacts) {
+bool wake_touched(const StepContext& context, int islands) {
+  ContactMemory& memory = context.memory;
+  StepScratch& scratch = context.scratch;
   bool woke = false;
   for (std::uint32_t island = 0; island < static_cast<std::uint32_t>(islands); ++island) {
-    const auto members = members_of(island, contacts);
+    const auto members = members_of(island, scratch);
     const bool some_awake = std::any_of(members.begin(), members.end(),
-                                        [&](std::uint32_t i) { return !contacts.asleep[i]; });
-    if (!some_awake || island_asleep(island, contacts)) continue;
+                                        [&](std::uint32_t i) { return !memory.asleep[i]; });
+    if (!some_awake || island_asleep(context, island)) continue;
     for (const std::uint32_t i : members) {
-      if (!contacts.asleep[i]) continue;
-      contacts.asleep[i] = 0;
-      contacts.still_for[i] = 0.0;
-      contacts.advances[i] = advance_among_planes(integrator, models[i], in[i], t, dt, planes,
-                                                  settings, contacts.planes[i]);
-      contacts.reaches[i] = reach(in[i], contacts.advances[i].end, models[i].half_size, dt);
+      if (!memory.asleep[i]) continue;
+      memory.asleep[i] = 0;
+      memory.still_for[i] = 0.0;
+      advance_among_planes(context, i);
+      scratch.reaches[i] =
+          reach(context.in[i], scratch.advances[i].end, context.models[i].half_size, context.dt);
       woke = true;
     }
   }
@@ -292,64 +290,87 @@ bool still_long_enough(const BodyModel& model, const BodyState& end, double dt, 
   return still_for >= kTimeToSleep && can_sleep(model);
 }
 
-// Puts the body to sleep at rest where it stands.
-void fall_asleep(const BodyModel& model, std::size_t i, WorldContacts& contacts,
-                 std::span<BodyState> out) {
-  PrimaryState rest = out[i].primary();
+// Puts body i to sleep at rest where it stands.
+void fall_asleep(const StepContext& context, std::uint32_t i) {
+  PrimaryState rest = context.out[i].primary();
   rest.momentum.setZero();
   rest.angular_momentum.setZero();
-  out[i] = BodyState(rest, model.constants);
-  contacts.asleep[i] = 1;
+  context.out[i] = BodyState(rest, context.models[i].constants);
+  context.memory.asleep[i] = 1;
 }
 
 // After the islands' solves: each awake body's time still, and an island whose bodies have all
 // been still for kTimeToSleep (and may sleep) put to sleep at rest where it stands.
-void settle(std::span<const BodyModel> models, double dt, int islands, WorldContacts& contacts,
-            std::span<BodyState> out) {
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (contacts.island_of[i] == kNone) contacts.still_for[i] = 0.0;
+void settle(const StepContext& context, int islands) {
+  std::vector<double>& still_for = context.memory.still_for;
+  for (std::size_t i = 0; i < context.out.size(); ++i) {
+    if (context.scratch.island_of[i] == kNone) still_for[i] = 0.0;
   }
   for (std::uint32_t island = 0; island < static_cast<std::uint32_t>(islands); ++island) {
-    if (island_asleep(island, contacts)) continue;
-    const auto members = members_of(island, contacts);
+    if (island_asleep(context, island)) continue;
+    const auto members = members_of(island, context.scratch);
     bool sleeps = true;
     for (const std::uint32_t i : members) {
-      sleeps = still_long_enough(models[i], out[i], dt, contacts.still_for[i]) && sleeps;
+      sleeps =
+          still_long_enough(context.models[i], context.out[i], context.dt, still_for[i]) && sleeps;
     }
     if (!sleeps) continue;
-    for (const std::uint32_t i : members) fall_asleep(models[i], i, contacts, out);
+    for (const std::uint32_t i : members) fall_asleep(context, i);
   }
 }
 
 // step_world for a world in which no two bodies can touch: each body's step among the planes
-// (step_with_planes), and its sleep, exactly as its island of one would have them.
-void step_bodies_alone(Integrator integrator, std::span<const BodyModel> models,
-                       std::span<const BodyState> in, double t, double dt,
-                       const std::vector<Plane>& planes, const ContactSettings& settings,
-                       WorldContacts& contacts, std::span<BodyState> out) {
-  contacts.planes.resize(in.size());
-  contacts.pairs.clear();
-  for (std::size_t i = 0; i < in.size(); ++i) {
-    if (contacts.asleep[i]) {  // nothing can wake it: only another body could
-      out[i] = in[i];
+// (step_among_planes), and its sleep, exactly as its island of one would have them.
+void step_bodies_alone(const StepContext& context) {
+  ContactMemory& memory = context.memory;
+  memory.pairs.clear();
+  for (std::uint32_t i = 0; i < context.in.size(); ++i) {
+    if (memory.asleep[i]) {  // nothing can wake it: only another body could
+      context.out[i] = context.in[i];
       continue;
     }
     bool touching = false;
-    if (planes.empty()) {
-      out[i] = step(integrator, models[i], in[i], t, dt);
+    if (context.planes.empty()) {
+      context.out[i] =
+          step(context.integrator, context.models[i], context.in[i], context.t, context.dt);
     } else {
-      PlaneAdvance advance = advance_among_planes(integrator, models[i], in[i], t, dt, planes,
-                                                  settings, contacts.planes[i]);
-      touching = advance.touching;
-      out[i] = touching ? rest_on_planes(integrator, models[i], advance, planes, settings,
-                                         contacts.planes[i])
-                        : std::move(advance.end);
+      touching = step_among_planes(context, i);
     }
-    if (!settings.sleep) continue;
+    if (!context.settings.sleep) continue;
     if (!touching) {
-      contacts.still_for[i] = 0.0;
-    } else if (still_long_enough(models[i], out[i], dt, contacts.still_for[i])) {
-      fall_asleep(models[i], i, contacts, out);
+      memory.still_for[i] = 0.0;
+    } else if (still_long_enough(context.models[i], context.out[i], context.dt,
+                                 memory.still_for[i])) {
+      fall_asleep(context, i);
+    }
+  }
+}
+
+// Every per-body list of the memory and the scratch sized to the world's bodies.
+void size_for(std::size_t bodies, WorldContacts& contacts) {
+  contacts.memory.asleep.resize(bodies, 0);
+  contacts.memory.still_for.resize(bodies, 0.0);
+  contacts.memory.planes.resize(bodies);
+  contacts.scratch.advances.resize(bodies);
+  contacts.scratch.separations.resize(bodies);
+  contacts.scratch.reaches.resize(bodies);
+}
+
+// The islands' solves: asleep, a body alone on planes, converged or sub-stepped.
+void solve_islands(const StepContext& context, int islands) {
+  const StepScratch& scratch = context.scratch;
+  for (std::uint32_t k = 0; k < static_cast<std::uint32_t>(islands); ++k) {
+    if (island_asleep(context, k)) {
+      for (const std::uint32_t i : members_of(k, scratch)) context.out[i] = context.in[i];
+    } else if (scratch.pair_offsets[k] == scratch.pair_offsets[k + 1]) {
+      // One body touching planes alone: its impacts were at their times; it rests as it would
+      // with no other body in the world.
+      const std::uint32_t i = scratch.members[scratch.member_offsets[k]];
+      context.out[i] = rest_on_planes(context, i);
+    } else if (converges(context, k)) {
+      solve_converged(context, k);
+    } else {
+      solve_substepped(context, k);
     }
   }
 }
@@ -366,45 +387,50 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t, double dt,
                 const std::vector<Plane>& planes, const ContactSettings& settings,
                 WorldContacts& contacts, std::span<BodyState> out) {
-  contacts.asleep.resize(in.size(), 0);
-  contacts.still_for.resize(in.size(), 0.0);
+  size_for(in.size(), contacts);
+  const StepContext context{.integrator = integrator,
+                            .models = models,
+                            .in = in,
+                            .t = t,
+                            .dt = dt,
+                            .planes = planes,
+                            .settings = settings,
+                            .memory = contacts.memory,
+                            .scratch = contacts.scratch,
+                            .out = out};
   if (!pairs_possible(models, settings)) {
-    step_bodies_alone(integrator, models, in, t, dt, planes, settings, contacts, out);
+    step_bodies_alone(context);
     return;
   }
-  advance_bodies(integrator, models, in, t, dt, planes, settings, contacts);
-  contacts.reaches.resize(in.size());
+  advance_bodies(context);
+  StepScratch& scratch = contacts.scratch;
   for (std::size_t i = 0; i < in.size(); ++i) {
-    contacts.reaches[i] = reach(in[i], contacts.advances[i].end, models[i].half_size, dt);
+    scratch.reaches[i] = reach(in[i], scratch.advances[i].end, models[i].half_size, dt);
   }
   int islands = 0;
   do {  // again while bodies woke: what they touch now may be asleep too
-    contacts.found.clear();
-    if (settings.collide_bodies) find_pairs(models, in, contacts);
-    islands = group_islands(in.size(), contacts);
-  } while (settings.sleep &&
-           wake_touched(integrator, models, in, t, dt, planes, settings, islands, contacts));
+    scratch.found.clear();
+    if (settings.collide_bodies) find_pairs(context);
+    islands = group_islands(context);
+  } while (settings.sleep && wake_touched(context, islands));
   for (std::size_t i = 0; i < in.size(); ++i) {
-    if (contacts.island_of[i] == kNone) out[i] = std::move(contacts.advances[i].end);
+    if (scratch.island_of[i] == kNone) out[i] = std::move(scratch.advances[i].end);
   }
-  for (int island = 0; island < islands; ++island) {
-    const auto k = static_cast<std::uint32_t>(island);
-    if (island_asleep(k, contacts)) {
-      for (const std::uint32_t i : members_of(k, contacts)) out[i] = in[i];
-    } else if (contacts.pair_offsets[k] == contacts.pair_offsets[k + 1]) {
-      // One body touching planes alone: its impacts were at their times; it rests as it would
-      // with no other body in the world.
-      const std::uint32_t i = contacts.members[contacts.member_offsets[k]];
-      out[i] = rest_on_planes(integrator, models[i], contacts.advances[i], planes, settings,
-                              contacts.planes[i]);
-    } else if (converges(k, contacts)) {
-      solve_converged(integrator, models, in, dt, k, planes, settings, contacts, out);
-    } else {
-      solve_substepped(integrator, models, in, t, dt, k, planes, settings, contacts, out);
-    }
-  }
-  if (settings.sleep) settle(models, dt, islands, contacts, out);
-  contacts.pairs.swap(contacts.found);
+  solve_islands(context, islands);
+  if (settings.sleep) settle(context, islands);
+  contacts.memory.pairs.swap(scratch.found);
+}
+
+BodyState step_with_planes(Integrator integrator, const BodyModel& model, const BodyState& in,
+                           double t, double dt, const std::vector<Plane>& planes,
+                           const ContactSettings& settings, WorldContacts& contacts) {
+  // A world of this body alone, which does not sleep.
+  ContactSettings alone = settings;
+  alone.collide_bodies = false;
+  alone.sleep = false;
+  BodyState out;
+  step_world(integrator, {&model, 1}, {&in, 1}, t, dt, planes, alone, contacts, {&out, 1});
+  return out;
 }
 
 }  // namespace tumble::physics

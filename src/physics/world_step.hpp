@@ -7,11 +7,8 @@
 #include <span>
 #include <vector>
 
-#include "physics/box_box.hpp"
-#include "physics/broad_phase.hpp"
-#include "physics/contact_island.hpp"
 #include "physics/plane_contact_step.hpp"
-#include "physics/substep_island.hpp"
+#include "physics/step_context.hpp"
 
 namespace tumble::physics {
 
@@ -40,81 +37,6 @@ inline constexpr double kReuseDistance = 1e-4;
 inline constexpr double kSleepSpeed = 5e-3;  // m/s: |v| + |ω| × half diagonal
 inline constexpr double kTimeToSleep = 0.5;  // s
 
-// Where a pair's bodies stood when its manifold was found by the narrow phase, and what with: a
-// later step whose bodies have moved less than kReuseDistance relative to each other since keeps
-// its points (world_step.cpp).
-struct PairStamp {
-  bool valid = false;
-  Vec3 offset = Vec3::Zero();    // B's centre relative to A's, A's body frame (m)
-  Quat turn = Quat::Identity();  // B's orientation relative to A's
-  Vec3 normal = Vec3::Zero();    // the manifold's normal, A's body frame
-  double margin = 0.0;           // the narrow phase's (m)
-  std::array<double, kMaxManifoldPoints> separation{};  // each point's then (m)
-};
-
-// Two bodies touching: their manifold, found at the start of the step.
-struct PairContact {
-  BodyPair bodies;        // (A, B), A < B: the manifold's A and B
-  PairManifold manifold;  // its points' impulses warm-start the next step's
-  PairStamp stamp;
-};
-
-// A pair's place in an island's lists (island_solve.cpp): its points in `slots` slots from
-// `first`, its friction patch, and how far its bodies can close on each other in the step.
-struct PairRows {
-  std::uint32_t pair = 0;   // index into WorldContacts::found
-  std::uint32_t first = 0;  // of its points (and positions)
-  std::uint32_t slots = 0;
-  std::uint32_t patch = 0;
-  double reach = 0.0;  // m
-};
-
-// A body's place against one plane in a fast island's lists (island_solve.cpp): kMaxManifoldPoints
-// slots from `first`, and its friction patch, found again at each sub-step.
-struct PlaneRows {
-  std::uint32_t body = 0;   // the body's index in the world
-  std::uint32_t plane = 0;  // index into the planes
-  std::uint32_t first = 0;  // of its points (and positions)
-  std::uint32_t patch = 0;
-};
-
-// What the world step keeps between steps (warm starting), and scratch space kept so that a
-// warm step allocates little.
-struct WorldContacts {
-  std::vector<PlaneContacts> planes;  // per body
-  std::vector<PairContact> pairs;     // of the last step, sorted by bodies
-  // Scratch.
-  std::vector<PlaneAdvance> advances;  // per body
-  std::vector<double> reaches;         // per body: how far it can move towards anything (m)
-  std::vector<Mat3> start_rotations;   // per body
-  std::vector<std::uint32_t> colliders;
-  std::vector<Bounds> bounds;
-  std::vector<std::uint32_t> order;
-  std::vector<BodyPair> candidates;
-  std::vector<PairContact> found;
-  std::vector<std::uint32_t> root;                      // union-find over bodies
-  std::vector<std::uint32_t> local;                     // a body's index within its island
-  std::vector<std::uint32_t> island_of;                 // per body: its island, or none
-  std::vector<char> paired;                             // per body: whether it touches another
-  std::vector<std::uint32_t> members, member_offsets;   // bodies by island
-  std::vector<std::uint32_t> pair_order, pair_offsets;  // indices into `found` by island
-  std::vector<std::uint32_t> next_slot;                 // per island, while bucketing
-  std::vector<IslandBody> island_bodies;
-  std::vector<BodyState> island_out;
-  std::vector<ProjectedPose> poses;  // of a converged island's projection
-  std::vector<SubstepBody> substep_bodies;
-  std::vector<SolverBody> solver;
-  std::vector<ContactConstraint> points;
-  std::vector<PositionPoint> positions;
-  std::vector<FrictionPatch> patches;
-  SubstepScratch substep;
-  std::vector<PairRows> rows;         // of the island's pairs found again at each sub-step
-  std::vector<PlaneRows> plane_rows;  // of a fast island's bodies near planes, likewise
-  // Sleeping, per body: how long it has been still in an island (s), and whether it sleeps.
-  std::vector<double> still_for;
-  std::vector<char> asleep;
-};
-
 // Whether two of the bodies can touch each other: both collide (BodyModel::collides), and
 // settings.collide_bodies. If not, every body touching planes is an island of its own.
 bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& settings);
@@ -132,7 +54,7 @@ bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& se
 // exactly each body's free step. A world in which no two bodies can touch (fewer than two that
 // collide, or settings.collide_bodies false) steps each body alone among the planes, as its
 // island of one would be, with no broad phase and no islands: a scene of one box pays for
-// neither.
+// neither. `contacts` carries the world's ContactMemory from step to step, and its scratch.
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t /* s */, double dt /* s */,
                 const std::vector<Plane>& planes, const ContactSettings& settings,

@@ -98,8 +98,8 @@ TEST(WorldStep, APairThatBarelyMovedKeepsItsPointsAndMeasuresThemAnew) {
     const std::vector<BodyState> start = states;
     step_world(Integrator::rk4, models, states, n * kStep, kStep, {}, settings, contacts, next);
     states.swap(next);
-    ASSERT_EQ(contacts.pairs.size(), 1u);
-    const PairManifold& used = contacts.pairs[0].manifold;
+    ASSERT_EQ(contacts.memory.pairs.size(), 1u);
+    const PairManifold& used = contacts.memory.pairs[0].manifold;
     const auto pose = [&](const BodyState& s) {
       return BoxPose{
           .position = s.position(), .rotation = s.rotation(), .half_size = cube.half_size};
@@ -311,7 +311,7 @@ struct World {
     time += kStep;
   }
   bool asleep(std::size_t body) const {
-    return body < contacts.asleep.size() && contacts.asleep[body] != 0;
+    return body < contacts.memory.asleep.size() && contacts.memory.asleep[body] != 0;
   }
 };
 
@@ -350,11 +350,11 @@ TEST(WorldStep, AStillBoxSleepsAndABoxLandingOnItWakesIt) {
     }
     // Now the same cube, as it stands, with the other one above it falling.
     world.states[0] = alone.states[0];
-    world.contacts.asleep = alone.contacts.asleep;
-    world.contacts.asleep.resize(2, 0);
-    world.contacts.still_for = alone.contacts.still_for;
-    world.contacts.still_for.resize(2, 0.0);
-    world.contacts.planes = alone.contacts.planes;
+    world.contacts.memory.asleep = alone.contacts.memory.asleep;
+    world.contacts.memory.asleep.resize(2, 0);
+    world.contacts.memory.still_for = alone.contacts.memory.still_for;
+    world.contacts.memory.still_for.resize(2, 0.0);
+    world.contacts.memory.planes = alone.contacts.memory.planes;
     double woke_at = -1.0;                             // s
     const double landing = std::sqrt(2.0 * 1.5 / kG);  // s: the 1.5 m fall to the lower's top
     while (world.time < 4.0) {
