@@ -28,10 +28,12 @@ std::unique_ptr<Renderer> make_renderer() {
   RenderSettings settings;  // 1280 × 720, edge filter, ground and shadows
   settings.font = std::string(kDefaultFontFamily);
   settings.overlays = true;
-  std::string error;
-  auto renderer = Renderer::create(settings, kShaders, error);
-  if (!renderer) std::fprintf(stderr, "render_bench: %s\n", error.c_str());
-  return renderer;
+  tumble::Result<std::unique_ptr<Renderer>> renderer = Renderer::create(settings, kShaders);
+  if (!renderer) {
+    std::fprintf(stderr, "render_bench: %s\n", renderer.error().c_str());
+    return nullptr;
+  }
+  return std::move(renderer).value();
 }
 
 // The cube turning frame by frame, as in scenes/spinning_cube.toml.

@@ -47,10 +47,11 @@ std::string step_label(double dt) {
 // Writes a file atomically with `write` filling it; on failure prints why and returns false.
 bool write_file(const fs::path& path, const std::function<void(std::FILE*)>& write,
                 std::FILE* err) {
-  io::AtomicFile file(path.string());
-  if (file.ok()) write(file.stream());
-  if (!file.ok() || !file.commit()) {
-    std::fprintf(err, "tumble: %s\n", file.error().c_str());
+  Result<io::AtomicFile> file = io::AtomicFile::open(path.string());
+  if (file) write(file->stream());
+  if (const Result<void> written = file ? file->commit() : Result<void>(Error{file.error()});
+      !written) {
+    std::fprintf(err, "tumble: %s\n", written.error().c_str());
     return false;
   }
   return true;
@@ -326,7 +327,8 @@ int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std:
     return kExitBadInput;
   }
   // The sweep takes over a minute: find an unwritable folder before it, not after.
-  if (io::AtomicFile probe((directory / ".tumble-write-test").string()); !probe.ok()) {
+  if (const auto probe = io::AtomicFile::open((directory / ".tumble-write-test").string());
+      !probe) {
     std::fprintf(err, "tumble: %s\n", probe.error().c_str());
     return kExitBadInput;
   }

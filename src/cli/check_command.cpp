@@ -10,12 +10,12 @@
 namespace tumble::cli {
 
 int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err) {
-  const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
-  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
-    std::fprintf(err, "tumble: %s\n", error->message.c_str());
+  const Result<scene::Scene> loaded = scene::load_scene_file(options.scene_path);
+  if (!loaded) {
+    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
     return kExitBadInput;
   }
-  const scene::Scene& scene = std::get<scene::Scene>(loaded);
+  const scene::Scene& scene = *loaded;
   const std::vector<std::string> warnings = scene::stability_warnings(scene);
   for (const std::string& line : warnings) std::fprintf(out, "tumble: warning: %s\n", line.c_str());
   const std::size_t bodies = scene.bodies.size();

@@ -119,8 +119,9 @@ std::string joined_report(const std::vector<job::ChunkReport>& chunks, const fs:
 // Why the video segment at `path` does not hold exactly `frames`, the frames its chunk's report
 // says it holds (a WebM's index does not count its frames, so a copy cut short shows here), or "".
 std::string segment_problem(const std::string& path, const job::FrameRange& frames) {
-  const io::VideoSegmentInfo info = io::read_segment_info(path);
-  if (!info.error.empty()) return info.error;
+  const Result<io::VideoSegmentInfo> read = io::read_segment_info(path);
+  if (!read) return read.error();
+  const io::VideoSegmentInfo& info = *read;
   if (info.first_frame != frames.first || info.first_frame + info.frames != frames.end) {
     return path + ": holds frames " +
            job::range_text({info.first_frame, info.first_frame + info.frames}) +
@@ -144,11 +145,13 @@ std::string write_joined(const std::vector<job::ChunkReport>& chunks, const fs::
         return error;
       }
     }
-    if (std::string error = io::join_videos(segments, (staging / name).string()); !error.empty()) {
-      return error;
+    if (Result<void> joined = io::join_videos(segments, (staging / name).string()); !joined) {
+      return joined.error();
     }
   }
-  return io::write_file_atomically((staging / "report.json").string(), joined_report(chunks, out));
+  const Result<void> written =
+      io::write_file_atomically((staging / "report.json").string(), joined_report(chunks, out));
+  return written ? "" : written.error();
 }
 
 }  // namespace
@@ -166,12 +169,12 @@ int run_join(const JoinOptions& options, std::FILE* err) {
     std::fprintf(err, "tumble: join: %s\n", problem.c_str());
     return kExitBadInput;
   }
-  io::StagedDirectory staged(folder.string());
-  if (!staged.ok()) {
+  Result<io::StagedDirectory> staged = io::StagedDirectory::create(folder.string());
+  if (!staged) {
     std::fprintf(err, "tumble: join: %s\n", staged.error().c_str());
     return kExitBadInput;
   }
-  std::string error = write_joined(*chunks, staged.path(), folder);
+  std::string error = write_joined(*chunks, staged->path(), folder);
   if (const int signal = sys::interrupt_signal()) {
     std::fprintf(err, "tumble: join stopped by %s; %s was left as it was\n",
                  sys::signal_name(signal), folder.c_str());
@@ -179,13 +182,15 @@ int run_join(const JoinOptions& options, std::FILE* err) {
   }
   // Checked again: the folder may have been made or filled while the chunks were copied.
   if (error.empty()) error = output_problem(folder, *chunks);
-  if (error.empty() && !staged.commit()) error = staged.error();
+  if (error.empty()) {
+    if (const Result<void> committed = staged->commit(); !committed) error = committed.error();
+  }
   if (!error.empty()) {
     std::fprintf(err, "tumble: join: %s; %s was left as it was\n", error.c_str(), folder.c_str());
     return kExitBadInput;
   }
-  if (!staged.leftover().empty())
-    std::fprintf(err, "tumble: warning: %s\n", staged.leftover().c_str());
+  if (!staged->leftover().empty())
+    std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
   if (!options.quiet) {
     std::fprintf(err, "tumble: joined %zu chunks, frames 0:%lld -> %s\n", chunks->size(),
                  static_cast<long long>(chunks->front().scene_frames), folder.c_str());

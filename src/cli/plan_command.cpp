@@ -31,14 +31,13 @@ int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err) {
     std::fputs("tumble: plan: give --chunks N or --chunk-frames K\n", err);
     return kExitBadInput;
   }
-  const scene::SceneOrError loaded = scene::load_scene_file(options.render.scene_path);
-  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
-    std::fprintf(err, "tumble: %s\n", error->message.c_str());
+  const Result<scene::Scene> loaded = scene::load_scene_file(options.render.scene_path);
+  if (!loaded) {
+    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
     return kExitBadInput;
   }
   // The overrides render takes, so that plan and render count the same frames.
-  const Result<scene::Scene> scene =
-      job::scene_as_rendered(std::get<scene::Scene>(loaded), options.render);
+  const Result<scene::Scene> scene = job::scene_as_rendered(*loaded, options.render);
   if (!scene) {
     std::fprintf(err, "tumble: %s\n", scene.error().c_str());
     return kExitBadInput;

@@ -148,12 +148,12 @@ int run_render(const job::RenderOptions& options,
     std::fprintf(err, "tumble: %s\n", text.error().c_str());
     return kExitBadInput;
   }
-  const scene::SceneOrError loaded = scene::parse_scene(*text, options.scene_path);
-  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
-    std::fprintf(err, "tumble: %s\n", error->message.c_str());
+  const Result<scene::Scene> loaded = scene::parse_scene(*text, options.scene_path);
+  if (!loaded) {
+    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
     return kExitBadInput;
   }
-  Result<job::RenderJob> made = job::make_render_job(std::get<scene::Scene>(loaded), options);
+  Result<job::RenderJob> made = job::make_render_job(*loaded, options);
   if (!made) {
     std::fprintf(err, "tumble: %s\n", made.error().c_str());
     return kExitBadInput;
@@ -175,12 +175,12 @@ int run_render(const job::RenderOptions& options,
     std::fprintf(err, "tumble: %s\n", problem.c_str());
     return kExitBadInput;
   }
-  io::StagedDirectory staged(job.directory.string());
-  if (!staged.ok()) {
+  Result<io::StagedDirectory> staged = io::StagedDirectory::create(job.directory.string());
+  if (!staged) {
     std::fprintf(err, "tumble: %s\n", staged.error().c_str());
     return kExitBadInput;
   }
-  const fs::path staging = staged.path();
+  const fs::path staging = staged->path();
   const std::int64_t count = job.end - job.first;
   pipeline::Progress progress(count, options.quiet, err);
   const job::RenderResult result = job::render_scene(
@@ -211,18 +211,21 @@ int run_render(const job::RenderOptions& options,
   }
 
   const double total_seconds = seconds_since(start);
-  std::string error = io::write_file_atomically((staging / "report.json").string(),
-                                                report_json(job, result, total_seconds));
+  const Result<void> written = io::write_file_atomically((staging / "report.json").string(),
+                                                         report_json(job, result, total_seconds));
+  std::string error = written ? "" : written.error();
   // Checked again: the folder may have been made or filled while the frames were drawn.
   if (error.empty()) error = job::replace_problem(job.output_root, job.scene.output.directory);
-  if (error.empty() && !staged.commit()) error = staged.error();
+  if (error.empty()) {
+    if (const Result<void> committed = staged->commit(); !committed) error = committed.error();
+  }
   if (!error.empty()) {
     std::fprintf(err, "tumble: %s\n", error.c_str());
     stopped("render failed");
     return kExitBadInput;
   }
-  if (!staged.leftover().empty())
-    std::fprintf(err, "tumble: warning: %s\n", staged.leftover().c_str());
+  if (!staged->leftover().empty())
+    std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
   if (!options.quiet) {
     const std::string shown = job.scene.output.video
                                   ? job.video_path(job.directory, job.scene.output.formats.front())

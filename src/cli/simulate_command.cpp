@@ -45,35 +45,37 @@ bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation
 
 int run_simulate(const SimulateOptions& options, std::FILE* err) {
   sys::install_interrupt_handlers();  // from the start: a signal is acted on at the first step
-  const scene::SceneOrError loaded = scene::load_scene_file(options.scene_path);
-  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
-    std::fprintf(err, "tumble: %s\n", error->message.c_str());
+  const Result<scene::Scene> loaded = scene::load_scene_file(options.scene_path);
+  if (!loaded) {
+    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
     return kExitBadInput;
   }
-  const scene::Scene& scene = std::get<scene::Scene>(loaded);
+  const scene::Scene& scene = *loaded;
   scene::print_stability_warnings(scene, err);
 
   std::unique_ptr<io::AtomicFile> file;
+  const bool to_file = options.out != "-";
   double time = 0.0;  // s: how far the run got
   // Either leaves the file unwritten: AtomicFile removes its temporary file when not committed.
   const auto stopped = [&](int signal) {
     std::fprintf(err, "tumble: stopped by %s at t = %.6g of %.6g s; %s\n", sys::signal_name(signal),
                  time, scene.duration,
-                 file ? (options.out + " was not written").c_str() : "output incomplete");
+                 to_file ? (options.out + " was not written").c_str() : "output incomplete");
     // Rows still buffered for standard output are dropped: flushing them at exit could block
     // on the very pipe the signal cut short.
-    if (!file) __fpurge(stdout);
+    if (!to_file) __fpurge(stdout);
     return kExitInterrupted + signal;
   };
   std::FILE* out = stdout;
   if (options.out != "-") {
-    file = std::make_unique<io::AtomicFile>(options.out);
+    Result<io::AtomicFile> opened = io::AtomicFile::open(options.out);
     if (const int signal = sys::interrupt_signal())
       return stopped(signal);  // a FIFO's open, cut short
-    if (!file->ok()) {
-      std::fprintf(err, "tumble: %s\n", file->error().c_str());
+    if (!opened) {
+      std::fprintf(err, "tumble: %s\n", opened.error().c_str());
       return kExitBadInput;
     }
+    file = std::make_unique<io::AtomicFile>(std::move(opened).value());
     out = file->stream();
   }
 
@@ -94,12 +96,13 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
   // before a flush could block on that pipe again.
   if (const int signal = sys::interrupt_signal()) return stopped(signal);
   // commit() also says why an earlier write failed; a failed file is never put in place.
-  ok = (file ? file->commit() : std::fflush(out) == 0) && ok;
+  const Result<void> committed = file ? file->commit() : Result<void>::success();
+  ok = (file ? committed.ok() : std::fflush(out) == 0) && ok;
   if (ok) return kExitOk;
   const int reason = errno;
   if (const int signal = sys::interrupt_signal()) return stopped(signal);  // during that last flush
   if (file) {
-    std::fprintf(err, "tumble: %s\n", file->error().c_str());
+    std::fprintf(err, "tumble: %s\n", committed.error().c_str());
   } else {
     std::fprintf(err, "tumble: error writing to standard output: %s\n", std::strerror(reason));
   }

@@ -1,5 +1,7 @@
 // The one way a fallible call returns (docs/design.md, rule 6): a value, or an error message
-// complete and ready to print. std::expected is C++23; this is the part of it tumble uses.
+// complete and ready to print; Result<void> when there is no value. std::expected is C++23; this is
+// the part of it tumble uses. Both are [[nodiscard]]: an ignored error does not compile under
+// -Werror (tests/common/nodiscard checks it).
 #pragma once
 
 #include <string>
@@ -33,6 +35,25 @@ class [[nodiscard]] Result {
 
  private:
   std::variant<T, Error> held_;
+};
+
+// Success without a value, or an Error. `return {};` (or Result<void>::success()) succeeds and
+// `return Error{why};` fails.
+template <>
+class [[nodiscard]] Result<void> {
+ public:
+  Result() = default;
+  Result(Error error) : error_(std::move(error)), failed_(true) {}
+  static Result success() { return {}; }
+
+  bool ok() const { return !failed_; }
+  explicit operator bool() const { return ok(); }
+  // Precondition: !ok().
+  const std::string& error() const { return error_.message; }
+
+ private:
+  Error error_;
+  bool failed_ = false;
 };
 
 }  // namespace tumble

@@ -21,9 +21,13 @@ std::string size_text(const io::Image& image) {
 }
 
 bool read(const std::string& path, io::Image& image, std::FILE* err) {
-  const std::string error = io::read_png(path, image);
-  if (!error.empty()) std::fprintf(err, "tumble: %s\n", error.c_str());
-  return error.empty();
+  Result<io::Image> read = io::read_png(path);
+  if (!read) {
+    std::fprintf(err, "tumble: %s\n", read.error().c_str());
+    return false;
+  }
+  image = std::move(read).value();
+  return true;
 }
 
 // The threshold in the metric's unit, checked against its range: "" or why it is refused.
@@ -81,16 +85,14 @@ std::string criteria_from(const DiffCommandOptions& options, diff::FrameCriteria
 // Writes the --json, --junit and --report outputs asked for; false after printing an error.
 bool write_outputs(const DiffCommandOptions& options, const DiffSubject& subject,
                    const SequenceDiff& diff, std::FILE* err) {
-  std::string error;
-  if (!options.json.empty()) error = write_diff_json(options.json, subject, diff);
-  if (error.empty() && !options.junit.empty()) {
-    error = write_diff_junit(options.junit, subject, diff);
+  Result<void> written = Result<void>::success();
+  if (!options.json.empty()) written = write_diff_json(options.json, subject, diff);
+  if (written && !options.junit.empty()) written = write_diff_junit(options.junit, subject, diff);
+  if (written && !options.report.empty()) {
+    written = write_diff_report(options.report, subject, diff);
   }
-  if (error.empty() && !options.report.empty()) {
-    error = write_diff_report(options.report, subject, diff);
-  }
-  if (!error.empty()) std::fprintf(err, "tumble: %s\n", error.c_str());
-  return error.empty();
+  if (!written) std::fprintf(err, "tumble: %s\n", written.error().c_str());
+  return written.ok();
 }
 
 int diff_images(const DiffCommandOptions& options, const SequenceOptions& settings, std::FILE* out,
@@ -113,8 +115,8 @@ int diff_images(const DiffCommandOptions& options, const SequenceOptions& settin
   std::fprintf(out, "%s\n", outcome_text(diff.frames.front(), settings.criteria).c_str());
   std::fflush(out);
   if (!options.out.empty()) {
-    if (const std::string error = io::write_png(options.out, picture); !error.empty()) {
-      std::fprintf(err, "tumble: %s\n", error.c_str());
+    if (const Result<void> written = io::write_png(options.out, picture); !written) {
+      std::fprintf(err, "tumble: %s\n", written.error().c_str());
       return kExitBadInput;
     }
   }
@@ -130,10 +132,12 @@ int diff_sequences(const DiffCommandOptions& options, const SequenceOptions& set
   DiffInput first, second;
   for (auto [path, input] :
        {std::pair{&options.first_path, &first}, {&options.second_path, &second}}) {
-    if (std::string error = resolve_diff_input(*path, *input); !error.empty()) {
-      std::fprintf(err, "tumble: %s\n", error.c_str());
+    Result<DiffInput> resolved = resolve_diff_input(*path);
+    if (!resolved) {
+      std::fprintf(err, "tumble: %s\n", resolved.error().c_str());
       return kExitBadInput;
     }
+    *input = std::move(resolved).value();
   }
   const SequenceDiff diff = compare_sequences(first, second, settings);
   if (!diff.error.empty()) {

@@ -45,15 +45,15 @@ bool names_png(const std::string& path) {
   return ends_in_png(path) || starts_with_png_signature(path);
 }
 
-std::string resolve_diff_input(const std::string& path, DiffInput& out) {
-  out = DiffInput{};
+Result<DiffInput> resolve_diff_input(const std::string& path) {
+  DiffInput out;
   out.path = path;
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) return path + ": no such file or folder";
+  if (!fs::exists(status)) return Error{path + ": no such file or folder"};
   if (!fs::is_directory(status)) {
     out.kind = names_png(path) ? DiffInputKind::png : DiffInputKind::video;
-    return {};
+    return out;
   }
   out.kind = DiffInputKind::folder;
   out.folder = path;
@@ -64,9 +64,11 @@ std::string resolve_diff_input(const std::string& path, DiffInput& out) {
     out.folder = (fs::path(path) / "frames").string();
   }
   out.frames = png_names(out.folder, error);
-  if (error) return out.folder + ": cannot list the folder: " + error.message();
-  if (out.frames.empty()) return path + ": folder holds no PNG frames (*.png, or frames/*.png)";
-  return {};
+  if (error) return Error{out.folder + ": cannot list the folder: " + error.message()};
+  if (out.frames.empty()) {
+    return Error{path + ": folder holds no PNG frames (*.png, or frames/*.png)"};
+  }
+  return out;
 }
 
 }  // namespace tumble::diff

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "common/result.hpp"
+
 namespace tumble::diff {
 
 enum class DiffInputKind { png, folder, video };
@@ -20,8 +22,7 @@ struct DiffInput {
 // signature; either side being one makes `tumble diff` compare two images.
 bool names_png(const std::string& path);
 
-// Finds what `path` holds. Returns "" on success, else a message naming the path: a missing
-// path, a folder with no PNG frames.
-std::string resolve_diff_input(const std::string& path, DiffInput& out);
+// Finds what `path` holds. An error names the path: a missing path, a folder with no PNG frames.
+Result<DiffInput> resolve_diff_input(const std::string& path);
 
 }  // namespace tumble::diff

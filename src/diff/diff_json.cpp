@@ -30,8 +30,8 @@ std::string frame_json(const FrameOutcome& frame) {
 
 }  // namespace
 
-std::string write_diff_json(const std::string& path, const DiffSubject& subject,
-                            const SequenceDiff& diff) {
+Result<void> write_diff_json(const std::string& path, const DiffSubject& subject,
+                             const SequenceDiff& diff) {
   const diff::FrameCriteria& criteria = subject.criteria;
   std::string text =
       "{\n  \"first\": " + io::json_string(subject.first_path) +
@@ -52,12 +52,11 @@ std::string write_diff_json(const std::string& path, const DiffSubject& subject,
   return write_text_atomically(path, text);
 }
 
-std::string write_text_atomically(const std::string& path, const std::string& text) {
-  io::AtomicFile file(path);
-  if (!file.ok()) return file.error();
-  std::fwrite(text.data(), 1, text.size(), file.stream());  // commit() reports a failed write
-  if (!file.commit()) return file.error();
-  return {};
+Result<void> write_text_atomically(const std::string& path, const std::string& text) {
+  Result<io::AtomicFile> file = io::AtomicFile::open(path);
+  if (!file) return Error{file.error()};
+  std::fwrite(text.data(), 1, text.size(), file->stream());  // commit() reports a failed write
+  return file->commit();
 }
 
 }  // namespace tumble::diff

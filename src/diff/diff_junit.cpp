@@ -19,8 +19,8 @@ std::string test_case(const std::string& name, const std::string& failure) {
 
 // One test case per compared frame, and one for the frame count when the inputs' differ, in the
 // layout Jenkins, GitLab and GitHub's test reporters read (testsuites > testsuite > testcase).
-std::string write_diff_junit(const std::string& path, const DiffSubject& subject,
-                             const SequenceDiff& diff) {
+Result<void> write_diff_junit(const std::string& path, const DiffSubject& subject,
+                              const SequenceDiff& diff) {
   std::string cases;
   std::size_t tests = 0, failures = 0;
   for (const FrameOutcome& frame : diff.frames) {

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "common/result.hpp"
+
 #include "diff/diff_run.hpp"
 #include "diff/image_diff.hpp"
 
@@ -17,18 +19,18 @@ struct DiffSubject {
   diff::FrameCriteria criteria;
 };
 
-// Writes `text` to `path` through io::AtomicFile: "" or the error naming the file.
-std::string write_text_atomically(const std::string& path, const std::string& text);
+// Writes `text` to `path` through io::AtomicFile; the error names the file.
+Result<void> write_text_atomically(const std::string& path, const std::string& text);
 
-// Each returns "" or a message naming the file that could not be written.
-std::string write_diff_json(const std::string& path, const DiffSubject& subject,
-                            const SequenceDiff& diff);
-std::string write_diff_junit(const std::string& path, const DiffSubject& subject,
+// Each error names the file that could not be written.
+Result<void> write_diff_json(const std::string& path, const DiffSubject& subject,
                              const SequenceDiff& diff);
+Result<void> write_diff_junit(const std::string& path, const DiffSubject& subject,
+                              const SequenceDiff& diff);
 // `folder`/index.html with a summary table of every frame, and for each kept (failing) frame the
 // expected, actual and difference images side by side (PNGs beside the page: no network, no
 // script). The folder is staged and swapped into place whole.
-std::string write_diff_report(const std::string& folder, const DiffSubject& subject,
-                              const SequenceDiff& diff);
+Result<void> write_diff_report(const std::string& folder, const DiffSubject& subject,
+                               const SequenceDiff& diff);
 
 }  // namespace tumble::diff

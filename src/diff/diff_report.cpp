@@ -63,13 +63,14 @@ std::string figure(const std::string& file, const std::string& caption) {
 }
 
 // The kept frame's three PNGs into `folder`, and its section of the page.
-std::string kept_section(const KeptFrame& kept, const SequenceDiff& diff,
-                         const diff::FrameCriteria& criteria, const std::string& folder,
-                         std::string& error) {
+Result<std::string> kept_section(const KeptFrame& kept, const SequenceDiff& diff,
+                                 const diff::FrameCriteria& criteria, const std::string& folder) {
   const io::Image* images[] = {&kept.first, &kept.second, &kept.difference};
   const char* roles[] = {"expected", "actual", "difference"};
-  for (int n = 0; n < 3 && error.empty(); ++n) {
-    error = io::write_png(folder + "/" + image_name(kept, roles[n]), *images[n]);
+  for (int n = 0; n < 3; ++n) {
+    const Result<void> written =
+        io::write_png(folder + "/" + image_name(kept, roles[n]), *images[n]);
+    if (!written) return Error{written.error()};
   }
   const FrameOutcome* outcome = nullptr;
   for (const FrameOutcome& frame : diff.frames) {
@@ -85,16 +86,16 @@ std::string kept_section(const KeptFrame& kept, const SequenceDiff& diff,
 
 }  // namespace
 
-std::string write_diff_report(const std::string& folder, const DiffSubject& subject,
-                              const SequenceDiff& diff) {
-  io::StagedDirectory staged(folder);
-  if (!staged.ok()) return staged.error();
+Result<void> write_diff_report(const std::string& folder, const DiffSubject& subject,
+                               const SequenceDiff& diff) {
+  Result<io::StagedDirectory> staged = io::StagedDirectory::create(folder);
+  if (!staged) return Error{staged.error()};
   const diff::FrameCriteria& criteria = subject.criteria;
   std::string sections;
-  std::string error;
   for (const KeptFrame& kept : diff.worst) {
-    sections += kept_section(kept, diff, criteria, staged.path(), error);
-    if (!error.empty()) return error;
+    const Result<std::string> section = kept_section(kept, diff, criteria, staged->path());
+    if (!section) return Error{section.error()};
+    sections += *section;
   }
   const std::string heading = markup_text(subject.first_path + " vs " + subject.second_path);
   const std::string page =
@@ -111,12 +112,11 @@ std::string write_diff_report(const std::string& folder, const DiffSubject& subj
                           : "<h2>Failing frames (the worst " + std::to_string(diff.worst.size()) +
                                 ")</h2>\n" + sections) +
       "<h2>Every frame</h2>\n" + summary_table(diff) + "</body>\n</html>\n";
-  if (std::string written = write_text_atomically(staged.path() + "/index.html", page);
-      !written.empty()) {
+  if (Result<void> written = write_text_atomically(staged->path() + "/index.html", page);
+      !written) {
     return written;
   }
-  if (!staged.commit()) return staged.error();
-  return {};
+  return staged->commit();
 }
 
 }  // namespace tumble::diff

@@ -33,16 +33,17 @@ class FrameFeed {
  public:
   explicit FrameFeed(const DiffInput& input) : input_(input) {}
 
-  std::string open() {
-    if (input_.kind != DiffInputKind::video) return {};
-    std::string error;
-    decoder_ = io::VideoDecoder::open(input_.path, error);
-    return error;
+  Result<void> open() {
+    if (input_.kind != DiffInputKind::video) return Result<void>::success();
+    Result<std::unique_ptr<io::VideoDecoder>> opened = io::VideoDecoder::open(input_.path);
+    if (!opened) return Error{opened.error()};
+    decoder_ = std::move(opened).value();
+    return Result<void>::success();
   }
 
   // The next frame, or a side that is not present at the end. A folder's frame is only named
   // here: a worker reads it.
-  DiffSide next(std::string& error) {
+  Result<DiffSide> next() {
     DiffSide side;
     if (!decoder_) {
       if (position_ >= input_.frames.size()) return side;
@@ -50,10 +51,12 @@ class FrameFeed {
       side.file = input_.folder + "/" + input_.frames[position_++];
       return side;
     }
-    if (std::optional<io::DecodedFrame> frame = decoder_->next(error)) {
+    Result<std::optional<io::DecodedFrame>> frame = decoder_->next();
+    if (!frame) return Error{frame.error()};
+    if (*frame) {
       side.present = true;
-      side.image = std::move(frame->image);
-      side.time = frame->time;
+      side.image = std::move((*frame)->image);
+      side.time = (*frame)->time;
       ++position_;
     }
     return side;
@@ -110,12 +113,13 @@ class WorstFrames {
   std::vector<Ranked> frames_;
 };
 
-// Reads a side's PNG if it has one still to read. "" or the reader's message.
-std::string load(DiffSide& side) {
-  if (!side.present || side.file.empty()) return {};
-  if (std::string error = io::read_png(side.file, side.image); !error.empty()) return error;
-  side.image = io::through_picture_format(side.image, side.as_video);
-  return {};
+// Reads a side's PNG if it has one still to read, or gives the reader's error.
+Result<void> load(DiffSide& side) {
+  if (!side.present || side.file.empty()) return Result<void>::success();
+  const Result<io::Image> image = io::read_png(side.file);
+  if (!image) return Error{image.error()};
+  side.image = io::through_picture_format(*image, side.as_video);
+  return Result<void>::success();
 }
 
 std::string timing_problem(const DiffSide& first, const DiffSide& second) {
@@ -137,8 +141,8 @@ std::string judge(Job& job, const SequenceOptions& options, FrameOutcome& outcom
     outcome.problem = job.first.present ? "missing from B" : "missing from A";
     return {};
   }
-  if (std::string error = load(job.first); !error.empty()) return error;
-  if (std::string error = load(job.second); !error.empty()) return error;
+  if (const Result<void> loaded = load(job.first); !loaded) return loaded.error();
+  if (const Result<void> loaded = load(job.second); !loaded) return loaded.error();
   const io::Image& a = job.first.image;
   const io::Image& b = job.second.image;
   if (a.width != b.width || a.height != b.height) {
@@ -243,13 +247,14 @@ std::string produce_by_position(const DiffInput& first, const DiffInput& second,
                                 const SequenceOptions& options, common::BoundedQueue<Job>& jobs,
                                 SequenceDiff& diff) {
   FrameFeed first_feed(first), second_feed(second);
-  if (std::string error = first_feed.open(); !error.empty()) return error;
-  if (std::string error = second_feed.open(); !error.empty()) return error;
-  std::string error;
+  if (const Result<void> opened = first_feed.open(); !opened) return opened.error();
+  if (const Result<void> opened = second_feed.open(); !opened) return opened.error();
   for (std::int64_t index = 0; index < options.end_frame; ++index) {
-    Job job{index, {}, first_feed.next(error), {}, {}};
-    if (error.empty()) job.second = second_feed.next(error);
-    if (!error.empty()) return error;
+    Result<DiffSide> first_side = first_feed.next();
+    if (!first_side) return first_side.error();
+    Result<DiffSide> second_side = second_feed.next();
+    if (!second_side) return second_side.error();
+    Job job{index, {}, std::move(first_side).value(), std::move(second_side).value(), {}};
     if (!job.first.present && !job.second.present) break;
     if (!job.first.file.empty()) {
       job.first.as_video = second_feed.picture_format();

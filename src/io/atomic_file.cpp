@@ -122,6 +122,21 @@ AtomicFile::AtomicFile(std::string path, Durability durability)
   }
 }
 
+Result<AtomicFile> AtomicFile::open(std::string path, Durability durability) {
+  AtomicFile file(std::move(path), durability);
+  if (!file.file_ || !file.error_.empty()) return Error{file.error_};
+  return file;
+}
+
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept
+    : path_(std::move(other.path_)),
+      target_path_(std::move(other.target_path_)),
+      temporary_path_(std::exchange(other.temporary_path_, {})),
+      file_(std::exchange(other.file_, nullptr)),
+      error_(std::move(other.error_)),
+      committed_(other.committed_),
+      durability_(other.durability_) {}
+
 AtomicFile::~AtomicFile() {
   // Not committed: what is still buffered is dropped, not written, so that closing a FIFO or
   // pipe nobody reads cannot block.
@@ -134,8 +149,8 @@ void AtomicFile::fail(const std::string& what) {
   if (error_.empty()) error_ = path_ + ": " + what + ": " + std::strerror(errno);
 }
 
-bool AtomicFile::commit() {
-  if (!file_) return false;
+Result<void> AtomicFile::commit() {
+  if (!file_) return Error{error_};
   // The flush first: after a failed write it usually fails again with the reason (EFBIG,
   // ENOSPC), which ferror alone cannot give.
   if (std::fflush(file_) != 0) fail("write failed");
@@ -147,24 +162,24 @@ bool AtomicFile::commit() {
   if (error_.empty() && sync && ::fsync(::fileno(file_)) != 0) fail("write failed");
   if (std::fclose(file_) != 0) fail("write failed");
   file_ = nullptr;
-  if (!error_.empty()) return false;
+  if (!error_.empty()) return Error{error_};
   if (temporary_path_.empty()) {
     committed_ = true;  // written directly
-    return true;
+    return Result<void>::success();
   }
   if (std::rename(temporary_path_.c_str(), target_path_.c_str()) != 0) {
     fail("cannot rename temporary file into place");
-    return false;
+    return Error{error_};
   }
   committed_ = true;
-  return true;
+  return Result<void>::success();
 }
 
-std::string write_file_atomically(const std::string& path, const std::string& bytes) {
-  AtomicFile file(path);
-  if (!file.ok()) return file.error();
-  std::fwrite(bytes.data(), 1, bytes.size(), file.stream());
-  return file.commit() ? std::string() : file.error();
+Result<void> write_file_atomically(const std::string& path, const std::string& bytes) {
+  Result<AtomicFile> file = AtomicFile::open(path);
+  if (!file) return Error{file.error()};
+  std::fwrite(bytes.data(), 1, bytes.size(), file->stream());
+  return file->commit();
 }
 
 }  // namespace tumble::io

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <string>
 
+#include "common/result.hpp"
+
 namespace tumble::io {
 
 class AtomicFile {
@@ -18,22 +20,23 @@ class AtomicFile {
   // than writing the PNG.
   enum class Durability { synced, unsynced };
 
-  // Opens "<path>.tmp-<pid>-<n>" for writing (or the target itself, see above). Check ok() /
-  // error() before use.
-  explicit AtomicFile(std::string path, Durability durability = Durability::synced);
+  // Opens "<path>.tmp-<pid>-<n>" for writing (or the target itself, see above); the error names
+  // the path and the system's reason.
+  static Result<AtomicFile> open(std::string path, Durability durability = Durability::synced);
   ~AtomicFile();  // removes the temporary file unless commit() succeeded
+  AtomicFile(AtomicFile&& other) noexcept;
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
+  AtomicFile& operator=(AtomicFile&&) = delete;
 
-  bool ok() const { return file_ != nullptr && error_.empty(); }
-  const std::string& error() const { return error_; }
   std::FILE* stream() { return file_; }
 
-  // Flushes, closes and renames onto the final path. Returns false (see error()) on failure,
-  // in which case nothing is left at either name.
-  bool commit();
+  // Flushes, closes and renames onto the final path. On failure (a write that failed before
+  // included) nothing is left at either name. Once only.
+  Result<void> commit();
 
  private:
+  AtomicFile(std::string path, Durability durability);  // error_ says whether it opened
   void fail(const std::string& what);
 
   std::string path_;            // as given, for messages
@@ -45,8 +48,8 @@ class AtomicFile {
   Durability durability_;
 };
 
-// `bytes` as the whole of the file at `path`, through an AtomicFile (synced). Returns "" on
-// success, else why not, naming the path.
-std::string write_file_atomically(const std::string& path, const std::string& bytes);
+// `bytes` as the whole of the file at `path`, through an AtomicFile (synced); the error names the
+// path.
+Result<void> write_file_atomically(const std::string& path, const std::string& bytes);
 
 }  // namespace tumble::io

@@ -75,7 +75,7 @@ class PngWriteStructs {
   PngWriteStructs(const PngWriteStructs&) = delete;
   PngWriteStructs& operator=(const PngWriteStructs&) = delete;
 
-  bool ok() const { return info_ != nullptr; }
+  bool allocated() const { return info_ != nullptr; }
   png_structp png() const { return png_; }
   png_infop info() const { return info_; }
 
@@ -96,7 +96,7 @@ class PngReadStructs {
   PngReadStructs(const PngReadStructs&) = delete;
   PngReadStructs& operator=(const PngReadStructs&) = delete;
 
-  bool ok() const { return info_ != nullptr; }
+  bool allocated() const { return info_ != nullptr; }
   png_structp png() const { return png_; }
   png_infop info() const { return info_; }
 
@@ -192,70 +192,72 @@ std::string size_text(std::int64_t width, std::int64_t height) {
 
 }  // namespace
 
-std::string write_png(const std::string& path, const Image& image, const PngSettings& settings) {
+Result<void> write_png(const std::string& path, const Image& image, const PngSettings& settings) {
   if (settings.compression_level < 0 || settings.compression_level > 9) {
-    return path + ": PNG compression level must be 0 to 9, got " +
-           std::to_string(settings.compression_level);
+    return Error{path + ": PNG compression level must be 0 to 9, got " +
+                 std::to_string(settings.compression_level)};
   }
   if (image.width < 1 || image.height < 1 ||
       image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3) {
-    return path + ": cannot write a " + size_text(image.width, image.height) + " image holding " +
-           std::to_string(image.rgb.size()) + " bytes as PNG";
+    return Error{path + ": cannot write a " + size_text(image.width, image.height) +
+                 " image holding " + std::to_string(image.rgb.size()) + " bytes as PNG"};
   }
   if (!image.alpha.empty() &&
       image.alpha.size() != static_cast<std::size_t>(image.width) * image.height) {
-    return path + ": cannot write a " + size_text(image.width, image.height) +
-           " image with an alpha plane of " + std::to_string(image.alpha.size()) + " bytes as PNG";
+    return Error{path + ": cannot write a " + size_text(image.width, image.height) +
+                 " image with an alpha plane of " + std::to_string(image.alpha.size()) +
+                 " bytes as PNG"};
   }
   // Unsynced: PNGs are mostly video frames, written by the hundred (see AtomicFile::Durability).
-  AtomicFile file(path, AtomicFile::Durability::unsynced);
-  if (!file.ok()) return file.error();
+  Result<AtomicFile> file = AtomicFile::open(path, AtomicFile::Durability::unsynced);
+  if (!file) return Error{file.error()};
   PngFailure failure{};
   PngWriteStructs structs(&failure);
-  if (!structs.ok()) return path + ": cannot write PNG: libpng could not allocate its state";
-  if (!encode_guarded(structs.png(), structs.info(), file.stream(), image, settings)) {
-    return path + ": cannot write PNG: " + failure.message;
+  if (!structs.allocated())
+    return Error{path + ": cannot write PNG: libpng could not allocate its state"};
+  if (!encode_guarded(structs.png(), structs.info(), file->stream(), image, settings)) {
+    return Error{path + ": cannot write PNG: " + failure.message};
   }
-  if (!file.commit()) return file.error();
-  return {};
+  return file->commit();
 }
 
-std::string read_png(const std::string& path, Image& out) {
+Result<Image> read_png(const std::string& path) {
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);
-  if (!file) return path + ": cannot open: " + std::strerror(errno);
-  return read_png(file.get(), path, out);
+  if (!file) return Error{path + ": cannot open: " + std::strerror(errno)};
+  return read_png(file.get(), path);
 }
 
-std::string read_png(std::FILE* file, const std::string& path, Image& out) {
+Result<Image> read_png(std::FILE* file, const std::string& path) {
   png_byte signature[kSignatureBytes];
   if (std::fread(signature, 1, kSignatureBytes, file) != kSignatureBytes ||
       png_sig_cmp(signature, 0, kSignatureBytes) != 0) {
-    if (std::ferror(file)) return path + ": cannot read: " + std::strerror(errno);
-    return path + ": not a PNG file (it does not start with the PNG signature)";
+    if (std::ferror(file)) return Error{path + ": cannot read: " + std::strerror(errno)};
+    return Error{path + ": not a PNG file (it does not start with the PNG signature)"};
   }
 
   PngFailure failure{};
   PngReadStructs structs(&failure);
-  if (!structs.ok()) return path + ": cannot read PNG: libpng could not allocate its state";
+  if (!structs.allocated())
+    return Error{path + ": cannot read PNG: libpng could not allocate its state"};
   const std::string cannot_decode = path + ": cannot decode PNG: ";
   png_uint_32 width = 0;
   png_uint_32 height = 0;
   if (!read_header_guarded(structs.png(), structs.info(), file, &width, &height)) {
-    return cannot_decode + failure.message;
+    return Error{cannot_decode + failure.message};
   }
   if (std::uint64_t{width} * height > kMaxReadPixels) {
-    return path + ": image is " + size_text(width, height) +
-           ", more than the 100 megapixels tumble will read";
+    return Error{path + ": image is " + size_text(width, height) +
+                 ", more than the 100 megapixels tumble will read"};
   }
   int channels = 0;
   std::size_t row_bytes = 0;
   if (!request_rgb8_guarded(structs.png(), structs.info(), &channels, &row_bytes)) {
-    return cannot_decode + failure.message;
+    return Error{cannot_decode + failure.message};
   }
   if ((channels != 3 && channels != 4) || row_bytes != std::size_t{width} * channels) {
-    return cannot_decode + "unexpected pixel layout after conversion (" + std::to_string(channels) +
-           " channels)";
+    return Error{cannot_decode + "unexpected pixel layout after conversion (" +
+                 std::to_string(channels) + " channels)"};
   }
 
   try {
@@ -265,13 +267,13 @@ std::string read_png(std::FILE* file, const std::string& path, Image& out) {
     png_byte* pixels = channels == 4 ? rgba.data() : image.rgb.data();
     std::vector<png_bytep> rows(height);
     for (png_uint_32 y = 0; y < height; ++y) rows[y] = pixels + y * row_bytes;
-    if (!read_pixels_guarded(structs.png(), rows.data())) return cannot_decode + failure.message;
+    if (!read_pixels_guarded(structs.png(), rows.data()))
+      return Error{cannot_decode + failure.message};
     if (channels == 4) composite_over_black(rgba, image);
-    out = std::move(image);
+    return image;
   } catch (const std::bad_alloc&) {
-    return path + ": not enough memory to read a " + size_text(width, height) + " image";
+    return Error{path + ": not enough memory to read a " + size_text(width, height) + " image"};
   }
-  return {};
 }
 
 std::optional<PngSettings> png_settings_named(std::string_view name) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "common/result.hpp"
 #include "io/image.hpp"
 
 namespace tumble::io {
@@ -29,17 +30,17 @@ std::optional<PngSettings> png_settings_named(std::string_view name);
 // an alpha plane). The file appears whole or not at all
 // (temporary name beside `path`, then rename; not fsynced, see AtomicFile). No time chunk, so equal
 // images give equal bytes.
-std::string write_png(const std::string& path, const Image& image,
-                      const PngSettings& settings = {});
+Result<void> write_png(const std::string& path, const Image& image,
+                       const PngSettings& settings = {});
 
 // Reads any PNG libpng can decode (palette, grey, 1-16 bits per sample, alpha, interlaced) into
 // 8-bit RGB. Samples are taken as stored (no gamma correction); 16-bit samples are rounded to 8
 // bits; alpha is composited over black (premultiplied: c * a / 255, rounded), so a fully
 // transparent pixel reads as black whatever colour it stores. Images over 100 megapixels are
-// refused. `out` is only assigned on success.
-std::string read_png(const std::string& path, Image& out);
+// refused.
+Result<Image> read_png(const std::string& path);
 
 // The same from an open stream positioned at the PNG's first byte; `path` names it in messages.
-std::string read_png(std::FILE* file, const std::string& path, Image& out);
+Result<Image> read_png(std::FILE* file, const std::string& path);
 
 }  // namespace tumble::io

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <utility>
 
 namespace tumble::io {
 namespace {
@@ -58,6 +59,20 @@ StagedDirectory::StagedDirectory(std::string final_path) {
   }
 }
 
+Result<StagedDirectory> StagedDirectory::create(std::string final_path) {
+  StagedDirectory staged(std::move(final_path));
+  if (!staged.error_.empty()) return Error{staged.error_};
+  return staged;
+}
+
+StagedDirectory::StagedDirectory(StagedDirectory&& other) noexcept
+    : final_path_(std::move(other.final_path_)),
+      temporary_path_(std::move(other.temporary_path_)),
+      created_parents_(std::move(other.created_parents_)),
+      error_(std::move(other.error_)),
+      leftover_(std::move(other.leftover_)),
+      committed_(std::exchange(other.committed_, true)) {}  // the moved-from one removes nothing
+
 StagedDirectory::~StagedDirectory() {
   if (committed_) return;
   if (!temporary_path_.empty()) remove_tree(temporary_path_);
@@ -74,15 +89,13 @@ void StagedDirectory::remove_temporary() {
   }
 }
 
-bool StagedDirectory::commit() {
-  if (!error_.empty()) return false;
+Result<void> StagedDirectory::commit() {
   if (::rename(temporary_path_.c_str(), final_path_.c_str()) == 0) {
     committed_ = true;  // nothing was there, or an empty folder
-    return true;
+    return Result<void>::success();
   }
   if (errno != ENOTEMPTY && errno != EEXIST) {
-    error_ = "cannot put " + final_path_ + " in place: " + std::strerror(errno);
-    return false;
+    return Error{"cannot put " + final_path_ + " in place: " + std::strerror(errno)};
   }
   // A folder is there: swap the two in one step, then delete the old one (now at the temporary
   // name).
@@ -90,11 +103,10 @@ bool StagedDirectory::commit() {
                   RENAME_EXCHANGE) == 0) {
     committed_ = true;
     remove_temporary();
-    return true;
+    return Result<void>::success();
   }
   if (errno != EINVAL && errno != ENOSYS) {
-    error_ = "cannot replace " + final_path_ + ": " + std::strerror(errno);
-    return false;
+    return Error{"cannot replace " + final_path_ + ": " + std::strerror(errno)};
   }
   // A file system without the exchange: move the old folder aside first. A reader may find no
   // folder for a moment, but never a mixed one.
@@ -103,14 +115,14 @@ bool StagedDirectory::commit() {
   remove_tree(temporary_path_);
   if (::rename(final_path_.c_str(), temporary_path_.c_str()) != 0 ||
       ::rename(new_path.c_str(), final_path_.c_str()) != 0) {
-    error_ = "cannot replace " + final_path_ + ": " + std::strerror(errno);
+    const std::string error = "cannot replace " + final_path_ + ": " + std::strerror(errno);
     ::rename(temporary_path_.c_str(), final_path_.c_str());  // put the old one back if moved
     temporary_path_ = new_path;  // the new folder: removed by the destructor
-    return false;
+    return Error{error};
   }
   committed_ = true;
   remove_temporary();
-  return true;
+  return Result<void>::success();
 }
 
 }  // namespace tumble::io

@@ -182,7 +182,7 @@ int VideoDecoder::State::receive(std::string& error) {
   }
 }
 
-std::unique_ptr<VideoDecoder> VideoDecoder::open(const std::string& path, std::string& error) {
+Result<std::unique_ptr<VideoDecoder>> VideoDecoder::open(const std::string& path) {
   // FFmpeg's own lines ("moov atom not found") would come before ours, which say the same with
   // the path: every failure is returned as a message instead.
   av_log_set_level(AV_LOG_FATAL);
@@ -190,38 +190,32 @@ std::unique_ptr<VideoDecoder> VideoDecoder::open(const std::string& path, std::s
   state->path = path;
   AVFormatContext* opened = nullptr;
   if (const int code = avformat_open_input(&opened, path.c_str(), nullptr, nullptr); code < 0) {
-    error = path + ": cannot read as a video: " + av::error_text(code);
-    return nullptr;
+    return Error{path + ": cannot read as a video: " + av::error_text(code)};
   }
   state->format.reset(opened);
   if (const int code = avformat_find_stream_info(opened, nullptr); code < 0) {
-    error = state->fail("avformat_find_stream_info", code);
-    return nullptr;
+    return Error{state->fail("avformat_find_stream_info", code)};
   }
   const AVCodec* decoder = nullptr;
   state->stream_index = av_find_best_stream(opened, AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
   if (state->stream_index < 0) {
-    error = path + ": holds no video stream FFmpeg can decode";
-    return nullptr;
+    return Error{path + ": holds no video stream FFmpeg can decode"};
   }
   const AVStream& stream = *opened->streams[state->stream_index];
   state->time_base = stream.time_base;
   state->codec.reset(avcodec_alloc_context3(decoder));
   if (!state->codec || !state->packet || !state->frame) {
-    error = path + ": cannot decode video: FFmpeg could not allocate its state";
-    return nullptr;
+    return Error{path + ": cannot decode video: FFmpeg could not allocate its state"};
   }
   if (const int code = avcodec_parameters_to_context(state->codec.get(), stream.codecpar);
       code < 0) {
-    error = state->fail("avcodec_parameters_to_context", code);
-    return nullptr;
+    return Error{state->fail("avcodec_parameters_to_context", code)};
   }
   // Decoded pictures do not depend on the thread count; two keep up with the comparison.
   state->codec->thread_count = 2;
   state->codec->export_side_data |= AV_CODEC_EXPORT_DATA_VIDEO_ENC_PARAMS;
   if (const int code = avcodec_open2(state->codec.get(), decoder, nullptr); code < 0) {
-    error = state->fail("avcodec_open2", code);
-    return nullptr;
+    return Error{state->fail("avcodec_open2", code)};
   }
   return std::unique_ptr<VideoDecoder>(new VideoDecoder(std::move(state)));
 }
@@ -229,9 +223,13 @@ std::unique_ptr<VideoDecoder> VideoDecoder::open(const std::string& path, std::s
 VideoDecoder::VideoDecoder(std::unique_ptr<State> state) : state_(std::move(state)) {}
 VideoDecoder::~VideoDecoder() = default;
 
-std::optional<DecodedFrame> VideoDecoder::next(std::string& error) {
+Result<std::optional<DecodedFrame>> VideoDecoder::next() {
   State& state = *state_;
-  if (state.receive(error) < 0) return std::nullopt;
+  std::string error;
+  if (state.receive(error) < 0) {
+    if (!error.empty()) return Error{error};
+    return std::optional<DecodedFrame>();  // the end
+  }
   DecodedFrame decoded;
   const std::int64_t timestamp = state.frame->best_effort_timestamp;
   decoded.time =
@@ -239,8 +237,8 @@ std::optional<DecodedFrame> VideoDecoder::next(std::string& error) {
   decoded.image = state.to_rgb(error);
   state.note_quantisers();
   av_frame_unref(state.frame.get());
-  if (!error.empty()) return std::nullopt;
-  return decoded;
+  if (!error.empty()) return Error{error};
+  return std::optional<DecodedFrame>(std::move(decoded));
 }
 
 VideoPictureFormat VideoDecoder::picture_format() const {

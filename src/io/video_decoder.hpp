@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "common/result.hpp"
 #include "io/image.hpp"
 #include "io/quantisation.hpp"
 
@@ -42,19 +43,18 @@ Image through_picture_format(const Image& image, const VideoPictureFormat& forma
 
 class VideoDecoder {
  public:
-  // Opens the first video stream of `path`. Returns nullptr and sets `error` (naming the path and
-  // the failing call) if the file cannot be read as a video.
-  static std::unique_ptr<VideoDecoder> open(const std::string& path, std::string& error);
+  // Opens the first video stream of `path`. The error names the path and the failing call, when
+  // the file cannot be read as a video.
+  static Result<std::unique_ptr<VideoDecoder>> open(const std::string& path);
 
   ~VideoDecoder();
   VideoDecoder(const VideoDecoder&) = delete;
   VideoDecoder& operator=(const VideoDecoder&) = delete;
 
-  // The next frame. Nothing at the end of the video (`error` left empty) or on a decoding error
-  // (`error` set). YUV pictures are converted with the matrix and range the stream declares,
-  // BT.709 limited range when it declares none (what VideoEncoder writes); others (a GIF's
-  // palette) as they are.
-  std::optional<DecodedFrame> next(std::string& error);
+  // The next frame, nothing at the end of the video, or an error on a decoding error. YUV pictures
+  // are converted with the matrix and range the stream declares, BT.709 limited range when it
+  // declares none (what VideoEncoder writes); others (a GIF's palette) as they are.
+  Result<std::optional<DecodedFrame>> next();
 
   const std::string& path() const;
   // The format of the last frame next() returned.

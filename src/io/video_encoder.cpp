@@ -407,14 +407,10 @@ VideoEncoder::VideoEncoder(std::unique_ptr<State> state) : state_(std::move(stat
 
 VideoEncoder::~VideoEncoder() = default;
 
-std::unique_ptr<VideoEncoder> VideoEncoder::open(const std::string& path,
-                                                 const VideoSettings& settings,
-                                                 std::string& error) {
-  error = invalid_settings(settings);
-  if (!error.empty()) {
-    error = path + ": " + error;
-    return nullptr;
-  }
+Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const std::string& path,
+                                                         const VideoSettings& settings) {
+  std::string error = invalid_settings(settings);
+  if (!error.empty()) return Error{path + ": " + error};
   av_log_set_level(AV_LOG_ERROR);  // libav and x264 chatter (stats, warnings) stays off stderr
 
   auto state = std::make_unique<State>();
@@ -429,38 +425,39 @@ std::unique_ptr<VideoEncoder> VideoEncoder::open(const std::string& path,
     error = settings.format == VideoFormat::gif ? state->set_up_gif() : state->set_up_conversion();
   }
   if (error.empty()) error = state->open_file();
-  if (!error.empty()) return nullptr;  // ~State removes anything written
+  if (!error.empty()) return Error{error};  // ~State removes anything written
   return std::unique_ptr<VideoEncoder>(new VideoEncoder(std::move(state)));
 }
 
-std::string VideoEncoder::add_frame(const Image& image) {
+Result<void> VideoEncoder::add_frame(const Image& image) {
   State& state = *state_;
-  if (!state.error.empty()) return state.error;
-  if (state.finished) return state.path + ": add_frame after finish()";
+  if (!state.error.empty()) return Error{state.error};
+  if (state.finished) return Error{state.path + ": add_frame after finish()"};
   const int width = state.settings.width;
   const int height = state.settings.height;
   if (image.width != width || image.height != height ||
       image.rgb.size() != static_cast<std::size_t>(width) * height * 3) {
-    return state.path + ": frame " + std::to_string(state.frames_added) + " is " +
-           size_text(image.width, image.height) + ", the video is " + size_text(width, height);
+    return Error{state.path + ": frame " + std::to_string(state.frames_added) + " is " +
+                 size_text(image.width, image.height) + ", the video is " +
+                 size_text(width, height)};
   }
   if (state.settings.format == VideoFormat::gif) {
-    if (std::string failure = state.take_gif_frame(image); !failure.empty()) return failure;
+    if (std::string failure = state.take_gif_frame(image); !failure.empty()) return Error{failure};
     ++state.frames_added;
-    return {};
+    return Result<void>::success();
   }
   // The encoder may still hold a reference to the previous picture in this frame's buffers.
   int code = av_frame_make_writable(state.frame.get());
-  if (code < 0) return state.fail("av_frame_make_writable", code);
+  if (code < 0) return Error{state.fail("av_frame_make_writable", code)};
   const std::uint8_t* const source[] = {image.rgb.data()};
   const int source_stride[] = {static_cast<int>(image.row_bytes())};
   code = sws_scale(state.rgb_to_yuv.get(), source, source_stride, 0, height, state.frame->data,
                    state.frame->linesize);
-  if (code < 0) return state.fail("sws_scale", code);
+  if (code < 0) return Error{state.fail("sws_scale", code)};
   if (state.settings.alpha) {
     if (image.alpha.size() != static_cast<std::size_t>(width) * height) {
-      return state.path + ": frame " + std::to_string(state.frames_added) +
-             " has no alpha, and the video was opened for alpha";
+      return Error{state.path + ": frame " + std::to_string(state.frames_added) +
+                   " has no alpha, and the video was opened for alpha"};
     }
     for (int y = 0; y < height; ++y) {
       std::copy_n(image.alpha.data() + static_cast<std::size_t>(y) * width, width,
@@ -468,14 +465,15 @@ std::string VideoEncoder::add_frame(const Image& image) {
     }
   }
   state.frame->pts = state.settings.first_frame + state.frames_added;  // codec->time_base: 1/fps
-  if (std::string failure = state.encode(state.frame.get()); !failure.empty()) return failure;
+  if (std::string failure = state.encode(state.frame.get()); !failure.empty())
+    return Error{failure};
   ++state.frames_added;
-  return {};
+  return Result<void>::success();
 }
 
-std::string VideoEncoder::finish() {
+Result<void> VideoEncoder::finish() {
   State& state = *state_;
-  if (state.finished) return {};
+  if (state.finished) return Result<void>::success();
   std::string failure = state.error;
   if (failure.empty() && state.frames_added == 0) {
     failure = state.error = state.path + ": no frames were added";
@@ -504,10 +502,10 @@ std::string VideoEncoder::finish() {
   }
   if (!failure.empty()) {
     state.close_file();
-    return failure;
+    return Error{failure};
   }
   state.finished = true;
-  return {};
+  return Result<void>::success();
 }
 
 int VideoEncoder::frames_added() const {

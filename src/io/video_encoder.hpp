@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "common/result.hpp"
 #include "common/video_format.hpp"
 #include "io/image.hpp"
 
@@ -61,23 +62,23 @@ struct VideoSettings {
 
 class VideoEncoder {
  public:
-  // Creates "<path>.partial-<pid>.<format>" and sets up the encoder. Returns nullptr and sets
-  // `error` (naming the path and the failing call) if the settings are invalid or FFmpeg refuses.
-  static std::unique_ptr<VideoEncoder> open(const std::string& path, const VideoSettings& settings,
-                                            std::string& error);
+  // Creates "<path>.partial-<pid>.<format>" and sets up the encoder. The error names the path and
+  // the failing call, when the settings are invalid or FFmpeg refuses.
+  static Result<std::unique_ptr<VideoEncoder>> open(const std::string& path,
+                                                    const VideoSettings& settings);
 
   ~VideoEncoder();  // removes the temporary file unless finish() succeeded
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   // Encodes the next frame (frame k is presented at pts k in a 1/fps time base). The image must
-  // be settings.width x settings.height. Returns "" on success, else the error.
-  std::string add_frame(const Image& image);
+  // be settings.width x settings.height.
+  Result<void> add_frame(const Image& image);
 
   // Drains the encoder (MP4: writes the index at the front of the file; GIF: maps and encodes
   // every frame now that the palette is known), then renames the file onto the final path.
-  // Returns "" on success; on failure nothing is left at either name.
-  std::string finish();
+  // On failure nothing is left at either name.
+  Result<void> finish();
 
   int frames_added() const;
   const std::string& path() const;

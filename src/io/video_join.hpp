@@ -6,11 +6,12 @@
 #include <string>
 #include <vector>
 
+#include "common/result.hpp"
+
 namespace tumble::io {
 
 // What an MP4 or WebM holds, read from its index and packets without decoding.
 struct VideoSegmentInfo {
-  std::string error;  // "" when the file could be read whole
   int width = 0, height = 0;
   int fps = 0;                // frames per second (0 unless a whole number)
   long long first_frame = 0;  // the frame number of its earliest frame (its time × fps)
@@ -19,7 +20,8 @@ struct VideoSegmentInfo {
   // this many frame times before it is shown; 0 for a segment too short for B-frames).
   long long reorder_delay = 0;
 };
-VideoSegmentInfo read_segment_info(const std::string& path);
+// The error names the path, for a file that cannot be read whole.
+Result<VideoSegmentInfo> read_segment_info(const std::string& path);
 
 // Writes `segments`, in their order, as one video at `path` (an MP4 for H.264 segments, a WebM
 // for VP9 ones): their packets copied, each with its own presentation time, and decode times
@@ -31,7 +33,7 @@ VideoSegmentInfo read_segment_info(const std::string& path);
 // the first at frame 0; and a segment whose index lists more frames than its file holds (a
 // truncated copy; a WebM's index does not count frames, so the caller compares each segment's
 // frames with what it should hold). Written beside `path` and renamed into place, so `path` holds
-// a whole video or nothing. Returns "" on success.
-std::string join_videos(const std::vector<std::string>& segments, const std::string& path);
+// a whole video or nothing.
+Result<void> join_videos(const std::vector<std::string>& segments, const std::string& path);
 
 }  // namespace tumble::io

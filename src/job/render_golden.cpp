@@ -27,10 +27,9 @@ std::string golden_problem(const diff::DiffCommandOptions& golden, const RenderJ
   if (const Result<diff::SequenceOptions> settings = diff::diff_settings(golden); !settings) {
     return settings.error();
   }
-  diff::DiffInput input;
-  if (std::string error = diff::resolve_diff_input(golden.first_path, input); !error.empty()) {
-    return "--golden " + error;
-  }
+  const Result<diff::DiffInput> resolved = diff::resolve_diff_input(golden.first_path);
+  if (!resolved) return "--golden " + resolved.error();
+  const diff::DiffInput& input = *resolved;
   if (input.kind == diff::DiffInputKind::png) {
     return "--golden " + golden.first_path +
            ": expected a render's folder, a folder of frames or a video, not one PNG";

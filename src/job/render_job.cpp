@@ -126,13 +126,14 @@ std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const view
   const double start = pipeline::process_cpu_seconds();
   const scene::Scene& scene = job.scene;
   const render::RenderSettings settings = view::renderer_settings(scene, framing);
-  std::unique_ptr<render::Renderer> renderer =
-      render::Renderer::create(settings, job.shader_directory, result.error);
-  if (!renderer) {
+  Result<std::unique_ptr<render::Renderer>> made =
+      render::Renderer::create(settings, job.shader_directory);
+  if (!made) {
     // Mostly what the scene asks of this OpenGL ([render] msaa beyond its samples): name it.
-    result.error = job.scene.source_path + ": " + result.error;
+    result.error = job.scene.source_path + ": " + made.error();
     return nullptr;
   }
+  std::unique_ptr<render::Renderer> renderer = std::move(made).value();
   result.renderer = renderer->description();
   result.backend = render::backend_name(renderer->backend());
   result.device = renderer->device();
@@ -292,16 +293,17 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
   }
   result.setup_seconds = seconds_since(setup_start);
 
-  result.pipeline = pipeline::run_frames(job.first, job.end, source, *renderer, sink_list,
-                                         job.serial, on_frame_done);
+  const Result<void> ran = pipeline::run_frames(job.first, job.end, source, *renderer, sink_list,
+                                                job.serial, on_frame_done, result.pipeline);
   result.frame_steps = source.simulation().step_count();
-  if (!result.pipeline.error.empty()) {
-    result.error = result.pipeline.error;
+  if (!ran) {
+    result.error = ran.error();
     return result;  // each sink's destructor removes its partial file
   }
   const auto finish_start = std::chrono::steady_clock::now();
   for (pipeline::FrameSink* sink : sink_list) {
-    if (result.error.empty()) result.error = sink->finish();
+    if (!result.error.empty()) break;
+    if (const Result<void> finished = sink->finish(); !finished) result.error = finished.error();
   }
   result.finish_seconds = seconds_since(finish_start);
   for (std::size_t i = 0; i < result.bodies.size(); ++i) {

@@ -78,15 +78,15 @@ ContactSheet::ContactSheet(std::string path, std::int64_t first, std::int64_t en
       settings_(settings),
       frames_(contact_sheet_frames(first, end)) {}
 
-std::string ContactSheet::write(std::int64_t frame, const io::Image& image) {
+Result<void> ContactSheet::write(std::int64_t frame, const io::Image& image) {
   if (std::find(frames_.begin(), frames_.end(), frame) != frames_.end()) {
     tiles_.push_back(shrink_for_sheet(image));
   }
-  return {};
+  return Result<void>::success();
 }
 
-std::string ContactSheet::finish() {
-  if (tiles_.empty()) return {};
+Result<void> ContactSheet::finish() {
+  if (tiles_.empty()) return Result<void>::success();
   const int tile_width = tiles_.front().width;
   const int tile_height = tiles_.front().height;
   const int strip = sheet_label_height(tile_height);

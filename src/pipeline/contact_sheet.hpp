@@ -37,8 +37,8 @@ class ContactSheet final : public FrameSink {
   ContactSheet(std::string path, std::int64_t first, std::int64_t end, int fps,
                const io::PngSettings& settings);
   const char* stage() const override { return "contact_sheet"; }
-  std::string write(std::int64_t frame, const io::Image& image) override;
-  std::string finish() override;
+  Result<void> write(std::int64_t frame, const io::Image& image) override;
+  Result<void> finish() override;
 
  private:
   std::string path_;

@@ -47,13 +47,13 @@ struct Slot {
   std::atomic<std::size_t> pending{0};  // sinks that have not finished with this frame
 };
 
-// Pulls frame k from the source and draws it into `image`: "" or why the run must stop.
-std::string draw_frame(FrameSource& source, render::Renderer& renderer, std::int64_t k,
-                       io::Image& image, PipelineReport& report) {
+// Pulls frame k from the source and draws it into `image`, or says why the run must stop.
+Result<void> draw_frame(FrameSource& source, render::Renderer& renderer, std::int64_t k,
+                        io::Image& image, PipelineReport& report) {
   const Result<render::FrameView> view = timed(report.simulate, [&] { return source.view(k); });
-  if (!view) return view.error();
+  if (!view) return Error{view.error()};
   timed(report.render, [&] { renderer.draw(*view, image); });
-  return {};
+  return Result<void>::success();
 }
 
 void finish_times(PipelineReport& report, double start_wall, double start_cpu) {
@@ -66,28 +66,26 @@ void finish_times(PipelineReport& report, double start_wall, double start_cpu) {
   report.render.cpu = std::max(0.0, report.process_cpu - claimed);
 }
 
-void run_serial(std::int64_t first, std::int64_t end, FrameSource& source,
-                render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
-                const std::function<void(std::int64_t done)>& on_frame_done,
-                PipelineReport& report) {
+Result<void> run_serial(std::int64_t first, std::int64_t end, FrameSource& source,
+                        render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
+                        const std::function<void(std::int64_t done)>& on_frame_done,
+                        PipelineReport& report) {
   io::Image image;
   for (std::int64_t k = first; k < end; ++k) {
-    std::string error = draw_frame(source, renderer, k, image, report);
-    for (std::size_t i = 0; i < sinks.size() && error.empty(); ++i) {
-      error = timed(report.sinks[i], [&] { return sinks[i]->write(k, image); });
+    Result<void> done = draw_frame(source, renderer, k, image, report);
+    for (std::size_t i = 0; i < sinks.size() && done; ++i) {
+      done = timed(report.sinks[i], [&] { return sinks[i]->write(k, image); });
     }
-    if (!error.empty()) {
-      report.error = error;
-      return;
-    }
+    if (!done) return done;
     on_frame_done(++report.frames_done);
   }
+  return Result<void>::success();
 }
 
-void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
-                   render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
-                   const std::function<void(std::int64_t done)>& on_frame_done,
-                   PipelineReport& report) {
+Result<void> run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
+                           render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
+                           const std::function<void(std::int64_t done)>& on_frame_done,
+                           PipelineReport& report) {
   // Frames in flight: one being drawn, one with each sink, and one spare so that the drawing
   // thread never waits for a slot while every sink is busy. 4 × 2.8 MB at 1280×720 for PNG + MP4.
   const std::size_t slot_count = sinks.size() + 2;
@@ -97,11 +95,12 @@ void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
   for (std::size_t i = 0; i < sinks.size(); ++i) queues.emplace_back(slot_count);
   for (std::size_t i = 0; i < slot_count; ++i) free_slots.push(i);
 
-  std::mutex done_mutex;  // guards report.error, report.frames_done and on_frame_done
+  std::mutex done_mutex;  // guards failure, report.frames_done and on_frame_done
+  std::string failure;    // the first error, "" while there is none
   const auto fail = [&](const std::string& error) {
     {
       std::lock_guard lock(done_mutex);
-      if (report.error.empty()) report.error = error;
+      if (failure.empty()) failure = error;
     }
     free_slots.abort();
     for (common::BoundedQueue<std::size_t>& queue : queues) queue.abort();
@@ -118,10 +117,10 @@ void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
   const auto worker = [&](std::size_t i) {
     while (const std::optional<std::size_t> slot = queues[i].pop()) {
       Slot& s = slots[*slot];
-      const std::string error =
+      const Result<void> written =
           timed(report.sinks[i], [&] { return sinks[i]->write(s.frame, s.image); });
-      if (!error.empty()) {
-        fail(error);
+      if (!written) {
+        fail(written.error());
         return;
       }
       release(*slot);
@@ -134,16 +133,15 @@ void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
   } catch (const std::system_error& error) {  // out of memory or of threads (ulimit -v, -u)
     fail(std::string("cannot start a worker thread: ") + error.what());
     for (std::thread& thread : threads) thread.join();  // the aborted queues let it finish
-    return;
+    return Error{failure};
   }
 
   for (std::int64_t k = first; k < end; ++k) {
     const std::optional<std::size_t> slot = free_slots.pop();
     if (!slot) break;  // a worker failed
     Slot& s = slots[*slot];
-    if (const std::string error = draw_frame(source, renderer, k, s.image, report);
-        !error.empty()) {
-      fail(error);
+    if (const Result<void> drawn = draw_frame(source, renderer, k, s.image, report); !drawn) {
+      fail(drawn.error());
       break;
     }
     s.frame = k;
@@ -158,6 +156,8 @@ void run_pipelined(std::int64_t first, std::int64_t end, FrameSource& source,
   }
   for (common::BoundedQueue<std::size_t>& queue : queues) queue.close();
   for (std::thread& thread : threads) thread.join();
+  if (!failure.empty()) return Error{failure};
+  return Result<void>::success();
 }
 
 }  // namespace
@@ -171,21 +171,19 @@ double process_cpu_seconds() {
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-PipelineReport run_frames(std::int64_t first, std::int64_t end, FrameSource& source,
-                          render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
-                          bool serial,
-                          const std::function<void(std::int64_t done)>& on_frame_done) {
-  PipelineReport report;
+Result<void> run_frames(std::int64_t first, std::int64_t end, FrameSource& source,
+                        render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
+                        bool serial, const std::function<void(std::int64_t done)>& on_frame_done,
+                        PipelineReport& report) {
+  report = PipelineReport{};
   report.sinks.resize(sinks.size());
   const double start_wall = wall_seconds();
   const double start_cpu = process_cpu_seconds();
-  if (serial) {
-    run_serial(first, end, source, renderer, sinks, on_frame_done, report);
-  } else {
-    run_pipelined(first, end, source, renderer, sinks, on_frame_done, report);
-  }
+  Result<void> ran =
+      serial ? run_serial(first, end, source, renderer, sinks, on_frame_done, report)
+             : run_pipelined(first, end, source, renderer, sinks, on_frame_done, report);
   finish_times(report, start_wall, start_cpu);
-  return report;
+  return ran;
 }
 
 }  // namespace tumble::pipeline

@@ -35,7 +35,6 @@ struct StageTime {
 double process_cpu_seconds();
 
 struct PipelineReport {
-  std::string error;             // "" when every frame went through every stage
   std::int64_t frames_done = 0;  // frames that finished every stage
   StageTime simulate, render;
   std::vector<StageTime> sinks;  // one per sink, in the order given
@@ -45,8 +44,11 @@ struct PipelineReport {
 
 // Runs frames [first, end) from `source`, drawn by `renderer`, into every sink. `on_frame_done`
 // is called (serialised) as each frame finishes. No sink is finished here (FrameSink::finish).
-PipelineReport run_frames(std::int64_t first, std::int64_t end, FrameSource& source,
-                          render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
-                          bool serial, const std::function<void(std::int64_t done)>& on_frame_done);
+// Succeeds when every frame went through every stage, else gives the first error; `report` holds
+// the figures either way.
+Result<void> run_frames(std::int64_t first, std::int64_t end, FrameSource& source,
+                        render::Renderer& renderer, const std::vector<FrameSink*>& sinks,
+                        bool serial, const std::function<void(std::int64_t done)>& on_frame_done,
+                        PipelineReport& report);
 
 }  // namespace tumble::pipeline

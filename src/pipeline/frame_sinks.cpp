@@ -22,24 +22,23 @@ std::string png_frame_name(std::int64_t frame) {
   return name;
 }
 
-std::string PngFrames::write(std::int64_t frame, const io::Image& image) {
+Result<void> PngFrames::write(std::int64_t frame, const io::Image& image) {
   return io::write_png((fs::path(folder_) / png_frame_name(frame)).string(), image, settings_);
 }
 
 Result<std::unique_ptr<FrameSink>> VideoSink::open(const std::string& path,
                                                    const io::VideoSettings& settings) {
-  std::string error;
-  std::unique_ptr<io::VideoEncoder> encoder = io::VideoEncoder::open(path, settings, error);
-  if (!encoder) return Error{error};
-  return std::unique_ptr<FrameSink>(new VideoSink(std::move(encoder), settings.format));
+  Result<std::unique_ptr<io::VideoEncoder>> encoder = io::VideoEncoder::open(path, settings);
+  if (!encoder) return Error{encoder.error()};
+  return std::unique_ptr<FrameSink>(new VideoSink(std::move(encoder).value(), settings.format));
 }
 
 // The encoder numbers frames itself, in the order they come (the loop's order).
-std::string VideoSink::write(std::int64_t, const io::Image& image) {
+Result<void> VideoSink::write(std::int64_t, const io::Image& image) {
   return encoder_->add_frame(image);
 }
 
-std::string VideoSink::finish() {
+Result<void> VideoSink::finish() {
   return encoder_->finish();
 }
 

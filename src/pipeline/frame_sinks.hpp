@@ -20,10 +20,10 @@ class FrameSink {
   // Its stage in report.json ("png", "video").
   virtual const char* stage() const = 0;
   // Takes frame `frame`. Frames come in increasing order, all from one thread (not necessarily
-  // the one that made the sink). "" or a complete error message, which stops the render.
-  virtual std::string write(std::int64_t frame, const io::Image& image) = 0;
-  // After the last frame: "" once the output is complete, else why it is not.
-  virtual std::string finish() { return {}; }
+  // the one that made the sink). An error (a complete message) stops the render.
+  virtual Result<void> write(std::int64_t frame, const io::Image& image) = 0;
+  // After the last frame: success once the output is complete, else why it is not.
+  virtual Result<void> finish() { return Result<void>::success(); }
 };
 
 // The file name of frame `frame` in a render's frames/ folder: "frame_00042.png".
@@ -35,7 +35,7 @@ class PngFrames final : public FrameSink {
   static Result<std::unique_ptr<FrameSink>> open(const std::string& folder,
                                                  const io::PngSettings& settings);
   const char* stage() const override { return "png"; }
-  std::string write(std::int64_t frame, const io::Image& image) override;
+  Result<void> write(std::int64_t frame, const io::Image& image) override;
 
  private:
   PngFrames(std::string folder, const io::PngSettings& settings)
@@ -55,8 +55,8 @@ class VideoSink final : public FrameSink {
   const char* stage() const override {
     return format_ == io::VideoFormat::mp4 ? "video" : io::video_format_name(format_);
   }
-  std::string write(std::int64_t frame, const io::Image& image) override;
-  std::string finish() override;
+  Result<void> write(std::int64_t frame, const io::Image& image) override;
+  Result<void> finish() override;
 
  private:
   VideoSink(std::unique_ptr<io::VideoEncoder> encoder, io::VideoFormat format)

@@ -15,8 +15,9 @@ class PosterSink final : public FrameSink {
   PosterSink(std::string path, std::int64_t frame, const io::PngSettings& settings)
       : path_(std::move(path)), frame_(frame), settings_(settings) {}
   const char* stage() const override { return "poster"; }
-  std::string write(std::int64_t frame, const io::Image& image) override {
-    return frame == frame_ ? io::write_png(path_, image, settings_) : std::string();
+  Result<void> write(std::int64_t frame, const io::Image& image) override {
+    if (frame != frame_) return Result<void>::success();
+    return io::write_png(path_, image, settings_);
   }
 
  private:

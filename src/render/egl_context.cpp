@@ -109,13 +109,13 @@ class EglContext final : public OffscreenContext {
     // terminating it under another context would pull the driver from beneath it.
   }
 
-  std::string open() {
+  Result<void> open() {
     const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
     if (!has_extension(extensions, "EGL_KHR_surfaceless_context")) {
-      return "the EGL display lacks EGL_KHR_surfaceless_context";
+      return Error{"the EGL display lacks EGL_KHR_surfaceless_context"};
     }
     if (!eglBindAPI(EGL_OPENGL_API))
-      return "eglBindAPI(EGL_OPENGL_API) failed: " + egl_error_text();
+      return Error{"eglBindAPI(EGL_OPENGL_API) failed: " + egl_error_text()};
     // No config where the display allows it (EGL_KHR_no_config_context: Mesa): the context never
     // gets a surface. Elsewhere any config that renders desktop OpenGL.
     EGLConfig config = EGL_NO_CONFIG_KHR;
@@ -123,7 +123,7 @@ class EglContext final : public OffscreenContext {
       const EGLint wanted[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
       EGLint found = 0;
       if (!eglChooseConfig(display_, wanted, &config, 1, &found) || found < 1) {
-        return "eglChooseConfig: no config for desktop OpenGL (" + egl_error_text() + ")";
+        return Error{"eglChooseConfig: no config for desktop OpenGL (" + egl_error_text() + ")"};
       }
     }
     const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
@@ -135,15 +135,15 @@ class EglContext final : public OffscreenContext {
                                  EGL_NONE};
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, attributes);
     if (context_ == EGL_NO_CONTEXT) {
-      return "eglCreateContext: no OpenGL 3.3 core context (" + egl_error_text() + ")";
+      return Error{"eglCreateContext: no OpenGL 3.3 core context (" + egl_error_text() + ")"};
     }
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
-      return "eglMakeCurrent without a surface failed: " + egl_error_text();
+      return Error{"eglMakeCurrent without a surface failed: " + egl_error_text()};
     }
-    if (const std::string missing = load_gl_functions(eglGetProcAddress); !missing.empty()) {
-      return "eglGetProcAddress has no " + missing;
+    if (const Result<void> loaded = load_gl_functions(eglGetProcAddress); !loaded) {
+      return Error{"eglGetProcAddress has no " + loaded.error()};
     }
-    return {};
+    return Result<void>::success();
   }
 
   int width() const override { return width_; }
@@ -159,35 +159,30 @@ class EglContext final : public OffscreenContext {
   int height_;
 };
 
-std::unique_ptr<OffscreenContext> open_display(EGLenum platform, void* native, std::string device,
-                                               int width, int height, std::string& error) {
+Result<std::unique_ptr<OffscreenContext>> open_display(EGLenum platform, void* native,
+                                                       std::string device, int width, int height) {
   const auto get_platform_display =
       egl_function<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
   if (!get_platform_display) {
-    error = "EGL lacks eglGetPlatformDisplayEXT";
-    return nullptr;
+    return Error{"EGL lacks eglGetPlatformDisplayEXT"};
   }
   const EGLDisplay display = get_platform_display(platform, native, nullptr);
   if (display == EGL_NO_DISPLAY || !eglInitialize(display, nullptr, nullptr)) {
-    error = "eglInitialize on the " + device + " failed: " + egl_error_text();
-    return nullptr;
+    return Error{"eglInitialize on the " + device + " failed: " + egl_error_text()};
   }
   auto out = std::make_unique<EglContext>(display, std::move(device), width, height);
-  error = out->open();
-  if (!error.empty()) return nullptr;
-  return out;
+  if (Result<void> opened = out->open(); !opened) return Error{opened.error()};
+  return std::unique_ptr<OffscreenContext>(std::move(out));
 }
 
-std::unique_ptr<OffscreenContext> open_device(const std::vector<EGLDeviceEXT>& devices,
-                                              std::size_t index, int width, int height,
-                                              std::string& error) {
+Result<std::unique_ptr<OffscreenContext>> open_device(const std::vector<EGLDeviceEXT>& devices,
+                                                      std::size_t index, int width, int height) {
   if (!client_has("EGL_EXT_platform_device")) {
-    error = "this EGL has no device platform (EGL_EXT_platform_device)";
-    return nullptr;
+    return Error{"this EGL has no device platform (EGL_EXT_platform_device)"};
   }
   const std::string device = "device " + std::to_string(index) + " of " +
                              std::to_string(devices.size()) + ": " + device_name(devices[index]);
-  return open_display(EGL_PLATFORM_DEVICE_EXT, devices[index], device, width, height, error);
+  return open_display(EGL_PLATFORM_DEVICE_EXT, devices[index], device, width, height);
 }
 
 // The first device that is not Mesa's software one (a GPU), else kAutomaticEglDevice.
@@ -204,30 +199,26 @@ int egl_hardware_device() {
   return first_hardware(list_devices());
 }
 
-std::unique_ptr<OffscreenContext> create_egl_context(int width, int height, int device,
-                                                     std::string& error) {
+Result<std::unique_ptr<OffscreenContext>> create_egl_context(int width, int height, int device) {
   const Result<std::vector<EGLDeviceEXT>> devices = list_devices();
   if (device == kAutomaticEglDevice) device = first_hardware(devices);
   if (device != kAutomaticEglDevice) {
     if (!devices) {
-      error = "egl_device " + std::to_string(device) + ": " + devices.error();
-      return nullptr;
+      return Error{"egl_device " + std::to_string(device) + ": " + devices.error()};
     }
     if (device < 0 || static_cast<std::size_t>(device) >= devices->size()) {
-      error = "egl_device " + std::to_string(device) +
-              ": no such EGL device (this machine's: " + device_list_text(*devices) + ")";
-      return nullptr;
+      return Error{"egl_device " + std::to_string(device) +
+                   ": no such EGL device (this machine's: " + device_list_text(*devices) + ")"};
     }
-    return open_device(*devices, static_cast<std::size_t>(device), width, height, error);
+    return open_device(*devices, static_cast<std::size_t>(device), width, height);
   }
   if (!client_has("EGL_MESA_platform_surfaceless")) {
-    error =
+    return Error{
         "EGL has no surfaceless platform (EGL_MESA_platform_surfaceless: is Mesa's EGL "
-        "installed? Debian: libegl-mesa0) and no hardware device";
-    return nullptr;
+        "installed? Debian: libegl-mesa0) and no hardware device"};
   }
   return open_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, "surfaceless", width,
-                      height, error);
+                      height);
 }
 
 }  // namespace tumble::render

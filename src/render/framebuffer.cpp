@@ -4,7 +4,7 @@
 
 namespace tumble::render {
 
-Framebuffer Framebuffer::create(int width, int height, int samples, std::string& error) {
+Result<Framebuffer> Framebuffer::create(int width, int height, int samples) {
   Framebuffer out;
   out.width_ = width;
   out.height_ = height;
@@ -25,10 +25,9 @@ Framebuffer Framebuffer::create(int width, int height, int samples, std::string&
   const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (!complete) {
-    error = samples > 1
-                ? "multisampled framebuffer (" + std::to_string(samples) + "x) is incomplete"
-                : "framebuffer is incomplete";
-    return Framebuffer();
+    return Error{samples > 1
+                     ? "multisampled framebuffer (" + std::to_string(samples) + "x) is incomplete"
+                     : "framebuffer is incomplete"};
   }
   return out;
 }

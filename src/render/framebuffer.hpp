@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "common/result.hpp"
 #include "render/gl.hpp"
 
 namespace tumble::render {
@@ -14,9 +15,8 @@ namespace tumble::render {
 class Framebuffer {
  public:
   Framebuffer() = default;  // no GL objects: for a renderer whose set-up failed
-  // width × height pixels, `samples` per pixel (1 = no multisampling). On failure returns an
-  // empty framebuffer and sets `error`.
-  static Framebuffer create(int width, int height, int samples, std::string& error);
+  // width × height pixels, `samples` per pixel (1 = no multisampling).
+  static Result<Framebuffer> create(int width, int height, int samples);
   ~Framebuffer();
   Framebuffer(Framebuffer&& other) noexcept;
   Framebuffer& operator=(Framebuffer&& other) noexcept;

@@ -6,13 +6,13 @@ namespace tumble::render {
 TUMBLE_GL_FUNCTIONS(TUMBLE_GL_DEFINE)
 #undef TUMBLE_GL_DEFINE
 
-std::string load_gl_functions(GlProcLoader loader) {
+Result<void> load_gl_functions(GlProcLoader loader) {
 #define TUMBLE_GL_LOAD(type, name)              \
   name = reinterpret_cast<type>(loader(#name)); \
-  if (!name) return #name;
+  if (!name) return Error{#name};
   TUMBLE_GL_FUNCTIONS(TUMBLE_GL_LOAD)
 #undef TUMBLE_GL_LOAD
-  return {};
+  return Result<void>::success();
 }
 
 std::string gl_description() {

@@ -4,16 +4,17 @@
 
 #include <string>
 
+#include "common/result.hpp"
+
 namespace tumble::render {
 
 // A back end's GetProcAddress (OSMesaGetProcAddress, eglGetProcAddress): the entry point of that
 // name, or null.
 using GlProcLoader = void (*(*)(const char* name))();
 
-// Points every entry point of render/gl.hpp at the back end's; returns "" or the name of the
-// first entry point it lacks. Called by the back end once its context is current, before any
-// drawing.
-std::string load_gl_functions(GlProcLoader loader);
+// Points every entry point of render/gl.hpp at the back end's; the error is the name of the first
+// entry point it lacks. Called by the back end once its context is current, before any drawing.
+Result<void> load_gl_functions(GlProcLoader loader);
 
 // GL_RENDERER and GL_VERSION of the current context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits),
 // OpenGL 4.5 (Core Profile) Mesa 22.3.6".

@@ -2,9 +2,11 @@
 
 namespace tumble::render {
 
-GroundCache GroundCache::create(int width, int height, int samples, std::string& error) {
+Result<GroundCache> GroundCache::create(int width, int height, int samples) {
+  Result<Framebuffer> buffer = Framebuffer::create(width, height, samples);
+  if (!buffer) return Error{buffer.error()};
   GroundCache out;
-  out.buffer_ = Framebuffer::create(width, height, samples, error);
+  out.buffer_ = std::move(buffer).value();
   return out;
 }
 

@@ -26,8 +26,8 @@ class GroundCache {
  public:
   GroundCache() = default;  // nothing kept: for a renderer without ground
   // Kept in a framebuffer like the frame's: width × height, `samples` per pixel (1 = no
-  // multisampling). On failure returns an empty cache and sets `error`.
-  static GroundCache create(int width, int height, int samples, std::string& error);
+  // multisampling).
+  static Result<GroundCache> create(int width, int height, int samples);
 
   // Whether the kept picture is the one drawn for `key`.
   bool holds(const GroundKey& key) const { return drawn_ && key == key_; }

@@ -37,22 +37,22 @@ bool backend_built(Backend backend) {
   return false;
 }
 
-std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height, Backend backend,
-                                                           int egl_device, std::string& error) {
-  const auto unbuilt = [&](Backend wanted) {
-    error = std::string("this tumble was built without the ") + backend_name(wanted) +
-            " back end (CMake did not find " +
-            (wanted == Backend::osmesa ? "OSMesa: Debian's libosmesa6-dev" : "EGL: libegl-dev") +
-            ")";
-    return nullptr;
+Result<std::unique_ptr<OffscreenContext>> create_offscreen_context(int width, int height,
+                                                                   Backend backend,
+                                                                   int egl_device) {
+  const auto unbuilt = [&](Backend wanted) -> Result<std::unique_ptr<OffscreenContext>> {
+    return Error{
+        std::string("this tumble was built without the ") + backend_name(wanted) +
+        " back end (CMake did not find " +
+        (wanted == Backend::osmesa ? "OSMesa: Debian's libosmesa6-dev" : "EGL: libegl-dev") + ")"};
   };
   switch (backend) {
     case Backend::osmesa:
       if (!backend_built(backend)) return unbuilt(backend);
-      return create_osmesa_context(width, height, error);
+      return create_osmesa_context(width, height);
     case Backend::egl:
       if (!backend_built(backend)) return unbuilt(backend);
-      return create_egl_context(width, height, egl_device, error);
+      return create_egl_context(width, height, egl_device);
     case Backend::automatic:
       break;
   }
@@ -60,7 +60,7 @@ std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height
   // end every frame was drawn with before EGL came (the two give the same bytes on llvmpipe,
   // tested), then EGL, which newer Mesas keep.
   if (egl_device != kAutomaticEglDevice) {
-    return create_offscreen_context(width, height, Backend::egl, egl_device, error);
+    return create_offscreen_context(width, height, Backend::egl, egl_device);
   }
   const bool egl_first = egl_has_gpu();
   std::string tried;
@@ -68,13 +68,12 @@ std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height
                             egl_first ? Backend::osmesa : Backend::egl};
   for (const Backend each : order) {
     if (!backend_built(each)) continue;
-    std::string failure;
-    auto context = create_offscreen_context(width, height, each, egl_device, failure);
+    Result<std::unique_ptr<OffscreenContext>> context =
+        create_offscreen_context(width, height, each, egl_device);
     if (context) return context;
-    tried += std::string(tried.empty() ? "" : "; ") + backend_name(each) + ": " + failure;
+    tried += std::string(tried.empty() ? "" : "; ") + backend_name(each) + ": " + context.error();
   }
-  error = tried.empty() ? "this tumble was built with no off-screen back end" : tried;
-  return nullptr;
+  return Error{tried.empty() ? "this tumble was built with no off-screen back end" : tried};
 }
 
 }  // namespace tumble::render

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "common/render_settings.hpp"
+#include "common/result.hpp"
 
 namespace tumble::render {
 
@@ -42,15 +43,14 @@ bool egl_has_gpu();
 
 // Creates the context with `backend` and makes it current on the calling thread, with the GL
 // entry points of render/gl.hpp loaded from it. `egl_device` is an index into EGL's device list
-// or kAutomaticEglDevice (common/render_settings.hpp says what each chooses). On failure returns
-// null and sets `error` (for `automatic`, what each back end tried said).
-std::unique_ptr<OffscreenContext> create_offscreen_context(int width, int height, Backend backend,
-                                                           int egl_device, std::string& error);
+// or kAutomaticEglDevice (common/render_settings.hpp says what each chooses). For `automatic`, an
+// error gives what each back end tried said.
+Result<std::unique_ptr<OffscreenContext>> create_offscreen_context(int width, int height,
+                                                                   Backend backend, int egl_device);
 
 // The back ends' own constructors (osmesa_context.cpp, egl_context.cpp), for the one above.
-std::unique_ptr<OffscreenContext> create_osmesa_context(int width, int height, std::string& error);
-std::unique_ptr<OffscreenContext> create_egl_context(int width, int height, int device,
-                                                     std::string& error);
+Result<std::unique_ptr<OffscreenContext>> create_osmesa_context(int width, int height);
+Result<std::unique_ptr<OffscreenContext>> create_egl_context(int width, int height, int device);
 // The index of EGL's first device that is not Mesa's software one (a GPU), else
 // kAutomaticEglDevice (egl_context.cpp).
 int egl_hardware_device();

@@ -42,7 +42,7 @@ class OsmesaContext final : public OffscreenContext {
 
 }  // namespace
 
-std::unique_ptr<OffscreenContext> create_osmesa_context(int width, int height, std::string& error) {
+Result<std::unique_ptr<OffscreenContext>> create_osmesa_context(int width, int height) {
   const int attributes[] = {OSMESA_FORMAT,
                             OSMESA_RGBA,
                             OSMESA_DEPTH_BITS,
@@ -58,22 +58,19 @@ std::unique_ptr<OffscreenContext> create_osmesa_context(int width, int height, s
                             0};
   OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!context) {
-    error =
+    return Error{
         "OSMesaCreateContextAttribs failed: no OpenGL 3.3 core context (is Mesa's OSMesa "
-        "installed? Debian: libosmesa6)";
-    return nullptr;
+        "installed? Debian: libosmesa6)"};
   }
   auto out = std::make_unique<OsmesaContext>(context, width, height);
   if (!out->make_current()) {
-    error = "OSMesaMakeCurrent failed for a " + std::to_string(width) + "x" +
-            std::to_string(height) + " buffer";
-    return nullptr;
+    return Error{"OSMesaMakeCurrent failed for a " + std::to_string(width) + "x" +
+                 std::to_string(height) + " buffer"};
   }
-  if (const std::string missing = load_gl_functions(OSMesaGetProcAddress); !missing.empty()) {
-    error = "OSMesaGetProcAddress has no " + missing;
-    return nullptr;
+  if (const Result<void> loaded = load_gl_functions(OSMesaGetProcAddress); !loaded) {
+    return Error{"OSMesaGetProcAddress has no " + loaded.error()};
   }
-  return out;
+  return std::unique_ptr<OffscreenContext>(std::move(out));
 }
 
 }  // namespace tumble::render

@@ -9,9 +9,10 @@ Result<std::unique_ptr<OverlayLayer>> OverlayLayer::create(int width, int height
   std::unique_ptr<OverlayLayer> out(new OverlayLayer());
   out->width_ = width;
   out->height_ = height;
-  std::string error;
-  out->program_ = ShaderProgram::build(shader_directory, {"overlay.vert"}, {"overlay.frag"}, error);
-  if (!out->program_.valid()) return Error{error};
+  Result<ShaderProgram> program =
+      ShaderProgram::build(shader_directory, {"overlay.vert"}, {"overlay.frag"});
+  if (!program) return Error{program.error()};
+  out->program_ = std::move(program).value();
   out->opacity_ = out->program_.uniform("u_opacity");
   glGenVertexArrays(1, &out->vao_);
   glGenBuffers(1, &out->vbo_);

@@ -147,7 +147,7 @@ struct Renderer::Resources {
     glDeleteTextures(1, &shadow_texture);
   }
 
-  std::string create(const std::string& shader_directory);
+  Result<void> create(const std::string& shader_directory);
   FrameSetup setup(const FrameView& view) const;
   void draw_shadow_map(const FrameView& view, const FrameSetup& frame);
   // Binds `program` with the uniforms every lit shader shares.
@@ -166,30 +166,38 @@ struct Renderer::Resources {
   std::vector<Text> texts_with_labels(const FrameView& view, const FrameSetup& frame) const;
 };
 
-std::string Renderer::Resources::create(const std::string& shader_directory) {
-  std::string error;
-  context = create_offscreen_context(settings.width, settings.height, settings.backend,
-                                     settings.egl_device, error);
-  if (!context) return error;
+Result<void> Renderer::Resources::create(const std::string& shader_directory) {
+  Result<std::unique_ptr<OffscreenContext>> made_context = create_offscreen_context(
+      settings.width, settings.height, settings.backend, settings.egl_device);
+  if (!made_context) return Error{made_context.error()};
+  context = std::move(made_context).value();
+  // Each program compiled and linked, or the error.
+  const auto build = [&](ShaderProgram& program, const std::vector<std::string>& vertex_files,
+                         const std::vector<std::string>& fragment_files) -> Result<void> {
+    Result<ShaderProgram> built =
+        ShaderProgram::build(shader_directory, vertex_files, fragment_files);
+    if (!built) return Error{built.error()};
+    program = std::move(built).value();
+    return Result<void>::success();
+  };
 
-  body_program =
-      ShaderProgram::build(shader_directory, {"body.vert"}, {"lighting.glsl", "body.frag"}, error);
-  if (!body_program.valid()) return error;
-  ground_program = ShaderProgram::build(shader_directory, {"ground.vert"},
-                                        {"lighting.glsl", "ground.frag"}, error);
-  if (!ground_program.valid()) return error;
-  shadowed_ground_program =
-      ShaderProgram::build(shader_directory, {"ground.vert"},
-                           {"lighting.glsl", "receive_shadows.glsl", "ground.frag"}, error);
-  if (!shadowed_ground_program.valid()) return error;
-  shadow_program = ShaderProgram::build(shader_directory, {"shadow.vert"}, {"shadow.frag"}, error);
-  if (!shadow_program.valid()) return error;
-  box_shadow_program =
-      ShaderProgram::build(shader_directory, {"box_shadow.vert"}, {"shadow.frag"}, error);
-  if (!box_shadow_program.valid()) return error;
-  plane_program = ShaderProgram::build(shader_directory, {"plane.vert"},
-                                       {"lighting.glsl", "plane.frag"}, error);
-  if (!plane_program.valid()) return error;
+  if (Result<void> built = build(body_program, {"body.vert"}, {"lighting.glsl", "body.frag"});
+      !built)
+    return built;
+  if (Result<void> built = build(ground_program, {"ground.vert"}, {"lighting.glsl", "ground.frag"});
+      !built)
+    return built;
+  if (Result<void> built = build(shadowed_ground_program, {"ground.vert"},
+                                 {"lighting.glsl", "receive_shadows.glsl", "ground.frag"});
+      !built)
+    return built;
+  if (Result<void> built = build(shadow_program, {"shadow.vert"}, {"shadow.frag"}); !built)
+    return built;
+  if (Result<void> built = build(box_shadow_program, {"box_shadow.vert"}, {"shadow.frag"}); !built)
+    return built;
+  if (Result<void> built = build(plane_program, {"plane.vert"}, {"lighting.glsl", "plane.frag"});
+      !built)
+    return built;
 
   boxes = BoxBatch::create();
 
@@ -220,7 +228,7 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
     glDrawBuffer(GL_NONE);
     glReadBuffer(GL_NONE);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      return "shadow-map framebuffer is incomplete";
+      return Error{"shadow-map framebuffer is incomplete"};
     }
   }
 
@@ -228,17 +236,19 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
     GLint max_samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     if (settings.msaa > max_samples) {
-      return "[render] msaa = " + std::to_string(settings.msaa) +
-             " is more than this OpenGL allows: set it to " + std::to_string(max_samples) +
-             " or less";
+      return Error{"[render] msaa = " + std::to_string(settings.msaa) +
+                   " is more than this OpenGL allows: set it to " + std::to_string(max_samples) +
+                   " or less"};
     }
   }
   const int samples = std::max(settings.msaa, 1);
-  target = Framebuffer::create(settings.width, settings.height, samples, error);
-  if (!error.empty()) return error;
+  Result<Framebuffer> made_target = Framebuffer::create(settings.width, settings.height, samples);
+  if (!made_target) return Error{made_target.error()};
+  target = std::move(made_target).value();
   if (samples > 1) {
-    resolved = Framebuffer::create(settings.width, settings.height, 1, error);
-    if (!error.empty()) return error;
+    Result<Framebuffer> made_resolved = Framebuffer::create(settings.width, settings.height, 1);
+    if (!made_resolved) return Error{made_resolved.error()};
+    resolved = std::move(made_resolved).value();
   }
   // Frames are read top row first, as images are stored, by Mesa's pack-invert: no copy to flip.
   bool pack_invert = false;
@@ -249,40 +259,41 @@ std::string Renderer::Resources::create(const std::string& shader_directory) {
     pack_invert = pack_invert ||
                   std::string_view(reinterpret_cast<const char*>(name)) == "GL_MESA_pack_invert";
   }
-  if (!pack_invert) return "this OpenGL lacks GL_MESA_pack_invert (Mesa has it)";
+  if (!pack_invert) return Error{"this OpenGL lacks GL_MESA_pack_invert (Mesa has it)"};
   glPixelStorei(GL_PACK_INVERT_MESA, GL_TRUE);
   rgba.resize(static_cast<std::size_t>(settings.width) * settings.height * 4);
   if (settings.ground.enabled) {
-    ground = GroundCache::create(settings.width, settings.height, samples, error);
-    if (!error.empty()) return error;
+    Result<GroundCache> made_ground = GroundCache::create(settings.width, settings.height, samples);
+    if (!made_ground) return Error{made_ground.error()};
+    ground = std::move(made_ground).value();
   }
   if (!settings.font.empty()) {
     Result<std::unique_ptr<TextLayer>> layer =
         TextLayer::create(settings.width, settings.height, settings.font);
-    if (!layer) return layer.error();
+    if (!layer) return Error{layer.error()};
     text = std::move(layer).value();
   }
   if (settings.overlays) {
     Result<std::unique_ptr<OverlayLayer>> layer =
         OverlayLayer::create(settings.width, settings.height, shader_directory);
-    if (!layer) return layer.error();
+    if (!layer) return Error{layer.error()};
     overlay = std::move(layer).value();
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  if (glGetError() != GL_NO_ERROR) return "OpenGL error while setting up the renderer";
-  return {};
+  if (glGetError() != GL_NO_ERROR) return Error{"OpenGL error while setting up the renderer"};
+  return Result<void>::success();
 }
 
 Renderer::Renderer(std::unique_ptr<Resources> resources) : resources_(std::move(resources)) {}
 Renderer::~Renderer() = default;
 
-std::unique_ptr<Renderer> Renderer::create(const RenderSettings& settings,
-                                           const std::string& shader_directory,
-                                           std::string& error) {
+Result<std::unique_ptr<Renderer>> Renderer::create(const RenderSettings& settings,
+                                                   const std::string& shader_directory) {
   auto resources = std::make_unique<Resources>();
   resources->settings = settings;
-  error = resources->create(shader_directory);
-  if (!error.empty()) return nullptr;
+  if (Result<void> created = resources->create(shader_directory); !created) {
+    return Error{created.error()};
+  }
   return std::unique_ptr<Renderer>(new Renderer(std::move(resources)));
 }
 

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "common/result.hpp"
 #include "io/image.hpp"
 #include "render/font.hpp"
 #include "render/frame.hpp"
@@ -19,10 +20,10 @@ class Renderer {
  public:
   // Creates the off-screen context (current on the calling thread from then on), loads the
   // shaders from `shader_directory` and the GPU buffers, and the font when the settings name one.
-  // On failure returns null and sets `error` (a file name and compiler log for shader errors,
-  // the family for a font fontconfig does not have).
-  static std::unique_ptr<Renderer> create(const RenderSettings& settings,
-                                          const std::string& shader_directory, std::string& error);
+  // An error gives a file name and compiler log for shader errors, the family for a font
+  // fontconfig does not have.
+  static Result<std::unique_ptr<Renderer>> create(const RenderSettings& settings,
+                                                  const std::string& shader_directory);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

@@ -29,26 +29,23 @@ std::string join(const std::vector<std::string>& names) {
   return out;
 }
 
-// Reads and concatenates the files; returns false and sets `error` if one cannot be read.
-bool read_sources(const std::string& directory, const std::vector<std::string>& files,
-                  std::string& source, std::string& error) {
+// The files read and concatenated, or the one that cannot be read.
+Result<std::string> read_sources(const std::string& directory,
+                                 const std::vector<std::string>& files) {
+  std::string source;
   for (const std::string& name : files) {
     const std::string path = directory + "/" + name;
     std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      error = path + ": cannot open shader file";
-      return false;
-    }
+    if (!in) return Error{path + ": cannot open shader file"};
     std::ostringstream text;
     text << in.rdbuf();
     source += text.str();
     source += '\n';
   }
-  return true;
+  return source;
 }
 
-GLuint compile(GLenum stage, const std::string& source, const std::string& label,
-               std::string& error) {
+Result<GLuint> compile(GLenum stage, const std::string& source, const std::string& label) {
   const GLuint shader = glCreateShader(stage);
   const char* text = source.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -56,9 +53,9 @@ GLuint compile(GLenum stage, const std::string& source, const std::string& label
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (ok != GL_TRUE) {
-    error = label + ": shader compilation failed:\n" + info_log(shader, false);
+    const std::string log = info_log(shader, false);
     glDeleteShader(shader);
-    return 0;
+    return Error{label + ": shader compilation failed:\n" + log};
   }
   return shader;
 }
@@ -79,38 +76,34 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
   return *this;
 }
 
-ShaderProgram ShaderProgram::build(const std::string& directory,
-                                   const std::vector<std::string>& vertex_files,
-                                   const std::vector<std::string>& fragment_files,
-                                   std::string& error) {
-  std::string vertex_source;
-  std::string fragment_source;
-  if (!read_sources(directory, vertex_files, vertex_source, error) ||
-      !read_sources(directory, fragment_files, fragment_source, error)) {
-    return {};
-  }
+Result<ShaderProgram> ShaderProgram::build(const std::string& directory,
+                                           const std::vector<std::string>& vertex_files,
+                                           const std::vector<std::string>& fragment_files) {
+  const Result<std::string> vertex_source = read_sources(directory, vertex_files);
+  if (!vertex_source) return Error{vertex_source.error()};
+  const Result<std::string> fragment_source = read_sources(directory, fragment_files);
+  if (!fragment_source) return Error{fragment_source.error()};
   const std::string vertex_label = directory + "/" + join(vertex_files);
   const std::string fragment_label = directory + "/" + join(fragment_files);
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_source, vertex_label, error);
-  if (!vertex) return {};
-  const GLuint fragment = compile(GL_FRAGMENT_SHADER, fragment_source, fragment_label, error);
+  const Result<GLuint> vertex = compile(GL_VERTEX_SHADER, *vertex_source, vertex_label);
+  if (!vertex) return Error{vertex.error()};
+  const Result<GLuint> fragment = compile(GL_FRAGMENT_SHADER, *fragment_source, fragment_label);
   if (!fragment) {
-    glDeleteShader(vertex);
-    return {};
+    glDeleteShader(*vertex);
+    return Error{fragment.error()};
   }
   const GLuint program = glCreateProgram();
-  glAttachShader(program, vertex);
-  glAttachShader(program, fragment);
+  glAttachShader(program, *vertex);
+  glAttachShader(program, *fragment);
   glLinkProgram(program);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
+  glDeleteShader(*vertex);
+  glDeleteShader(*fragment);
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
-    error =
-        vertex_label + ", " + fragment_label + ": shader link failed:\n" + info_log(program, true);
+    const std::string log = info_log(program, true);
     glDeleteProgram(program);
-    return {};
+    return Error{vertex_label + ", " + fragment_label + ": shader link failed:\n" + log};
   }
   return ShaderProgram(program);
 }

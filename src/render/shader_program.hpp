@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "common/result.hpp"
 #include "render/gl.hpp"
 
 namespace tumble::render {
@@ -18,11 +19,10 @@ class ShaderProgram {
   ShaderProgram& operator=(const ShaderProgram&) = delete;
 
   // Compiles and links. Each stage is the concatenation of its files, in order (so a shared
-  // file can come first). On failure returns an empty program and sets `error` to the file
-  // names and the compiler's or linker's log.
-  static ShaderProgram build(const std::string& directory,
-                             const std::vector<std::string>& vertex_files,
-                             const std::vector<std::string>& fragment_files, std::string& error);
+  // file can come first). An error gives the file names and the compiler's or linker's log.
+  static Result<ShaderProgram> build(const std::string& directory,
+                                     const std::vector<std::string>& vertex_files,
+                                     const std::vector<std::string>& fragment_files);
 
   GLuint id() const { return id_; }
   bool valid() const { return id_ != 0; }

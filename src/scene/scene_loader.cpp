@@ -300,11 +300,11 @@ Scene read_scene(const toml::table& root, const std::string& file) {
 
 }  // namespace
 
-SceneOrError parse_scene(std::string_view text, const std::string& path) {
+Result<Scene> parse_scene(std::string_view text, const std::string& path) {
   if (const std::optional<TextPosition> at = find_overlong_dotted_key(text)) {
-    return SceneError{path + ':' + std::to_string(at->line) + ':' + std::to_string(at->column) +
-                      ": a dotted key of more than " + std::to_string(kMaxKeyParts) +
-                      " parts (scene keys have at most 3)"};
+    return Error{path + ':' + std::to_string(at->line) + ':' + std::to_string(at->column) +
+                 ": a dotted key of more than " + std::to_string(kMaxKeyParts) +
+                 " parts (scene keys have at most 3)"};
   }
   try {
     const toml::table root = toml::parse(text, path);
@@ -313,9 +313,9 @@ SceneOrError parse_scene(std::string_view text, const std::string& path) {
     std::ostringstream out;
     out << path << ':' << error.source().begin.line << ':' << error.source().begin.column
         << ": TOML syntax error: " << error.description();
-    return SceneError{out.str()};
+    return Error{out.str()};
   } catch (const LoadFailure& failure) {
-    return SceneError{failure.what()};
+    return Error{failure.what()};
   }
 }
 
@@ -339,9 +339,9 @@ Result<std::string> read_scene_text(const std::string& path) {
   return text;
 }
 
-SceneOrError load_scene_file(const std::string& path) {
+Result<Scene> load_scene_file(const std::string& path) {
   const Result<std::string> text = read_scene_text(path);
-  if (!text) return SceneError{text.error()};
+  if (!text) return Error{text.error()};
   return parse_scene(*text, path);
 }
 

@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
-#include <variant>
 
 #include "common/result.hpp"
 #include "scene/limits.hpp"
@@ -12,22 +11,15 @@
 
 namespace tumble::scene {
 
-// A scene that could not be loaded. `message` is complete and ready to print, in the form
-// "path:line:column: key: what is wrong".
-struct SceneError {
-  std::string message;
-};
-
-using SceneOrError = std::variant<Scene, SceneError>;
-
-// Loads a scene from a file; the file's stem is the default scene name.
-SceneOrError load_scene_file(const std::string& path);
+// Loads a scene from a file; the file's stem is the default scene name. An error's message is
+// complete and ready to print, in the form "path:line:column: key: what is wrong".
+Result<Scene> load_scene_file(const std::string& path);
 
 // A scene file's bytes, as load_scene_file reads them (up to kMaxSceneFileBytes), for a caller
 // that keeps them (a render hashes the scene it drew); errors name the path.
 Result<std::string> read_scene_text(const std::string& path);
 
 // Loads a scene from text; `path` names it in messages and gives the default name.
-SceneOrError parse_scene(std::string_view text, const std::string& path);
+Result<Scene> parse_scene(std::string_view text, const std::string& path);
 
 }  // namespace tumble::scene

@@ -17,7 +17,8 @@ namespace tumble::scene::detail {
 using physics::Quat;
 using physics::Vec3;
 
-// Thrown inside the loader only; load_scene_file/parse_scene turn it into a SceneError.
+// Thrown inside the loader only; load_scene_file/parse_scene catch it and return its message
+// as an Error.
 struct LoadFailure : std::runtime_error {
   using std::runtime_error::runtime_error;
 };

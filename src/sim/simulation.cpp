@@ -38,8 +38,8 @@ bool within_bounds(const physics::BodyState& state) {
 
 }  // namespace
 
-std::string blow_up_problem(const physics::BodyState& state) {
-  if (within_bounds(state)) return {};
+Result<void> check_in_bounds(const physics::BodyState& state) {
+  if (within_bounds(state)) return Result<void>::success();
   const auto check = [](const auto& value, double bound, const char* name,
                         const char* unit) -> std::string {
     if (!value.allFinite()) return std::string("its ") + name + " is not finite";
@@ -50,13 +50,14 @@ std::string blow_up_problem(const physics::BodyState& state) {
                   size, unit, bound, unit);
     return text;
   };
-  if (!state.orientation().coeffs().allFinite()) return "its orientation is not finite";
+  if (!state.orientation().coeffs().allFinite()) return Error{"its orientation is not finite"};
   std::string problem = check(state.position(), kMaxPosition, "distance from the origin", "m");
   if (problem.empty()) problem = check(state.velocity(), kMaxSpeed, "speed", "m/s");
   if (problem.empty()) {
     problem = check(state.angular_velocity(), kMaxAngularSpeed, "angular speed", "rad/s");
   }
-  return problem;
+  if (problem.empty()) return Result<void>::success();
+  return Error{std::move(problem)};
 }
 
 void Simulation::step() {
@@ -73,8 +74,8 @@ void Simulation::step() {
   }
   ++step_count_;
   for (std::size_t i = 0; i < models_.size(); ++i) {
-    if (std::string problem = blow_up_problem(current_[i]); !problem.empty()) {
-      blow_up_ = BlowUp{.body = i, .time = time(), .step = step_count_, .what = std::move(problem)};
+    if (const Result<void> checked = check_in_bounds(current_[i]); !checked) {
+      blow_up_ = BlowUp{.body = i, .time = time(), .step = step_count_, .what = checked.error()};
       return;
     }
   }

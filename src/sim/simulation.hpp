@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/result.hpp"
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
@@ -29,8 +30,9 @@ struct BlowUp {
   std::string what;       // e.g. "its velocity is not finite"
 };
 
-// "" when the state is finite and within the bounds above, else what is wrong with it.
-std::string blow_up_problem(const physics::BodyState& state);
+// Succeeds when the state is finite and within the bounds above; else the error says what is
+// wrong with it ("its speed is not finite"), for BlowUp::what.
+Result<void> check_in_bounds(const physics::BodyState& state);
 
 class Simulation {
  public:

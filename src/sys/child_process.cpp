@@ -49,13 +49,14 @@ std::string how_it_ended(int status) {
 
 }  // namespace
 
-std::string run_reading_lines(const std::string& program, const std::vector<std::string>& arguments,
-                              const std::function<bool(std::string_view line)>& on_line) {
+Result<void> run_reading_lines(const std::string& program,
+                               const std::vector<std::string>& arguments,
+                               const std::function<bool(std::string_view line)>& on_line) {
   int pipe_ends[2];
   // Close-on-exec, so that no other child inherits them; dup2 onto the child's standard output
   // clears the flag on that copy only.
   if (::pipe2(pipe_ends, O_CLOEXEC) != 0) {
-    return "cannot run " + program + ": pipe: " + std::strerror(errno);
+    return Error{"cannot run " + program + ": pipe: " + std::strerror(errno)};
   }
   std::vector<char*> argv;
   argv.push_back(const_cast<char*>(program.c_str()));
@@ -83,7 +84,7 @@ std::string run_reading_lines(const std::string& program, const std::vector<std:
   ::close(pipe_ends[1]);  // else the read below would never see the end of the child's output
   if (spawned != 0) {
     ::close(pipe_ends[0]);
-    return "cannot run " + program + ": " + std::strerror(spawned);
+    return Error{"cannot run " + program + ": " + std::strerror(spawned)};
   }
 
   const ReadEnd read = read_lines(pipe_ends[0], on_line);
@@ -92,12 +93,13 @@ std::string run_reading_lines(const std::string& program, const std::vector<std:
   ::close(pipe_ends[0]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return "waiting for " + program + " failed: " + std::strerror(errno);
+    if (errno != EINTR) return Error{"waiting for " + program + " failed: " + std::strerror(errno)};
   }
-  if (read == ReadEnd::failed) return "reading the output of " + program + " failed: " + read_error;
-  if (read == ReadEnd::stopped) return program + " was stopped";
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
-  return program + " " + how_it_ended(status);
+  if (read == ReadEnd::failed)
+    return Error{"reading the output of " + program + " failed: " + read_error};
+  if (read == ReadEnd::stopped) return Error{program + " was stopped"};
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return Result<void>::success();
+  return Error{program + " " + how_it_ended(status)};
 }
 
 }  // namespace tumble::sys

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/result.hpp"
+
 namespace tumble::sys {
 
 // Runs the executable at `program` (a path; PATH is not searched) with `arguments`, and hands
@@ -14,8 +16,10 @@ namespace tumble::sys {
 // input and error are tumble's. When `on_line` returns false the program is stopped (SIGTERM)
 // and waited for; the caller knows why.
 //
-// Returns "" when the program ran and exited with status 0, else why not, naming `program`.
-std::string run_reading_lines(const std::string& program, const std::vector<std::string>& arguments,
-                              const std::function<bool(std::string_view line)>& on_line);
+// Succeeds when the program ran and exited with status 0; else the error says why not, naming
+// `program`.
+Result<void> run_reading_lines(const std::string& program,
+                               const std::vector<std::string>& arguments,
+                               const std::function<bool(std::string_view line)>& on_line);
 
 }  // namespace tumble::sys

@@ -16,6 +16,7 @@
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/command_test.hpp"
+#include "support/result_text.hpp"
 
 using tumble::testing::read_file;
 
@@ -28,8 +29,8 @@ class DroppedCube : public tumble::testing::CommandTest {};
 
 TEST_F(DroppedCube, RestsOnTheFloorWithinAPixelAt720p) {
   const auto loaded = tumble::scene::load_scene_file(kScene);
-  ASSERT_TRUE(std::holds_alternative<tumble::scene::Scene>(loaded));
-  const tumble::scene::Scene& scene = std::get<tumble::scene::Scene>(loaded);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  const tumble::scene::Scene& scene = *loaded;
   tumble::sim::Simulation simulation = tumble::scene::build_simulation(scene);
   const auto states = simulation.states_at(scene.duration);
   const tumble::physics::Plane floor = tumble::scene::plane(scene.planes.front());
@@ -53,12 +54,14 @@ TEST_F(DroppedCube, LastFrameMatchesItsGolden) {
              " --width 320 --height 180 --no-video --frames 239:240 -q");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   tumble::io::Image frame, golden;
-  ASSERT_EQ(tumble::io::read_png(path("out/dropped_cube/frames/frame_00239.png"), frame), "");
+  ASSERT_EQ(::tumble::testing::take(
+                tumble::io::read_png(path("out/dropped_cube/frames/frame_00239.png")), frame),
+            "");
   if (std::getenv("TUMBLE_UPDATE_GOLDEN")) {
-    ASSERT_EQ(tumble::io::write_png(golden_path, frame), "");
+    ASSERT_EQ(::tumble::testing::error_text(tumble::io::write_png(golden_path, frame)), "");
     GTEST_SKIP() << "wrote " << golden_path;
   }
-  ASSERT_EQ(tumble::io::read_png(golden_path, golden), "");
+  ASSERT_EQ(::tumble::testing::take(tumble::io::read_png(golden_path), golden), "");
   ASSERT_EQ(golden.width, frame.width);
   ASSERT_EQ(golden.height, frame.height);
   // As the renderer's goldens: 8 levels per channel, on at most 1% of the pixels.

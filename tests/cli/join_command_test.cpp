@@ -12,6 +12,7 @@
 #include "io/json_text.hpp"
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
+#include "support/result_text.hpp"
 #include "support/scene_text.hpp"
 #include "support/test_frames.hpp"
 #include "support/video_reader.hpp"
@@ -117,7 +118,9 @@ TEST_F(JoinCommand, ThreeUnevenChunksJoinIntoTheWholeRender) {
     EXPECT_NEAR(joined_video.pictures[k].time, whole_video.pictures[k].time, 1e-9) << k;
     EXPECT_NEAR(joined_video.pictures[k].time, static_cast<double>(k) / 30, 1e-9) << k;
     tumble::io::Image source;
-    ASSERT_EQ(tumble::io::read_png((whole / "frames" / frame_names[k]).string(), source), "");
+    ASSERT_EQ(::tumble::testing::take(
+                  tumble::io::read_png((whole / "frames" / frame_names[k]).string()), source),
+              "");
     const auto& joined_rgb = joined_video.pictures[k].rgb;
     const double rms = tumble::testing::rms_difference(joined_rgb, whole_video.pictures[k].rgb);
     const double from_source = tumble::testing::rms_difference(joined_rgb, source);
@@ -217,7 +220,9 @@ TEST_F(JoinCommand, ChunksWithAnMp4AndAWebmJoinIntoBoth) {
   for (std::size_t k = 0; k < 15; ++k) {
     EXPECT_NEAR(webm.pictures[k].time, static_cast<double>(k) / 30, 1e-3) << k;
     tumble::io::Image source;
-    ASSERT_EQ(tumble::io::read_png((joined / "frames" / frame_names[k]).string(), source), "");
+    ASSERT_EQ(::tumble::testing::take(
+                  tumble::io::read_png((joined / "frames" / frame_names[k]).string()), source),
+              "");
     worst = std::max(worst, tumble::testing::rms_difference(webm.pictures[k].rgb, source));
   }
   std::printf("[ measured ] joined WebM: RMS at most %.3f from the PNGs\n", worst);

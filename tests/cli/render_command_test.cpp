@@ -12,6 +12,7 @@
 #include "io/png_io.hpp"
 #include "render/offscreen_context.hpp"
 #include "support/command_test.hpp"
+#include "support/result_text.hpp"
 #include "support/scene_text.hpp"
 #include "support/video_reader.hpp"
 
@@ -47,7 +48,7 @@ TEST_F(RenderCommand, WritesEveryFrameAndAnH264Mp4OfTheRightShape) {
   }
   EXPECT_EQ(frames, 15);
   Image last;
-  ASSERT_EQ(tumble::io::read_png(frame("out", 14), last), "");
+  ASSERT_EQ(::tumble::testing::take(tumble::io::read_png(frame("out", 14)), last), "");
   EXPECT_EQ(last.width, 160);
   EXPECT_EQ(last.height, 120);
 
@@ -204,7 +205,7 @@ TEST_F(RenderCommand, AnOverrideThatBreaksAVideoRuleGivesOneClearError) {
       tumble("render -q --no-video --width 161 --frames 0:1 " + scene() + " -o " + path("odd"));
   ASSERT_EQ(frames.exit_code, 0) << frames.err;
   Image image;
-  ASSERT_EQ(tumble::io::read_png(frame("odd", 0), image), "");
+  ASSERT_EQ(::tumble::testing::take(tumble::io::read_png(frame("odd", 0)), image), "");
   EXPECT_EQ(image.width, 161);
 }
 

@@ -10,6 +10,7 @@
 #include "io/image.hpp"
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
+#include "support/result_text.hpp"
 
 namespace {
 
@@ -34,9 +35,11 @@ class DiffCommand : public tumble::testing::CommandTest {
     CommandTest::SetUp();
     Image changed = base_image();
     changed.row(1)[3 * 2 + 0] += 10;  // pixel (2, 1), red + 10
-    ASSERT_EQ(tumble::io::write_png(path("a.png"), base_image()), "");
-    ASSERT_EQ(tumble::io::write_png(path("a_copy.png"), base_image()), "");
-    ASSERT_EQ(tumble::io::write_png(path("b.png"), changed), "");
+    ASSERT_EQ(::tumble::testing::error_text(tumble::io::write_png(path("a.png"), base_image())),
+              "");
+    ASSERT_EQ(
+        ::tumble::testing::error_text(tumble::io::write_png(path("a_copy.png"), base_image())), "");
+    ASSERT_EQ(::tumble::testing::error_text(tumble::io::write_png(path("b.png"), changed)), "");
   }
 };
 
@@ -73,7 +76,7 @@ TEST_F(DiffCommand, OutWritesTheDiffImageAtTheImagesSize) {
       tumble("diff " + path("a.png") + " " + path("b.png") + " --out " + path("diff.png"));
   EXPECT_EQ(run.exit_code, 1) << run.err;
   Image diff;
-  ASSERT_EQ(tumble::io::read_png(path("diff.png"), diff), "");
+  ASSERT_EQ(::tumble::testing::take(tumble::io::read_png(path("diff.png")), diff), "");
   EXPECT_EQ(diff.width, 4);
   EXPECT_EQ(diff.height, 3);
   const std::uint8_t* changed = diff.row(1) + 3 * 2;
@@ -90,7 +93,7 @@ TEST_F(DiffCommand, OutIsWrittenAlsoWhenTheImagesMatch) {
       tumble("diff " + path("a.png") + " " + path("a_copy.png") + " --out " + path("diff.png"));
   EXPECT_EQ(run.exit_code, 0) << run.err;
   Image diff;
-  ASSERT_EQ(tumble::io::read_png(path("diff.png"), diff), "");
+  ASSERT_EQ(::tumble::testing::take(tumble::io::read_png(path("diff.png")), diff), "");
   EXPECT_EQ(diff.width, 4);
   EXPECT_EQ(diff.height, 3);
 }
@@ -111,7 +114,8 @@ TEST_F(DiffCommand, AFileThatIsNotAPngIsAnErrorWithExitTwo) {
 }
 
 TEST_F(DiffCommand, DifferentSizesAreAnErrorNamingBothSizes) {
-  ASSERT_EQ(tumble::io::write_png(path("wide.png"), Image(5, 3)), "");
+  ASSERT_EQ(::tumble::testing::error_text(tumble::io::write_png(path("wide.png"), Image(5, 3))),
+            "");
   const Outcome run =
       tumble("diff " + path("a.png") + " " + path("wide.png") + " --out " + path("diff.png"));
   EXPECT_EQ(run.exit_code, 2);

@@ -10,6 +10,7 @@
 
 #include "diff/diff_inputs.hpp"
 #include "io/png_io.hpp"
+#include "support/result_text.hpp"
 
 namespace tumble::diff {
 namespace {
@@ -34,16 +35,20 @@ class DiffRun : public ::testing::Test {
     for (int k = 0; k < 14; ++k) {
       char name[32];
       std::snprintf(name, sizeof name, "frame_%05d.png", k);
-      ASSERT_EQ(io::write_png((root_ / "a" / name).string(), frame(k, false)), "");
-      ASSERT_EQ(io::write_png((root_ / "b" / name).string(), frame(k, true)), "");
+      ASSERT_EQ(::tumble::testing::error_text(
+                    io::write_png((root_ / "a" / name).string(), frame(k, false))),
+                "");
+      ASSERT_EQ(::tumble::testing::error_text(
+                    io::write_png((root_ / "b" / name).string(), frame(k, true))),
+                "");
     }
   }
   void TearDown() override { fs::remove_all(root_); }
 
   SequenceDiff run(unsigned threads) {
     DiffInput first, second;
-    EXPECT_EQ(resolve_diff_input((root_ / "a").string(), first), "");
-    EXPECT_EQ(resolve_diff_input((root_ / "b").string(), second), "");
+    EXPECT_EQ(::tumble::testing::take(resolve_diff_input((root_ / "a").string()), first), "");
+    EXPECT_EQ(::tumble::testing::take(resolve_diff_input((root_ / "b").string()), second), "");
     SequenceOptions options;
     options.keep_images = true;
     options.threads = threads;

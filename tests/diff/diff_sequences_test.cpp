@@ -14,6 +14,7 @@
 #include "io/png_io.hpp"
 #include "io/video_encoder.hpp"
 #include "support/command_test.hpp"
+#include "support/result_text.hpp"
 
 namespace {
 
@@ -74,7 +75,9 @@ class DiffSequences : public tumble::testing::CommandTest {
     fs::create_directories(dir_ / folder);
     for (int k = 0; k < count; ++k) {
       const Image frame = moving_square(k >= shift_from && shift_from >= 0 ? k + shift : k);
-      ASSERT_EQ(tumble::io::write_png(path(folder + "/" + frame_name(k)), frame), "");
+      ASSERT_EQ(::tumble::testing::error_text(
+                    tumble::io::write_png(path(folder + "/" + frame_name(k)), frame)),
+                "");
     }
   }
 
@@ -84,10 +87,12 @@ class DiffSequences : public tumble::testing::CommandTest {
     settings.height = 48;
     settings.fps = 30;
     std::string error;
-    auto encoder = tumble::io::VideoEncoder::open(path(name), settings, error);
+    auto encoder = ::tumble::testing::value_or_empty(
+        tumble::io::VideoEncoder::open(path(name), settings), error);
     ASSERT_TRUE(encoder) << error;
-    for (int k = 0; k < count; ++k) ASSERT_EQ(encoder->add_frame(moving_square(k)), "");
-    ASSERT_EQ(encoder->finish(), "");
+    for (int k = 0; k < count; ++k)
+      ASSERT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_square(k))), "");
+    ASSERT_EQ(::tumble::testing::error_text(encoder->finish()), "");
   }
 
   void render(const std::string& root, double degrees) {

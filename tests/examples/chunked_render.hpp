@@ -13,6 +13,7 @@
 #include "diff/image_diff.hpp"
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
+#include "support/result_text.hpp"
 #include "support/video_reader.hpp"
 
 namespace tumble::testing {
@@ -62,7 +63,7 @@ inline std::vector<double> rms_to_each_frame(const Image& picture,
   std::vector<double> rms;
   for (int k = 0; k < kTinyFrames; ++k) {
     Image png;
-    EXPECT_EQ(io::read_png((frames / frame_name(k)).string(), png), "");
+    EXPECT_EQ(::tumble::testing::take(io::read_png((frames / frame_name(k)).string()), png), "");
     rms.push_back(png.width == picture.width && png.height == picture.height
                       ? diff::compare_images(png, picture, {.threshold = 255, .max_pixels = 0}).rms
                       : 255.0);

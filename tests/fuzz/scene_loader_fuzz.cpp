@@ -17,12 +17,12 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace tumble;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const scene::SceneOrError loaded = scene::parse_scene(text, "fuzz.toml");
-  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
-    if (error->message.rfind("fuzz.toml:", 0) != 0) std::abort();  // every error names the file
+  const Result<scene::Scene> loaded = scene::parse_scene(text, "fuzz.toml");
+  if (!loaded) {
+    if (loaded.error().rfind("fuzz.toml:", 0) != 0) std::abort();  // every error names the file
     return 0;
   }
-  const scene::Scene& scene = std::get<scene::Scene>(loaded);
+  const scene::Scene& scene = *loaded;
   for (const scene::BodySpec& body : scene.bodies) {
     const physics::BodyModel model{.constants = scene::body_constants(body), .forces = body.forces};
     sim::check_step(model, scene::initial_state(body), scene.physics.integrator, scene.physics.dt,

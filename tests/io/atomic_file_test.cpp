@@ -1,4 +1,5 @@
 #include "io/atomic_file.hpp"
+#include "support/result_text.hpp"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -33,8 +34,11 @@ class AtomicFileTest : public ::testing::Test {
     text << in.rdbuf();
     return text.str();
   }
-  static bool write(AtomicFile& file, const std::string& text) {
-    return file.ok() && std::fputs(text.c_str(), file.stream()) >= 0 && file.commit();
+  // "" once `text` is the whole file, else why not.
+  static std::string write(Result<AtomicFile>& file, const std::string& text) {
+    if (!file) return file.error();
+    if (std::fputs(text.c_str(), file->stream()) < 0) return "fputs failed";
+    return ::tumble::testing::error_text(file->commit());
   }
   int entries() const {
     int count = 0;
@@ -48,11 +52,11 @@ class AtomicFileTest : public ::testing::Test {
 };
 
 TEST_F(AtomicFileTest, TheFileAppearsOnlyOnCommit) {
-  AtomicFile file((root_ / "a.csv").string());
+  Result<AtomicFile> file = AtomicFile::open((root_ / "a.csv").string());
   ASSERT_TRUE(file.ok()) << file.error();
-  std::fputs("rows", file.stream());
+  std::fputs("rows", file->stream());
   EXPECT_FALSE(fs::exists(root_ / "a.csv"));
-  ASSERT_TRUE(file.commit()) << file.error();
+  ASSERT_EQ(::tumble::testing::error_text(file->commit()), "");
   EXPECT_EQ(get(root_ / "a.csv"), "rows");
   EXPECT_EQ(entries(), 1);
 }
@@ -60,8 +64,8 @@ TEST_F(AtomicFileTest, TheFileAppearsOnlyOnCommit) {
 TEST_F(AtomicFileTest, WithoutCommitNothingIsLeftAndTheOldFileIsKept) {
   std::ofstream(root_ / "a.csv") << "old";
   {
-    AtomicFile file((root_ / "a.csv").string());
-    std::fputs("half", file.stream());
+    Result<AtomicFile> file = AtomicFile::open((root_ / "a.csv").string());
+    std::fputs("half", file->stream());
   }
   EXPECT_EQ(get(root_ / "a.csv"), "old");
   EXPECT_EQ(entries(), 1);
@@ -72,8 +76,8 @@ TEST_F(AtomicFileTest, ALinkStaysALinkAndItsFileIsReplaced) {
   fs::create_directories(root_ / "real");
   std::ofstream(root_ / "real/a.csv") << "old";
   fs::create_symlink("real/a.csv", root_ / "link.csv");
-  AtomicFile file((root_ / "link.csv").string());
-  ASSERT_TRUE(write(file, "new")) << file.error();
+  Result<AtomicFile> file = AtomicFile::open((root_ / "link.csv").string());
+  ASSERT_EQ(write(file, "new"), "");
   EXPECT_TRUE(fs::is_symlink(root_ / "link.csv"));
   EXPECT_EQ(get(root_ / "real/a.csv"), "new");
   EXPECT_EQ(entries(), 2);  // real/ and link.csv: no temporary file beside either
@@ -81,8 +85,8 @@ TEST_F(AtomicFileTest, ALinkStaysALinkAndItsFileIsReplaced) {
 
 TEST_F(AtomicFileTest, ADanglingLinkComesToNameTheNewFile) {
   fs::create_symlink("real.csv", root_ / "link.csv");
-  AtomicFile file((root_ / "link.csv").string());
-  ASSERT_TRUE(write(file, "new")) << file.error();
+  Result<AtomicFile> file = AtomicFile::open((root_ / "link.csv").string());
+  ASSERT_EQ(write(file, "new"), "");
   EXPECT_TRUE(fs::is_symlink(root_ / "link.csv"));
   EXPECT_EQ(get(root_ / "real.csv"), "new");
   EXPECT_EQ(entries(), 2);
@@ -91,13 +95,13 @@ TEST_F(AtomicFileTest, ADanglingLinkComesToNameTheNewFile) {
 // Only what a path *is* decides how it is written, not how it is spelt: a new file reached
 // through /proc (a magic link in the middle of the path) is still written beside and renamed.
 TEST_F(AtomicFileTest, APathThroughProcIsStillReplacedWhole) {
-  AtomicFile file("/proc/self/root" + (root_ / "a.csv").string());
+  Result<AtomicFile> file = AtomicFile::open("/proc/self/root" + (root_ / "a.csv").string());
   ASSERT_TRUE(file.ok()) << file.error();
-  std::fputs("rows", file.stream());
-  std::fflush(file.stream());
+  std::fputs("rows", file->stream());
+  std::fflush(file->stream());
   EXPECT_FALSE(fs::exists(root_ / "a.csv"));
   EXPECT_EQ(entries(), 1);  // the temporary file
-  ASSERT_TRUE(file.commit()) << file.error();
+  ASSERT_EQ(::tumble::testing::error_text(file->commit()), "");
   EXPECT_EQ(get(root_ / "a.csv"), "rows");
   EXPECT_EQ(entries(), 1);
 }
@@ -108,8 +112,8 @@ TEST_F(AtomicFileTest, ADescriptorPathWritesThroughTheDescriptor) {
   const int descriptor = ::open((root_ / "log.csv").c_str(), O_WRONLY | O_APPEND);
   ASSERT_GE(descriptor, 0);
   for (const std::string spelling : {"/dev/fd/", "/proc/self/fd/"}) {
-    AtomicFile file(spelling + std::to_string(descriptor));
-    EXPECT_TRUE(write(file, spelling + "\n")) << file.error();
+    Result<AtomicFile> file = AtomicFile::open(spelling + std::to_string(descriptor));
+    EXPECT_EQ(write(file, spelling + "\n"), "");
   }
   ::close(descriptor);
   EXPECT_EQ(get(root_ / "log.csv"), "earlier\n/dev/fd/\n/proc/self/fd/\n");
@@ -119,7 +123,7 @@ TEST_F(AtomicFileTest, ADescriptorPathWritesThroughTheDescriptor) {
 TEST_F(AtomicFileTest, ALoopOfLinksIsAnError) {
   fs::create_symlink("b.csv", root_ / "a.csv");
   fs::create_symlink("a.csv", root_ / "b.csv");
-  AtomicFile file((root_ / "a.csv").string());
+  Result<AtomicFile> file = AtomicFile::open((root_ / "a.csv").string());
   EXPECT_FALSE(file.ok());
   EXPECT_EQ(file.error(),
             (root_ / "a.csv").string() + ": cannot create: Too many levels of symbolic links");
@@ -135,8 +139,8 @@ TEST_F(AtomicFileTest, AChainOfFortyLinksIsFollowed) {
     fs::create_symlink(previous, root_ / name);
     previous = name;
   }
-  AtomicFile file((root_ / previous).string());
-  ASSERT_TRUE(write(file, "new")) << file.error();
+  Result<AtomicFile> file = AtomicFile::open((root_ / previous).string());
+  ASSERT_EQ(write(file, "new"), "");
   EXPECT_EQ(get(root_ / "real.csv"), "new");
 }
 
@@ -149,10 +153,10 @@ TEST_F(AtomicFileTest, ALinkPlantedAtATemporaryNameIsNotFollowed) {
   for (int n = 0; n < 1000; ++n)
     fs::create_symlink(root_ / "victim.txt", stem + "-" + std::to_string(n));
   {
-    AtomicFile file((root_ / "out.csv").string());
+    Result<AtomicFile> file = AtomicFile::open((root_ / "out.csv").string());
     if (file.ok()) {
-      std::fputs("rows", file.stream());
-      file.commit();
+      std::fputs("rows", file->stream());
+      static_cast<void>(file->commit());
     }
   }
   EXPECT_EQ(get(root_ / "victim.txt"), "precious");
@@ -162,8 +166,8 @@ TEST_F(AtomicFileTest, ALinkPlantedAtATemporaryNameIsNotFollowed) {
 TEST_F(AtomicFileTest, AReplacedFileKeepsItsPermissions) {
   std::ofstream(root_ / "private.csv") << "old";
   fs::permissions(root_ / "private.csv", fs::perms::owner_read | fs::perms::owner_write);
-  AtomicFile file((root_ / "private.csv").string());
-  ASSERT_TRUE(write(file, "new")) << file.error();
+  Result<AtomicFile> file = AtomicFile::open((root_ / "private.csv").string());
+  ASSERT_EQ(write(file, "new"), "");
   EXPECT_EQ(get(root_ / "private.csv"), "new");
   EXPECT_EQ(fs::status(root_ / "private.csv").permissions(),
             fs::perms::owner_read | fs::perms::owner_write);
@@ -175,17 +179,17 @@ TEST_F(AtomicFileTest, AFifoIsWrittenThroughNotReplaced) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   std::string received;
   std::thread reader([&] { received = get(fifo); });
-  AtomicFile file(fifo.string());
-  const bool written = write(file, "through the pipe");
+  Result<AtomicFile> file = AtomicFile::open(fifo.string());
+  const std::string written = write(file, "through the pipe");
   reader.join();
-  EXPECT_TRUE(written) << file.error();
+  EXPECT_EQ(written, "");
   EXPECT_EQ(received, "through the pipe");
   EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
 TEST_F(AtomicFileTest, AFolderAtThePathIsAnErrorAtOnce) {
   fs::create_directories(root_ / "taken");
-  AtomicFile file((root_ / "taken").string());
+  Result<AtomicFile> file = AtomicFile::open((root_ / "taken").string());
   EXPECT_FALSE(file.ok());
   EXPECT_EQ(file.error(), (root_ / "taken").string() + ": cannot create: Is a directory");
   EXPECT_TRUE(fs::is_directory(root_ / "taken"));

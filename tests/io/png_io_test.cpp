@@ -1,6 +1,7 @@
 // PNG writing and reading: bit-exact round trips, every setting, conversions from the PNG types
 // tumble never writes (written here with libpng directly), and errors that name the path.
 #include "io/png_io.hpp"
+#include "support/result_text.hpp"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -146,7 +147,7 @@ class PngIo : public ::testing::Test {
   // Reads `path`, failing the test on error.
   Image read_ok(const fs::path& path) {
     Image image;
-    const std::string error = read_png(path.string(), image);
+    const std::string error = ::tumble::testing::take(read_png(path.string()), image);
     EXPECT_EQ(error, "");
     return image;
   }
@@ -160,7 +161,7 @@ TEST_F(PngIo, RoundTripIsBitExactForManySizes) {
   for (const auto& size : sizes) {
     const Image original = noise(size[0], size[1], seed++);
     const fs::path path = dir_ / "image.png";
-    ASSERT_EQ(write_png(path.string(), original), "");
+    ASSERT_EQ(::tumble::testing::error_text(write_png(path.string(), original)), "");
     const Image read = read_ok(path);
     EXPECT_EQ(read.width, size[0]);
     EXPECT_EQ(read.height, size[1]);
@@ -173,7 +174,8 @@ TEST_F(PngIo, EveryCompressionLevelAndFilterSettingRoundTrips) {
   for (int level = 0; level <= 9; ++level) {
     for (const bool filter : {false, true}) {
       const fs::path path = dir_ / "image.png";
-      ASSERT_EQ(write_png(path.string(), original, {level, filter}), "");
+      ASSERT_EQ(::tumble::testing::error_text(write_png(path.string(), original, {level, filter})),
+                "");
       EXPECT_EQ(read_ok(path).rgb, original.rgb) << "level " << level << " filter " << filter;
     }
   }
@@ -181,8 +183,8 @@ TEST_F(PngIo, EveryCompressionLevelAndFilterSettingRoundTrips) {
 
 TEST_F(PngIo, WritesEightBitRgbNonInterlacedWithIdenticalBytesEachTime) {
   const Image image = smooth_gradient(40, 30);
-  ASSERT_EQ(write_png((dir_ / "a.png").string(), image), "");
-  ASSERT_EQ(write_png((dir_ / "b.png").string(), image), "");
+  ASSERT_EQ(::tumble::testing::error_text(write_png((dir_ / "a.png").string(), image)), "");
+  ASSERT_EQ(::tumble::testing::error_text(write_png((dir_ / "b.png").string(), image)), "");
   const std::string bytes = read_bytes(dir_ / "a.png");
   EXPECT_EQ(bytes, read_bytes(dir_ / "b.png"));
   EXPECT_EQ(bytes.find("tIME"), std::string::npos);
@@ -198,9 +200,14 @@ TEST_F(PngIo, WritesEightBitRgbNonInterlacedWithIdenticalBytesEachTime) {
 
 TEST_F(PngIo, DefaultIsLevelOneUnfilteredAndLargerThanLevelNineFiltered) {
   const Image gradient = smooth_gradient(256, 256);
-  ASSERT_EQ(write_png((dir_ / "default.png").string(), gradient), "");
-  ASSERT_EQ(write_png((dir_ / "fast.png").string(), gradient, {1, false}), "");
-  ASSERT_EQ(write_png((dir_ / "small.png").string(), gradient, {9, true}), "");
+  ASSERT_EQ(::tumble::testing::error_text(write_png((dir_ / "default.png").string(), gradient)),
+            "");
+  ASSERT_EQ(
+      ::tumble::testing::error_text(write_png((dir_ / "fast.png").string(), gradient, {1, false})),
+      "");
+  ASSERT_EQ(
+      ::tumble::testing::error_text(write_png((dir_ / "small.png").string(), gradient, {9, true})),
+      "");
   EXPECT_EQ(read_bytes(dir_ / "default.png"), read_bytes(dir_ / "fast.png"));
   const auto fast_size = fs::file_size(dir_ / "fast.png");
   const auto small_size = fs::file_size(dir_ / "small.png");
@@ -214,15 +221,18 @@ TEST_F(PngIo, LevelZeroStoresEveryByteAndLevelOneCompresses) {
   for (std::size_t i = 0; i < flat.rgb.size(); ++i)
     flat.rgb[i] = static_cast<std::uint8_t>(40 * (i % 3 + 1));
   const auto raw_bytes = flat.rgb.size() + flat.height;  // plus one filter byte per row
-  ASSERT_EQ(write_png((dir_ / "stored.png").string(), flat, {0, false}), "");
-  ASSERT_EQ(write_png((dir_ / "fast.png").string(), flat, {1, false}), "");
+  ASSERT_EQ(
+      ::tumble::testing::error_text(write_png((dir_ / "stored.png").string(), flat, {0, false})),
+      "");
+  ASSERT_EQ(
+      ::tumble::testing::error_text(write_png((dir_ / "fast.png").string(), flat, {1, false})), "");
   EXPECT_GT(fs::file_size(dir_ / "stored.png"), raw_bytes);
   EXPECT_LT(fs::file_size(dir_ / "fast.png") * 2, raw_bytes);
 }
 
 TEST_F(PngIo, AMissingFolderIsAnErrorNamingThePathAndLeavesNothing) {
   const fs::path path = dir_ / "no" / "such" / "image.png";
-  const std::string error = write_png(path.string(), noise(4, 4, 1));
+  const std::string error = ::tumble::testing::error_text(write_png(path.string(), noise(4, 4, 1)));
   EXPECT_NE(error.find(path.string()), std::string::npos) << error;
   EXPECT_NE(error.find("No such file or directory"), std::string::npos) << error;
   EXPECT_FALSE(fs::exists(path));
@@ -232,7 +242,7 @@ TEST_F(PngIo, AMissingFolderIsAnErrorNamingThePathAndLeavesNothing) {
 TEST_F(PngIo, AFolderAtThePathIsAnErrorAndNothingIsLeftBehind) {
   const fs::path path = dir_ / "taken";  // a non-empty folder: nothing can be written over it
   fs::create_directories(path / "inside");
-  const std::string error = write_png(path.string(), noise(4, 4, 1));
+  const std::string error = ::tumble::testing::error_text(write_png(path.string(), noise(4, 4, 1)));
   EXPECT_EQ(error, path.string() + ": cannot create: Is a directory");
   EXPECT_EQ(files_in_dir(), 1u);  // just the folder
   EXPECT_TRUE(fs::is_directory(path / "inside"));
@@ -240,24 +250,26 @@ TEST_F(PngIo, AFolderAtThePathIsAnErrorAndNothingIsLeftBehind) {
 
 TEST_F(PngIo, InvalidSettingsOrImagesAreRefusedBeforeAnythingIsWritten) {
   const fs::path path = dir_ / "image.png";
-  std::string error = write_png(path.string(), noise(4, 4, 1), {10, false});
+  std::string error =
+      ::tumble::testing::error_text(write_png(path.string(), noise(4, 4, 1), {10, false}));
   EXPECT_NE(error.find(path.string() + ": PNG compression level must be 0 to 9, got 10"),
             std::string::npos)
       << error;
-  EXPECT_NE(write_png(path.string(), noise(4, 4, 1), {-1, false}), "");
+  EXPECT_NE(::tumble::testing::error_text(write_png(path.string(), noise(4, 4, 1), {-1, false})),
+            "");
 
   Image short_of_bytes = noise(4, 4, 1);
   short_of_bytes.rgb.pop_back();
-  error = write_png(path.string(), short_of_bytes);
+  error = ::tumble::testing::error_text(write_png(path.string(), short_of_bytes));
   EXPECT_NE(error.find("cannot write a 4x4 image holding 47 bytes"), std::string::npos) << error;
-  EXPECT_NE(write_png(path.string(), Image()), "");
+  EXPECT_NE(::tumble::testing::error_text(write_png(path.string(), Image())), "");
   EXPECT_EQ(files_in_dir(), 0u);
 }
 
 TEST_F(PngIo, AMissingFileIsAnErrorNamingThePath) {
   const fs::path path = dir_ / "absent.png";
   Image image;
-  const std::string error = read_png(path.string(), image);
+  const std::string error = ::tumble::testing::take(read_png(path.string()), image);
   EXPECT_EQ(error, path.string() + ": cannot open: No such file or directory");
 }
 
@@ -265,21 +277,22 @@ TEST_F(PngIo, AFileThatIsNotAPngIsAnErrorNamingThePath) {
   const fs::path path = dir_ / "scene.toml";
   write_bytes(path, "duration = 1.0\n[physics]\ndt = 0.01\n");
   Image image(2, 2);
-  const std::string error = read_png(path.string(), image);
+  const std::string error = ::tumble::testing::take(read_png(path.string()), image);
   EXPECT_EQ(error, path.string() + ": not a PNG file (it does not start with the PNG signature)");
   EXPECT_EQ(image.width, 2);  // untouched
 }
 
 TEST_F(PngIo, EveryTruncationIsAnErrorNamingThePathAndLeavesTheOutputUntouched) {
   const fs::path whole = dir_ / "whole.png";
-  ASSERT_EQ(write_png(whole.string(), noise(9, 7, 3), {9, true}), "");
+  ASSERT_EQ(::tumble::testing::error_text(write_png(whole.string(), noise(9, 7, 3), {9, true})),
+            "");
   const std::string bytes = read_bytes(whole);
   const Image untouched = noise(2, 2, 5);
   const fs::path cut = dir_ / "cut.png";
   for (std::size_t length = 0; length < bytes.size(); ++length) {
     write_bytes(cut, bytes.substr(0, length));
     Image image = untouched;
-    const std::string error = read_png(cut.string(), image);
+    const std::string error = ::tumble::testing::take(read_png(cut.string()), image);
     ASSERT_EQ(error.rfind(cut.string() + ": ", 0), 0u) << "length " << length << ": " << error;
     EXPECT_EQ(image.rgb, untouched.rgb);
     if (length >= 8) {
@@ -289,13 +302,13 @@ TEST_F(PngIo, EveryTruncationIsAnErrorNamingThePathAndLeavesTheOutputUntouched) 
   // Cut inside the pixel data, the message says why.
   write_bytes(cut, bytes.substr(0, bytes.size() / 2));
   Image image;
-  EXPECT_EQ(read_png(cut.string(), image),
+  EXPECT_EQ(::tumble::testing::take(read_png(cut.string()), image),
             cut.string() + ": cannot decode PNG: file ends early (truncated)");
 }
 
 TEST_F(PngIo, CorruptPixelDataIsAnErrorNamingThePath) {
   const fs::path path = dir_ / "corrupt.png";
-  ASSERT_EQ(write_png(path.string(), noise(16, 16, 7)), "");
+  ASSERT_EQ(::tumble::testing::error_text(write_png(path.string(), noise(16, 16, 7))), "");
   const std::string bytes = read_bytes(path);
   const std::size_t idat = bytes.find("IDAT");
   ASSERT_NE(idat, std::string::npos);
@@ -306,14 +319,15 @@ TEST_F(PngIo, CorruptPixelDataIsAnErrorNamingThePath) {
   std::string damaged = bytes;
   damaged[idat + 4 + length] ^= 0x55;  // the chunk's CRC
   write_bytes(path, damaged);
-  EXPECT_EQ(read_png(path.string(), image), path.string() + ": cannot decode PNG: IDAT: CRC error");
+  EXPECT_EQ(::tumble::testing::take(read_png(path.string()), image),
+            path.string() + ": cannot decode PNG: IDAT: CRC error");
 
   // With the data damaged instead, zlib fails (which check fails first depends on the stream)
   // before the chunk's CRC is reached.
   damaged = bytes;
   damaged[idat + 4 + length / 2] ^= 0x55;
   write_bytes(path, damaged);
-  const std::string error = read_png(path.string(), image);
+  const std::string error = ::tumble::testing::take(read_png(path.string()), image);
   EXPECT_EQ(error.rfind(path.string() + ": cannot decode PNG: IDAT: ", 0), 0u) << error;
   EXPECT_EQ(image.width, 0);
 }
@@ -322,11 +336,11 @@ TEST_F(PngIo, ImagesOverOneHundredMegapixelsAreRefused) {
   const fs::path path = dir_ / "huge.png";
   ASSERT_TRUE(write_header_only(path, 20000, 5001));
   Image image;
-  EXPECT_EQ(read_png(path.string(), image),
+  EXPECT_EQ(::tumble::testing::take(read_png(path.string()), image),
             path.string() + ": image is 20000x5001, more than the 100 megapixels tumble will read");
   // A header of a sane size is accepted, and this read fails later, on the missing pixels.
   ASSERT_TRUE(write_header_only(path, 200, 100));
-  EXPECT_EQ(read_png(path.string(), image),
+  EXPECT_EQ(::tumble::testing::take(read_png(path.string()), image),
             path.string() + ": cannot decode PNG: file ends early (truncated)");
 }
 
@@ -428,13 +442,14 @@ TEST(PngFuzzSeeds, EachDecodesToTheSizeInItsHeader) {
                               static_cast<std::uint8_t>(bytes[at + 3]));
     };
     Image from_file;
-    ASSERT_EQ(read_png(entry.path().string(), from_file), "") << entry.path();
+    ASSERT_EQ(::tumble::testing::take(read_png(entry.path().string()), from_file), "")
+        << entry.path();
     EXPECT_EQ(from_file.width, be32(16)) << entry.path();
     EXPECT_EQ(from_file.height, be32(20)) << entry.path();
     std::FILE* memory = fmemopen(const_cast<char*>(bytes.data()), bytes.size(), "rb");
     ASSERT_NE(memory, nullptr);
     Image from_memory;
-    EXPECT_EQ(read_png(memory, "seed", from_memory), "");
+    EXPECT_EQ(::tumble::testing::take(read_png(memory, "seed"), from_memory), "");
     std::fclose(memory);
     EXPECT_EQ(from_memory.rgb, from_file.rgb) << entry.path();
     ++count;

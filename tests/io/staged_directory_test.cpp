@@ -1,4 +1,5 @@
 #include "io/staged_directory.hpp"
+#include "support/result_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -38,12 +39,12 @@ class StagedDirectoryTest : public ::testing::Test {
 };
 
 TEST_F(StagedDirectoryTest, NothingAppearsAtTheFinalPathBeforeCommit) {
-  StagedDirectory staged((root_ / "out/scene").string());
+  Result<StagedDirectory> staged = StagedDirectory::create((root_ / "out/scene").string());
   ASSERT_TRUE(staged.ok()) << staged.error();
-  put(fs::path(staged.path()) / "a.txt", "new");
+  put(fs::path(staged->path()) / "a.txt", "new");
   EXPECT_FALSE(fs::exists(root_ / "out/scene"));
-  EXPECT_EQ(fs::path(staged.path()).parent_path(), root_ / "out");
-  ASSERT_TRUE(staged.commit()) << staged.error();
+  EXPECT_EQ(fs::path(staged->path()).parent_path(), root_ / "out");
+  ASSERT_EQ(::tumble::testing::error_text(staged->commit()), "");
   EXPECT_EQ(get(root_ / "out/scene/a.txt"), "new");
   EXPECT_EQ(entries(root_ / "out"), 2);  // scene/ and scene/a.txt: no temporary folder left
 }
@@ -52,11 +53,11 @@ TEST_F(StagedDirectoryTest, CommitReplacesAnExistingFolderWhole) {
   fs::create_directories(root_ / "scene/frames");
   put(root_ / "scene/frames/old_frame.png", "old");
   put(root_ / "scene/report.json", "old");
-  StagedDirectory staged((root_ / "scene").string());
+  Result<StagedDirectory> staged = StagedDirectory::create((root_ / "scene").string());
   ASSERT_TRUE(staged.ok()) << staged.error();
-  put(fs::path(staged.path()) / "report.json", "new");
+  put(fs::path(staged->path()) / "report.json", "new");
   EXPECT_EQ(get(root_ / "scene/report.json"), "old");  // untouched until commit
-  ASSERT_TRUE(staged.commit()) << staged.error();
+  ASSERT_EQ(::tumble::testing::error_text(staged->commit()), "");
   EXPECT_EQ(get(root_ / "scene/report.json"), "new");
   EXPECT_FALSE(fs::exists(root_ / "scene/frames"));
   EXPECT_EQ(entries(root_), 2);  // scene/ and its report: the old folder is gone
@@ -66,10 +67,10 @@ TEST_F(StagedDirectoryTest, WithoutCommitTheTemporaryFolderIsRemovedAndTheOldOne
   fs::create_directories(root_ / "scene");
   put(root_ / "scene/report.json", "old");
   {
-    StagedDirectory staged((root_ / "scene").string());
+    Result<StagedDirectory> staged = StagedDirectory::create((root_ / "scene").string());
     ASSERT_TRUE(staged.ok()) << staged.error();
-    fs::create_directories(fs::path(staged.path()) / "frames");
-    put(fs::path(staged.path()) / "frames/f.png", "half");
+    fs::create_directories(fs::path(staged->path()) / "frames");
+    put(fs::path(staged->path()) / "frames/f.png", "half");
   }
   EXPECT_EQ(get(root_ / "scene/report.json"), "old");
   EXPECT_EQ(entries(root_), 2);
@@ -78,12 +79,11 @@ TEST_F(StagedDirectoryTest, WithoutCommitTheTemporaryFolderIsRemovedAndTheOldOne
 TEST_F(StagedDirectoryTest, AParentThatIsAFileIsAnError) {
   fs::create_directories(root_);
   put(root_ / "file", "x");
-  StagedDirectory staged((root_ / "file/scene").string());
+  Result<StagedDirectory> staged = StagedDirectory::create((root_ / "file/scene").string());
   EXPECT_FALSE(staged.ok());
   EXPECT_NE(staged.error().find("cannot create output folder " + (root_ / "file").string()),
             std::string::npos)
       << staged.error();
-  EXPECT_FALSE(staged.commit());
 }
 
 // The temporary folder is named after the final one and removed again: a final path that is no
@@ -94,10 +94,9 @@ TEST_F(StagedDirectoryTest, AFinalPathThatIsNoFolderNameIsRefused) {
   for (const std::string& bad :
        {(root_ / "out/").string() + std::string(1, '\0'), (root_ / "out/..").string(),
         (root_ / "out/.").string(), (root_ / "out").string() + "/"}) {
-    StagedDirectory staged(bad);
+    Result<StagedDirectory> staged = StagedDirectory::create(bad);
     EXPECT_FALSE(staged.ok()) << bad;
     EXPECT_NE(staged.error().find("not a folder name"), std::string::npos) << staged.error();
-    EXPECT_FALSE(staged.commit());
   }
   EXPECT_EQ(get(root_ / "out/keep.txt"), "mine");
   EXPECT_EQ(entries(root_), 2);
@@ -105,11 +104,11 @@ TEST_F(StagedDirectoryTest, AFinalPathThatIsNoFolderNameIsRefused) {
 
 TEST_F(StagedDirectoryTest, WithoutCommitTheParentsItCreatedAreRemovedToo) {
   fs::create_directories(root_ / "kept");
-  { StagedDirectory staged((root_ / "kept/new/deeper/scene").string()); }
+  { const auto staged = StagedDirectory::create((root_ / "kept/new/deeper/scene").string()); }
   EXPECT_TRUE(fs::exists(root_ / "kept"));
   EXPECT_EQ(entries(root_), 1);  // kept/ only
   {
-    StagedDirectory staged((root_ / "kept/new/scene").string());
+    Result<StagedDirectory> staged = StagedDirectory::create((root_ / "kept/new/scene").string());
     put(root_ / "kept/new/notes.txt", "written meanwhile");  // not ours: the folder stays
   }
   EXPECT_EQ(get(root_ / "kept/new/notes.txt"), "written meanwhile");

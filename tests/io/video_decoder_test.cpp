@@ -14,6 +14,7 @@
 #include <string>
 
 #include "io/video_encoder.hpp"
+#include "support/result_text.hpp"
 #include "support/test_frames.hpp"
 
 extern "C" {
@@ -105,17 +106,20 @@ TEST(VideoDecoder, AMismatchedMatrixWouldBeOffByMoreThanTheTolerance) {
 QuantisationAllowance allowance_of(const std::string& path, VideoFormat format) {
   VideoSettings settings{.format = format, .width = 64, .height = 48, .fps = 25};
   std::string error;
-  std::unique_ptr<VideoEncoder> encoder = VideoEncoder::open(path, settings, error);
+  std::unique_ptr<VideoEncoder> encoder =
+      ::tumble::testing::value_or_empty(VideoEncoder::open(path, settings), error);
   EXPECT_TRUE(encoder) << error;
   if (!encoder) return {};
   for (int k = 0; k < 10; ++k)
-    EXPECT_EQ(encoder->add_frame(testing::moving_pattern(64, 48, k)), "");
-  EXPECT_EQ(encoder->finish(), "");
-  std::unique_ptr<VideoDecoder> decoder = VideoDecoder::open(path, error);
+    EXPECT_EQ(::tumble::testing::error_text(encoder->add_frame(testing::moving_pattern(64, 48, k))),
+              "");
+  EXPECT_EQ(::tumble::testing::error_text(encoder->finish()), "");
+  std::unique_ptr<VideoDecoder> decoder =
+      ::tumble::testing::value_or_empty(VideoDecoder::open(path), error);
   EXPECT_TRUE(decoder) << error;
   if (!decoder) return {};
   int frames = 0;
-  while (decoder->next(error)) ++frames;
+  while (::tumble::testing::value_or_empty(decoder->next(), error)) ++frames;
   EXPECT_EQ(frames, 10);
   return decoder->quantisation_allowance();
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include "support/result_text.hpp"
 #include "support/test_frames.hpp"
 #include "support/video_reader.hpp"
 
@@ -55,13 +56,14 @@ VideoSettings small_settings() {
 std::string encode(const std::string& path, const VideoSettings& settings,
                    const std::vector<Image>& frames) {
   std::string error;
-  std::unique_ptr<VideoEncoder> encoder = VideoEncoder::open(path, settings, error);
+  std::unique_ptr<VideoEncoder> encoder =
+      ::tumble::testing::value_or_empty(VideoEncoder::open(path, settings), error);
   if (!encoder) return error;
   for (const Image& frame : frames) {
-    error = encoder->add_frame(frame);
+    error = ::tumble::testing::error_text(encoder->add_frame(frame));
     if (!error.empty()) return error;
   }
-  return encoder->finish();
+  return ::tumble::testing::error_text(encoder->finish());
 }
 
 std::vector<Image> moving_frames() {
@@ -282,8 +284,8 @@ TEST_F(VideoEncoderTest, RejectsOddWidthOrHeight) {
   for (const auto& [width, height] : {std::pair{161, 120}, std::pair{160, 119}}) {
     const std::string out = path("odd.mp4");
     std::string error;
-    const auto encoder =
-        VideoEncoder::open(out, {.width = width, .height = height, .fps = kFps}, error);
+    const auto encoder = ::tumble::testing::value_or_empty(
+        VideoEncoder::open(out, {.width = width, .height = height, .fps = kFps}), error);
     EXPECT_EQ(encoder, nullptr);
     EXPECT_EQ(error, out + ": width and height must be even for H.264 yuv420p video (got " +
                          std::to_string(width) + "x" + std::to_string(height) + ")");
@@ -294,21 +296,25 @@ TEST_F(VideoEncoderTest, RejectsOddWidthOrHeight) {
 TEST_F(VideoEncoderTest, RejectsAFrameOfTheWrongSizeAndKeepsGoing) {
   const std::string out = path("sized.mp4");
   std::string error;
-  const auto encoder = VideoEncoder::open(out, small_settings(), error);
+  const auto encoder =
+      ::tumble::testing::value_or_empty(VideoEncoder::open(out, small_settings()), error);
   ASSERT_NE(encoder, nullptr) << error;
-  EXPECT_EQ(encoder->add_frame(moving_pattern(kHeight, kWidth, 0)),
+  EXPECT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_pattern(kHeight, kWidth, 0))),
             out + ": frame 0 is 120x160, the video is 160x120");
   EXPECT_EQ(encoder->frames_added(), 0);
-  EXPECT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, 0)), "");
-  EXPECT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, 1)), "");
-  ASSERT_EQ(encoder->finish(), "");
+  EXPECT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_pattern(kWidth, kHeight, 0))),
+            "");
+  EXPECT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_pattern(kWidth, kHeight, 1))),
+            "");
+  ASSERT_EQ(::tumble::testing::error_text(encoder->finish()), "");
   EXPECT_EQ(read_video(out).pictures.size(), 2u);
 }
 
 TEST_F(VideoEncoderTest, UnwritablePathIsAnErrorAndLeavesNoFile) {
   const std::string out = path("missing/video.mp4");
   std::string error;
-  const auto encoder = VideoEncoder::open(out, small_settings(), error);
+  const auto encoder =
+      ::tumble::testing::value_or_empty(VideoEncoder::open(out, small_settings()), error);
   EXPECT_EQ(encoder, nullptr);
   EXPECT_EQ(error.rfind(out + ": avio_open(", 0), 0u) << error;
   EXPECT_NE(error.find("No such file or directory"), std::string::npos) << error;
@@ -321,7 +327,7 @@ TEST_F(VideoEncoderTest, UnknownPresetIsAnErrorNamingTheCall) {
   VideoSettings settings = small_settings();
   settings.preset = "warp9";
   std::string error;
-  EXPECT_EQ(VideoEncoder::open(out, settings, error), nullptr);
+  EXPECT_EQ(::tumble::testing::value_or_empty(VideoEncoder::open(out, settings), error), nullptr);
   EXPECT_EQ(error, out + ": avcodec_open2(libx264, preset warp9, crf 18): Invalid argument");
   EXPECT_TRUE(directory_listing().empty());
 }
@@ -330,10 +336,12 @@ TEST_F(VideoEncoderTest, FailedRenameIsAnErrorAndLeavesNoTemporary) {
   const std::string out = path("taken.mp4");
   fs::create_directory(out);  // a directory cannot be replaced by a file
   std::string error;
-  const auto encoder = VideoEncoder::open(out, small_settings(), error);
+  const auto encoder =
+      ::tumble::testing::value_or_empty(VideoEncoder::open(out, small_settings()), error);
   ASSERT_NE(encoder, nullptr) << error;
-  ASSERT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, 0)), "");
-  error = encoder->finish();
+  ASSERT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_pattern(kWidth, kHeight, 0))),
+            "");
+  error = ::tumble::testing::error_text(encoder->finish());
   EXPECT_EQ(error.rfind(out + ": rename(", 0), 0u) << error;
   EXPECT_NE(error.find("Is a directory"), std::string::npos) << error;
   EXPECT_EQ(directory_listing(), std::vector<std::string>{"taken.mp4"});
@@ -343,10 +351,12 @@ TEST_F(VideoEncoderTest, FailedRenameIsAnErrorAndLeavesNoTemporary) {
 TEST_F(VideoEncoderTest, EncoderDestroyedWithoutFinishLeavesNoFile) {
   const std::string out = path("abandoned.mp4");
   std::string error;
-  auto encoder = VideoEncoder::open(out, small_settings(), error);
+  auto encoder =
+      ::tumble::testing::value_or_empty(VideoEncoder::open(out, small_settings()), error);
   ASSERT_NE(encoder, nullptr) << error;
   for (int k = 0; k < 10; ++k)
-    ASSERT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, k)), "");
+    ASSERT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_pattern(kWidth, kHeight, k))),
+              "");
   EXPECT_FALSE(fs::exists(out));  // only the temporary exists while encoding
   EXPECT_EQ(directory_listing().size(), 1u);
   encoder.reset();
@@ -356,11 +366,13 @@ TEST_F(VideoEncoderTest, EncoderDestroyedWithoutFinishLeavesNoFile) {
 TEST_F(VideoEncoderTest, FinishingWithoutFramesIsAnErrorAndLeavesNoFile) {
   const std::string out = path("empty.mp4");
   std::string error;
-  const auto encoder = VideoEncoder::open(out, small_settings(), error);
+  const auto encoder =
+      ::tumble::testing::value_or_empty(VideoEncoder::open(out, small_settings()), error);
   ASSERT_NE(encoder, nullptr) << error;
-  EXPECT_EQ(encoder->finish(), out + ": no frames were added");
+  EXPECT_EQ(::tumble::testing::error_text(encoder->finish()), out + ": no frames were added");
   EXPECT_TRUE(directory_listing().empty());
-  EXPECT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, 0)), out + ": no frames were added");
+  EXPECT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_pattern(kWidth, kHeight, 0))),
+            out + ": no frames were added");
 }
 
 VideoSettings settings_for(VideoFormat format, int fps = kFps) {
@@ -535,17 +547,20 @@ TEST_F(VideoEncoderTest, GifFrom60FpsRunsAt50AndWithoutLoopPlaysOnce) {
 TEST_F(VideoEncoderTest, GifAbandonedOrEmptyLeavesNoFileAndNoSpool) {
   {
     std::string error;
-    const auto encoder =
-        VideoEncoder::open(path("gone.gif"), settings_for(VideoFormat::gif), error);
+    const auto encoder = ::tumble::testing::value_or_empty(
+        VideoEncoder::open(path("gone.gif"), settings_for(VideoFormat::gif)), error);
     ASSERT_NE(encoder, nullptr) << error;
-    ASSERT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, 0)), "");
+    ASSERT_EQ(::tumble::testing::error_text(encoder->add_frame(moving_pattern(kWidth, kHeight, 0))),
+              "");
     EXPECT_EQ(directory_listing().size(), 2u);  // the partial GIF and its spool
   }
   EXPECT_TRUE(directory_listing().empty());
   std::string error;
-  const auto encoder = VideoEncoder::open(path("empty.gif"), settings_for(VideoFormat::gif), error);
+  const auto encoder = ::tumble::testing::value_or_empty(
+      VideoEncoder::open(path("empty.gif"), settings_for(VideoFormat::gif)), error);
   ASSERT_NE(encoder, nullptr) << error;
-  EXPECT_EQ(encoder->finish(), path("empty.gif") + ": no frames were added");
+  EXPECT_EQ(::tumble::testing::error_text(encoder->finish()),
+            path("empty.gif") + ": no frames were added");
   EXPECT_TRUE(directory_listing().empty());
 }
 

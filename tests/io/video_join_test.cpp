@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/video_encoder.hpp"
+#include "support/result_text.hpp"
 #include "support/test_frames.hpp"
 #include "support/video_reader.hpp"
 
@@ -41,20 +42,22 @@ class VideoJoinTest : public ::testing::Test {
   std::string encode(const std::string& name, int first, int end, bool segment = true) const {
     std::string error;
     const VideoFormat format = name.ends_with(".webm") ? VideoFormat::webm : VideoFormat::mp4;
-    const auto encoder = VideoEncoder::open(path(name),
-                                            {.format = format,
-                                             .width = kWidth,
-                                             .height = kHeight,
-                                             .fps = kFps,
-                                             .segment = segment,
-                                             .first_frame = segment ? first : 0},
-                                            error);
+    const auto encoder = ::tumble::testing::value_or_empty(
+        VideoEncoder::open(path(name), {.format = format,
+                                        .width = kWidth,
+                                        .height = kHeight,
+                                        .fps = kFps,
+                                        .segment = segment,
+                                        .first_frame = segment ? first : 0}),
+        error);
     EXPECT_NE(encoder, nullptr) << error;
     if (!encoder) return {};
     for (int k = first; k < end; ++k) {
-      EXPECT_EQ(encoder->add_frame(moving_pattern(kWidth, kHeight, k)), "");
+      EXPECT_EQ(
+          ::tumble::testing::error_text(encoder->add_frame(moving_pattern(kWidth, kHeight, k))),
+          "");
     }
-    EXPECT_EQ(encoder->finish(), "");
+    EXPECT_EQ(::tumble::testing::error_text(encoder->finish()), "");
     return path(name);
   }
 
@@ -64,8 +67,8 @@ class VideoJoinTest : public ::testing::Test {
     const std::vector<std::string> parts = {encode("a" + extension, 0, 17),
                                             encode("b" + extension, 17, 18),
                                             encode("c" + extension, 18, kFrames)};
-    const VideoSegmentInfo b = read_segment_info(parts[1]);
-    EXPECT_EQ(b.error, "");
+    VideoSegmentInfo b;
+    EXPECT_EQ(::tumble::testing::take(read_segment_info(parts[1]), b), "");
     EXPECT_EQ(b.first_frame, 17);
     EXPECT_EQ(b.frames, 1);
     EXPECT_EQ(b.fps, kFps);
@@ -79,7 +82,7 @@ class VideoJoinTest : public ::testing::Test {
 TEST_F(VideoJoinTest, JoinedSegmentsDecodeAsTheWholeVideo) {
   const std::string whole = encode("whole.mp4", 0, kFrames, false);
   const std::vector<std::string> parts = three_segments(".mp4");
-  ASSERT_EQ(join_videos(parts, path("joined.mp4")), "");
+  ASSERT_EQ(::tumble::testing::error_text(join_videos(parts, path("joined.mp4"))), "");
   const testing::DecodedVideo joined = read_video(path("joined.mp4"));
   const testing::DecodedVideo reference = read_video(whole);
   ASSERT_EQ(joined.error, "");
@@ -116,7 +119,7 @@ TEST_F(VideoJoinTest, JoinedSegmentsDecodeAsTheWholeVideo) {
 // VP9 segments in WebM, one of a single frame, join into a WebM of the whole's frames and times.
 TEST_F(VideoJoinTest, WebmSegmentsJoinIntoTheWholeWebm) {
   const std::vector<std::string> parts = three_segments(".webm");
-  ASSERT_EQ(join_videos(parts, path("joined.webm")), "");
+  ASSERT_EQ(::tumble::testing::error_text(join_videos(parts, path("joined.webm"))), "");
   const testing::DecodedVideo joined = read_video(path("joined.webm"));
   ASSERT_EQ(joined.error, "");
   ASSERT_EQ(joined.pictures.size(), static_cast<std::size_t>(kFrames));
@@ -135,7 +138,8 @@ TEST_F(VideoJoinTest, WebmSegmentsJoinIntoTheWholeWebm) {
   // Each frame is in its place: frame 17 (segment b's one frame) is far from frame 20.
   EXPECT_GT(rms_difference(joined.pictures[17].rgb, moving_pattern(kWidth, kHeight, 20)), 12.0);
   // H.264 and VP9 segments do not join.
-  const std::string error = join_videos({encode("a.mp4", 0, 17), parts[1]}, path("mixed.mp4"));
+  const std::string error = ::tumble::testing::error_text(
+      join_videos({encode("a.mp4", 0, 17), parts[1]}, path("mixed.mp4")));
   EXPECT_NE(error.find("b.webm: is VP9, " + path("a.mp4") + " H.264"), std::string::npos) << error;
   EXPECT_FALSE(fs::exists(path("mixed.mp4")));
 }
@@ -145,7 +149,7 @@ TEST_F(VideoJoinTest, RefusesAGapAnOverlapAnotherEncodeAndATruncatedSegment) {
   const std::string late = encode("late.mp4", 12, 20), early = encode("early.mp4", 8, 20);
   const std::string plain = encode("plain.mp4", 0, 10, false);
   const auto refused = [&](const std::vector<std::string>& parts, const std::string& says) {
-    const std::string error = join_videos(parts, path("joined.mp4"));
+    const std::string error = ::tumble::testing::error_text(join_videos(parts, path("joined.mp4")));
     EXPECT_NE(error.find(says), std::string::npos) << error;
     EXPECT_FALSE(fs::exists(path("joined.mp4")));
   };

@@ -13,9 +13,9 @@ namespace tumble::job {
 namespace {
 
 scene::Scene cube() {
-  const scene::SceneOrError loaded = scene::parse_scene(
+  const Result<scene::Scene> loaded = scene::parse_scene(
       "duration = 1.0\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\n", "cube.toml");
-  return std::get<scene::Scene>(loaded);
+  return *loaded;
 }
 
 struct Expected {

@@ -8,6 +8,7 @@
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
 #include "support/render_scenes.hpp"
+#include "support/result_text.hpp"
 
 namespace tumble::pipeline {
 namespace {
@@ -55,13 +56,13 @@ class ContactSheetRun : public CommandTest {
   // exactly, since both read the same 8-bit pixels.
   void expect_tiles_are_frames(const std::vector<std::int64_t>& frames) {
     io::Image sheet;
-    ASSERT_EQ(io::read_png(out("contact_sheet.png"), sheet), "");
+    ASSERT_EQ(::tumble::testing::take(io::read_png(out("contact_sheet.png")), sheet), "");
     const int strip = sheet_label_height(16);
     ASSERT_EQ(sheet.width, 4 * 24);
     ASSERT_EQ(sheet.height, 3 * (16 + strip));
     for (std::size_t i = 0; i < frames.size(); ++i) {
       io::Image image;
-      ASSERT_EQ(io::read_png(frame(frames[i]), image), "");
+      ASSERT_EQ(::tumble::testing::take(io::read_png(frame(frames[i])), image), "");
       const int left = static_cast<int>(i % 4) * 24;
       const int top = static_cast<int>(i / 4) * (16 + strip);
       int differing = 0;

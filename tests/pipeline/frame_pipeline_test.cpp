@@ -1,6 +1,7 @@
 // The frame loop: frames pulled from a source, drawn, pushed to every sink in order, on one
 // thread or pipelined with the same results; an error from the source or any sink stops it.
 #include "pipeline/frame_pipeline.hpp"
+#include "support/result_text.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,11 +34,11 @@ class Recorder final : public FrameSink {
  public:
   explicit Recorder(std::int64_t fail_at = -1) : fail_at_(fail_at) {}
   const char* stage() const override { return "record"; }
-  std::string write(std::int64_t frame, const io::Image& image) override {
-    if (frame == fail_at_) return "the sink failed at frame " + std::to_string(frame);
+  Result<void> write(std::int64_t frame, const io::Image& image) override {
+    if (frame == fail_at_) return Error{"the sink failed at frame " + std::to_string(frame)};
     frames.push_back(frame);
     pictures.push_back(image.rgb);
-    return {};
+    return Result<void>::success();
   }
   std::vector<std::int64_t> frames;
   std::vector<std::vector<std::uint8_t>> pictures;
@@ -51,8 +52,8 @@ std::unique_ptr<render::Renderer> small_renderer() {
   settings.width = 32;
   settings.height = 24;
   std::string error;
-  auto renderer =
-      render::Renderer::create(settings, std::string(TUMBLE_SOURCE_DIR) + "/shaders", error);
+  auto renderer = ::tumble::testing::value_or_empty(
+      render::Renderer::create(settings, std::string(TUMBLE_SOURCE_DIR) + "/shaders"), error);
   EXPECT_TRUE(renderer) << error;
   return renderer;
 }
@@ -66,9 +67,11 @@ TEST(FramePipeline, EverySinkSeesEveryFrameInOrderTheSameOnBothPaths) {
     TurningCube source;
     Recorder first, second, third;
     std::int64_t done = 0;
-    const PipelineReport report = run_frames(2, 12, source, *renderer, {&first, &second, &third},
-                                             serial, [&](std::int64_t n) { done = n; });
-    ASSERT_EQ(report.error, "");
+    PipelineReport report;
+    const Result<void> ran = run_frames(
+        2, 12, source, *renderer, {&first, &second, &third}, serial,
+        [&](std::int64_t n) { done = n; }, report);
+    ASSERT_TRUE(ran.ok()) << ran.error();
     EXPECT_EQ(report.frames_done, 10);
     EXPECT_EQ(done, 10);
     ASSERT_EQ(report.sinks.size(), 3u);
@@ -89,16 +92,20 @@ TEST(FramePipeline, AnErrorFromTheSourceOrASinkStopsTheRunWithItsMessage) {
     SCOPED_TRACE(serial ? "serial" : "pipelined");
     TurningCube failing_source(5);
     Recorder sink;
-    const PipelineReport from_source =
-        run_frames(0, 10, failing_source, *renderer, {&sink}, serial, [](std::int64_t) {});
-    EXPECT_EQ(from_source.error, "the source failed at frame 5");
+    PipelineReport from_source;
+    EXPECT_EQ(
+        ::tumble::testing::error_text(run_frames(
+            0, 10, failing_source, *renderer, {&sink}, serial, [](std::int64_t) {}, from_source)),
+        "the source failed at frame 5");
     EXPECT_LE(from_source.frames_done, 5);
 
     TurningCube source;
     Recorder failing_sink(3), other;
-    const PipelineReport from_sink =
-        run_frames(0, 10, source, *renderer, {&other, &failing_sink}, serial, [](std::int64_t) {});
-    EXPECT_EQ(from_sink.error, "the sink failed at frame 3");
+    PipelineReport from_sink;
+    EXPECT_EQ(::tumble::testing::error_text(run_frames(
+                  0, 10, source, *renderer, {&other, &failing_sink}, serial, [](std::int64_t) {},
+                  from_sink)),
+              "the sink failed at frame 3");
     EXPECT_LE(from_sink.frames_done, 3);
     EXPECT_EQ(failing_sink.frames, (std::vector<std::int64_t>{0, 1, 2}));
   }

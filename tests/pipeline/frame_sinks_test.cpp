@@ -14,6 +14,7 @@
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
 #include "support/render_scenes.hpp"
+#include "support/result_text.hpp"
 #include "support/video_reader.hpp"
 
 namespace tumble::pipeline {
@@ -76,7 +77,7 @@ TEST_F(VideoSinkTest, EveryFormatDecodesToTheRunsFramesAndSize) {
   EXPECT_EQ(webm.codec, AV_CODEC_ID_VP9);
   for (const int k : {0, 5, 9}) {
     io::Image png;
-    ASSERT_EQ(io::read_png(frame(k), png), "");
+    ASSERT_EQ(::tumble::testing::take(io::read_png(frame(k)), png), "");
     const double rms = rms_difference(webm.pictures[static_cast<std::size_t>(k)].rgb, png);
     EXPECT_LE(rms, 6.0) << "frame " << k;
     RecordProperty("webm_rms_frame_" + std::to_string(k), std::to_string(rms));

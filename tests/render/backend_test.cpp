@@ -8,6 +8,7 @@
 
 #include "render/offscreen_context.hpp"
 #include "render/renderer.hpp"
+#include "support/result_text.hpp"
 
 namespace tumble::render {
 namespace {
@@ -46,7 +47,8 @@ io::Image draw_with(Backend backend, int msaa, std::string& description,
   settings.backend = backend;
   settings.egl_device = egl_device;
   std::string error;
-  const auto renderer = Renderer::create(settings, kShaders, error);
+  const auto renderer =
+      ::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error);
   EXPECT_TRUE(renderer) << backend_name(backend) << ": " << error;
   io::Image image;
   if (!renderer) return image;
@@ -71,7 +73,8 @@ int software_device() {
     settings.backend = Backend::egl;
     settings.egl_device = device;
     std::string error;
-    const auto renderer = Renderer::create(settings, kShaders, error);
+    const auto renderer =
+        ::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error);
     if (!renderer) return -1;  // past the end of the list
     if (renderer->device().find("Mesa software") != std::string::npos) return device;
   }
@@ -140,7 +143,7 @@ TEST(Backend, UnlistedEglDeviceFailsNamingTheDevices) {
     settings.backend = backend;
     settings.egl_device = common::kMaxEglDevice;
     std::string error;
-    EXPECT_FALSE(Renderer::create(settings, kShaders, error));
+    EXPECT_FALSE(::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error));
     EXPECT_NE(error.find("egl_device 255: no such EGL device (this machine's: 0: "),
               std::string::npos)
         << error;

@@ -12,6 +12,7 @@
 #include "render/overlay_geometry.hpp"
 #include "render/renderer.hpp"
 #include "support/render_golden.hpp"
+#include "support/result_text.hpp"
 
 namespace tumble::render {
 namespace {
@@ -121,7 +122,8 @@ TEST(OverlayLayer, FramesWithoutOverlaysAreThoseOfARendererWithoutThem) {
     RenderSettings without = settings;
     without.overlays = false;
     std::string error;
-    const auto renderer = Renderer::create(settings, kShaders, error);
+    const auto renderer =
+        ::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error);
     ASSERT_TRUE(renderer) << error;
     FrameView plain = cube_with_arrow();
     plain.arrows.clear();

@@ -14,6 +14,7 @@
 #include "io/png_io.hpp"
 #include "render/geometry.hpp"
 #include "support/render_golden.hpp"
+#include "support/result_text.hpp"
 
 namespace tumble::render {
 namespace {
@@ -263,7 +264,8 @@ TEST(Renderer, EveryBoxOfAThousandShowsItsColourAtItsCentre) {
 TEST(Renderer, DrawingTwiceIsByteIdentical) {
   const FrameView view = cube_view(Quat(Eigen::AngleAxisd(0.3, Vec3(0, 1, 1).normalized())));
   std::string error;
-  const auto renderer = Renderer::create(small_settings(), kShaders, error);
+  const auto renderer =
+      ::tumble::testing::value_or_empty(Renderer::create(small_settings(), kShaders), error);
   ASSERT_TRUE(renderer) << error;
   io::Image first, second;
   renderer->draw(view, first);
@@ -287,7 +289,8 @@ TEST(Renderer, KeptGroundGivesTheBytesOfAFreshDrawing) {
     FrameView moved = still;  // the camera elsewhere: the ground is drawn again
     moved.camera.position = Vec3(-3.0, 2.5, 2.0);
     std::string error;
-    const auto renderer = Renderer::create(settings, kShaders, error);
+    const auto renderer =
+        ::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error);
     ASSERT_TRUE(renderer) << error;
     io::Image first, kept, after_move, back;
     renderer->draw(still, first);
@@ -323,7 +326,8 @@ TEST(Renderer, ImageIsUprightWithBackgroundAboveAndGroundBelow) {
 
 TEST(Renderer, MissingShaderIsAClearErrorNamingTheFile) {
   std::string error;
-  const auto renderer = Renderer::create(small_settings(), "/nonexistent/shaders", error);
+  const auto renderer = ::tumble::testing::value_or_empty(
+      Renderer::create(small_settings(), "/nonexistent/shaders"), error);
   EXPECT_FALSE(renderer);
   EXPECT_NE(error.find("/nonexistent/shaders/body.vert: cannot open shader file"),
             std::string::npos)

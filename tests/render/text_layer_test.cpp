@@ -14,6 +14,7 @@
 #include "render/renderer.hpp"
 #include "render/utf8.hpp"
 #include "support/render_golden.hpp"
+#include "support/result_text.hpp"
 
 namespace tumble::render {
 namespace {
@@ -149,7 +150,8 @@ TEST(TextLayer, FramesWithoutTextAreThoseOfARendererWithoutAFont) {
     RenderSettings without_font = settings;
     without_font.font.clear();
     std::string error;
-    const auto renderer = Renderer::create(settings, kShaders, error);
+    const auto renderer =
+        ::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error);
     ASSERT_TRUE(renderer) << error;
     io::Image with_text, after;
     renderer->draw(overlay_view(), with_text);
@@ -162,7 +164,8 @@ TEST(TextLayer, FramesWithoutTextAreThoseOfARendererWithoutAFont) {
 TEST(TextLayer, DrawingTextTwiceIsByteIdentical) {
   const RenderSettings settings = text_settings(320, 180);
   std::string error;
-  const auto renderer = Renderer::create(settings, kShaders, error);
+  const auto renderer =
+      ::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error);
   ASSERT_TRUE(renderer) << error;
   io::Image first, between, second;
   renderer->draw(overlay_view(), first);
@@ -182,7 +185,7 @@ TEST(TextLayer, AFontFontconfigDoesNotHaveIsAnErrorAtCreate) {
   RenderSettings settings = text_settings(320, 180);
   settings.font = "No Such Family Xq";
   std::string error;
-  EXPECT_FALSE(Renderer::create(settings, kShaders, error));
+  EXPECT_FALSE(::tumble::testing::value_or_empty(Renderer::create(settings, kShaders), error));
   EXPECT_NE(error.find("font family \"No Such Family Xq\" is not installed"), std::string::npos)
       << error;
 }

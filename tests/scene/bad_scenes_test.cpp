@@ -42,8 +42,8 @@ Expectation expectation_of(const fs::path& file) {
   const std::size_t column_at = line.find(", column ");
   const std::size_t key_at = line.find(", key ");
   const std::size_t says_at = line.find(", says \"");
-  if (line.rfind(prefix, 0) != 0 || column_at == std::string::npos ||
-      key_at == std::string::npos || says_at == std::string::npos || line.back() != '"') {
+  if (line.rfind(prefix, 0) != 0 || column_at == std::string::npos || key_at == std::string::npos ||
+      says_at == std::string::npos || line.back() != '"') {
     return {};
   }
   Expectation expected;
@@ -96,9 +96,9 @@ TEST_P(BadSceneFile, IsRefusedAtItsLineColumnAndKeyWithItsMessage) {
   const Expectation expected = expectation_of(file);
   ASSERT_GT(expected.line, 0) << file;
 
-  const SceneOrError result = load_scene_file(file);
-  ASSERT_TRUE(std::holds_alternative<SceneError>(result)) << "loaded: " << file;
-  const std::string& message = std::get<SceneError>(result).message;
+  const Result<Scene> result = load_scene_file(file);
+  ASSERT_TRUE(!result.ok()) << "loaded: " << file;
+  const std::string& message = result.error();
   const std::string prefix = file + ":" + std::to_string(expected.line) + ":" +
                              std::to_string(expected.column) + ": " +
                              (expected.key == "-" ? "" : expected.key + ": ");

@@ -40,12 +40,12 @@ std::vector<fs::path> scene_files() {
 
 // The scene in `path`, or a test failure carrying the loader's message.
 Scene load(const fs::path& path) {
-  SceneOrError result = load_scene_file(path.string());
-  if (const SceneError* error = std::get_if<SceneError>(&result)) {
-    ADD_FAILURE() << error->message;
+  Result<Scene> result = load_scene_file(path.string());
+  if (!result) {
+    ADD_FAILURE() << result.error();
     return {};
   }
-  return std::get<Scene>(std::move(result));
+  return std::move(result).value();
 }
 
 bool is_finite(const physics::BodyState& state) {

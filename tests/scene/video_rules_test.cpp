@@ -72,15 +72,14 @@ TEST(VideoRules, ALoadedSceneKeepsThemAndAChangedOneNamesTheKeyItBroke) {
 
 // In a file the rule is blamed on the first of its keys the file has, else its fallback.
 TEST(VideoRules, TheLoaderBlamesTheFirstKeyTheFileHas) {
-  const SceneOrError without_fps = parse_scene(
+  const Result<Scene> without_fps = parse_scene(
       "duration = 0.001\n[[bodies]]\nshape = \"cube\"\n"
       "size = 1.0\nmass = 1.0\n[physics]\ndt = 0.001\n",
       "test.toml");
-  ASSERT_TRUE(std::holds_alternative<SceneError>(without_fps));
-  EXPECT_NE(
-      std::get<SceneError>(without_fps).message.find(": duration: duration × fps gives no frame"),
-      std::string::npos)
-      << std::get<SceneError>(without_fps).message;
+  ASSERT_TRUE(!without_fps.ok());
+  EXPECT_NE(without_fps.error().find(": duration: duration × fps gives no frame"),
+            std::string::npos)
+      << without_fps.error();
 }
 
 TEST(VideoRules, EachFormatBringsItsOwnSizeRule) {

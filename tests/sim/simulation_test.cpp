@@ -118,6 +118,11 @@ TEST(Simulation, BlowUpProblemsNameNonFiniteAndOutOfBoundValues) {
   const auto state = [&](Vec3 x, Vec3 v, Vec3 w) {
     return physics::make_state(cube, x, v, Quat::Identity(), w);
   };
+  // "" when the state passes, else its error.
+  const auto blow_up_problem = [](const physics::BodyState& checked) -> std::string {
+    const Result<void> result = check_in_bounds(checked);
+    return result ? "" : result.error();
+  };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(blow_up_problem(state(Vec3::Zero(), Vec3::Zero(), Vec3::Zero())), "");
   EXPECT_EQ(blow_up_problem(state(Vec3(kMaxPosition, 0, 0), Vec3(0, kMaxSpeed, 0),

@@ -11,6 +11,7 @@
 #include "diff/image_diff.hpp"
 #include "io/png_io.hpp"
 #include "render/renderer.hpp"
+#include "support/result_text.hpp"
 
 namespace tumble::testing {
 
@@ -19,7 +20,8 @@ inline const std::string kGoldens = std::string(TUMBLE_SOURCE_DIR) + "/tests/ren
 
 inline io::Image draw(const render::RenderSettings& settings, const render::FrameView& view) {
   std::string error;
-  const auto renderer = render::Renderer::create(settings, kShaders, error);
+  const auto renderer =
+      ::tumble::testing::value_or_empty(render::Renderer::create(settings, kShaders), error);
   EXPECT_TRUE(renderer) << error;
   io::Image image;
   if (renderer) renderer->draw(view, image);
@@ -30,11 +32,13 @@ inline void expect_matches_golden(const io::Image& image, const std::string& nam
                                   const diff::DiffOptions& tolerance) {
   const std::string path = kGoldens + name + ".png";
   if (std::getenv("TUMBLE_UPDATE_GOLDEN")) {
-    ASSERT_EQ(io::write_png(path, image, {.compression_level = 9, .filter = true}), "");
+    ASSERT_EQ(::tumble::testing::error_text(
+                  io::write_png(path, image, {.compression_level = 9, .filter = true})),
+              "");
     GTEST_SKIP() << "wrote " << path;
   }
   io::Image golden;
-  ASSERT_EQ(io::read_png(path, golden), "");
+  ASSERT_EQ(::tumble::testing::take(io::read_png(path), golden), "");
   ASSERT_EQ(golden.width, image.width);
   ASSERT_EQ(golden.height, image.height);
   const diff::DiffResult diff = diff::compare_images(golden, image, tolerance);

@@ -36,19 +36,18 @@ inline constexpr const char* kTorqueX =
 // The scene parsed from `text` (named test.toml in messages), or a test failure carrying the
 // loader's message and a default scene.
 inline scene::Scene parse_valid(const std::string& text) {
-  scene::SceneOrError result = scene::parse_scene(text, "test.toml");
-  if (const auto* error = std::get_if<scene::SceneError>(&result)) {
-    ADD_FAILURE() << "unexpected error: " << error->message;
+  Result<scene::Scene> result = scene::parse_scene(text, "test.toml");
+  if (!result) {
+    ADD_FAILURE() << "unexpected error: " << result.error();
     return {};
   }
-  return std::get<scene::Scene>(std::move(result));
+  return std::move(result).value();
 }
 
 // The loader's message for `text`, or "(no error)".
 inline std::string error_of(const std::string& text) {
-  const scene::SceneOrError result = scene::parse_scene(text, "test.toml");
-  const auto* error = std::get_if<scene::SceneError>(&result);
-  return error ? error->message : "(no error)";
+  const Result<scene::Scene> result = scene::parse_scene(text, "test.toml");
+  return result ? "(no error)" : result.error();
 }
 
 }  // namespace tumble::testing

@@ -131,9 +131,9 @@ text = "{cube.speed:.4f}|{cube.position.y:.5f}"
   }
   ASSERT_GT(rows.size(), 100u);
 
-  const scene::SceneOrError loaded = scene::load_scene_file(file.string());
-  ASSERT_TRUE(std::holds_alternative<scene::Scene>(loaded));
-  const scene::Scene& scene = std::get<scene::Scene>(loaded);
+  const Result<scene::Scene> loaded = scene::load_scene_file(file.string());
+  ASSERT_TRUE(loaded.ok());
+  const scene::Scene& scene = *loaded;
   const Result<Framing> framing = frame_scene(scene, 24, [] { return false; });
   ASSERT_TRUE(framing);
   SimulatedFrames source(scene, *framing, [] { return false; });

@@ -41,12 +41,12 @@ height = -1.0
 )";
 
 scene::Scene parse(const std::string& overlays) {
-  scene::SceneOrError result = scene::parse_scene(std::string(kScene) + overlays, "test.toml");
-  if (const auto* error = std::get_if<scene::SceneError>(&result)) {
-    ADD_FAILURE() << error->message;
+  Result<scene::Scene> result = scene::parse_scene(std::string(kScene) + overlays, "test.toml");
+  if (!result) {
+    ADD_FAILURE() << result.error();
     return {};
   }
-  return std::get<scene::Scene>(std::move(result));
+  return std::move(result).value();
 }
 
 // Frame `frame` of the scene at width × height, drawn as `tumble render` draws it (render_job).

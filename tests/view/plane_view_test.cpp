@@ -17,16 +17,16 @@ using render::Vec3;
 
 // A still cube resting on the origin's floor, and the planes in `planes` (TOML).
 scene::Scene scene_with(const std::string& planes) {
-  const scene::SceneOrError loaded = scene::parse_scene(
+  const Result<scene::Scene> loaded = scene::parse_scene(
       "duration = 0.1\n[[bodies]]\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\nposition = [0, 0.5, "
       "0]\n" +
           planes,
       "planes.toml");
-  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
-    ADD_FAILURE() << error->message;
+  if (!loaded) {
+    ADD_FAILURE() << loaded.error();
     return {};
   }
-  return std::get<scene::Scene>(loaded);
+  return *loaded;
 }
 
 // The quad's axes in the world: across (local x), its front (local y), up its slope (local z).

@@ -32,8 +32,9 @@ std::string folder_problem(const fs::path& folder) {
   }
   if (!fs::is_directory(folder, error)) return "--out: " + folder.string() + " is not a folder";
   // A file opened and dropped unrenamed: AtomicFile removes it again.
-  io::AtomicFile probe((folder / ".tumble-write-test").string());
-  return probe.ok() ? "" : probe.error();
+  const Result<io::AtomicFile> probe =
+      io::AtomicFile::open((folder / ".tumble-write-test").string());
+  return probe ? "" : probe.error();
 }
 
 // "0.5" for 0.5 s: 17 digits, so that contact_bench parses the double tumble has.
@@ -52,7 +53,7 @@ struct PeerColumn {
 PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, const Pile& pile,
                     pipeline::Progress& progress) {
   bench::PileRunReader reader(pile);
-  const std::string ended = sys::run_reading_lines(
+  const Result<void> ended = sys::run_reading_lines(
       peer.string(),
       {"--engine", "bullet", "--stream", "--bodies", std::to_string(options.bodies), "--seconds",
        exact(options.seconds), "--seed", std::to_string(options.seed)},
@@ -64,8 +65,8 @@ PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, co
   PeerColumn column{reader.run(), ""};
   if (!reader.error().empty()) {
     column.error = peer.string() + " wrote what tumble cannot read: " + reader.error();
-  } else if (!ended.empty()) {
-    column.error = ended;
+  } else if (!ended) {
+    column.error = ended.error();
   } else if (!reader.complete()) {
     column.error = peer.string() + " ended before its run was whole";
   }
@@ -134,16 +135,17 @@ bool write_files(const fs::path& folder, const BenchContactOptions& options, con
                  const PileRun& tumble, const PileRun& bullet, std::FILE* out, std::FILE* err) {
   const fs::path json = folder / "contact_bench.json";
   const fs::path csv = folder / "contact_bench.csv";
-  io::AtomicFile json_file(json.string());
-  if (json_file.ok()) {
-    std::fputs(report_json(options, pile, tumble, bullet).c_str(), json_file.stream());
+  Result<io::AtomicFile> json_file = io::AtomicFile::open(json.string());
+  if (json_file) {
+    std::fputs(report_json(options, pile, tumble, bullet).c_str(), json_file->stream());
   }
-  io::AtomicFile csv_file(csv.string());
-  if (csv_file.ok()) write_csv(csv_file.stream(), pile, tumble, bullet);
+  Result<io::AtomicFile> csv_file = io::AtomicFile::open(csv.string());
+  if (csv_file) write_csv(csv_file->stream(), pile, tumble, bullet);
   bool ok = true;
-  for (io::AtomicFile* file : {&json_file, &csv_file}) {
-    if (!file->ok() || !file->commit()) {
-      std::fprintf(err, "tumble: %s\n", file->error().c_str());
+  for (Result<io::AtomicFile>* file : {&json_file, &csv_file}) {
+    const Result<void> written = *file ? (*file)->commit() : Result<void>(Error{file->error()});
+    if (!written) {
+      std::fprintf(err, "tumble: %s\n", written.error().c_str());
       ok = false;
     }
   }

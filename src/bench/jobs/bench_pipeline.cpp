@@ -53,10 +53,10 @@ std::string shell_quote(const std::string& text) {
 int publish(const std::string& table, const BenchPipelineOptions& options, std::FILE* out,
             std::FILE* err) {
   std::fputs(table.c_str(), out);
-  const std::string error =
+  const Result<void> written =
       io::write_file_atomically((fs::path(options.out) / "pipeline.md").string(), table);
-  if (!error.empty()) {
-    std::fprintf(err, "tumble: %s\n", error.c_str());
+  if (!written) {
+    std::fprintf(err, "tumble: %s\n", written.error().c_str());
     return kExitBadInput;
   }
   return kExitOk;
@@ -65,11 +65,11 @@ int publish(const std::string& table, const BenchPipelineOptions& options, std::
 }  // namespace
 
 int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std::FILE* err) {
-  const scene::SceneOrError loaded = options.scene_path.empty()
-                                         ? scene::parse_scene(kBenchScene, "bench_pipeline.toml")
-                                         : scene::load_scene_file(options.scene_path);
-  if (const auto* error = std::get_if<scene::SceneError>(&loaded)) {
-    std::fprintf(err, "tumble: %s\n", error->message.c_str());
+  const Result<scene::Scene> loaded = options.scene_path.empty()
+                                          ? scene::parse_scene(kBenchScene, "bench_pipeline.toml")
+                                          : scene::load_scene_file(options.scene_path);
+  if (!loaded) {
+    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
     return kExitBadInput;
   }
   // The benchmark's sizes, rate and length override the scene's, as `tumble render`'s do, and
@@ -77,10 +77,9 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   job::RenderOptions overrides;
   overrides.width = options.width;
   overrides.height = options.height;
-  overrides.duration = static_cast<double>(options.frames) / std::get<scene::Scene>(loaded).fps;
+  overrides.duration = static_cast<double>(options.frames) / loaded->fps;
   if (options.msaa != 0) overrides.msaa = options.msaa;
-  const Result<job::RenderJob> job =
-      job::make_render_job(std::get<scene::Scene>(loaded), overrides);
+  const Result<job::RenderJob> job = job::make_render_job(*loaded, overrides);
   if (!job) {
     std::fprintf(err, "tumble: %s\n", job.error().c_str());
     return kExitBadInput;
@@ -91,12 +90,13 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   // report (".pipeline.partial-<pid>"), never committed: it is removed on the way out, whatever
   // happens, and nothing of the user's is replaced.
   sys::install_interrupt_handlers();
-  const io::StagedDirectory scratch((fs::path(options.out) / "pipeline").string());
-  if (!scratch.ok()) {
+  const Result<io::StagedDirectory> scratch =
+      io::StagedDirectory::create((fs::path(options.out) / "pipeline").string());
+  if (!scratch) {
     std::fprintf(err, "tumble: %s\n", scratch.error().c_str());
     return kExitBadInput;
   }
-  const fs::path root = scratch.path();
+  const fs::path root = scratch->path();
   if (options.chunks > 0) {
     const Result<std::string> chunk_table = bench_chunks(*job, options.chunks, root, err);
     if (const int signal = sys::interrupt_signal()) {
