@@ -42,6 +42,20 @@ std::string frames_error(const std::string& text) {
   return "--frames: expected A:B (frames A to B-1), got " + text;
 }
 
+CLI::Option* add_setting_option(CLI::App* command, const common::RenderSetting& setting,
+                                std::optional<int>& value, const std::string& help) {
+  return command
+      ->add_option(std::string(setting.flag), value,
+                   help.empty() ? std::string(setting.help) : help)
+      ->check(CLI::Range(setting.min, setting.max));
+}
+
+CLI::Option* add_setting_option(CLI::App* command, const common::RenderSetting& setting,
+                                std::string& value) {
+  return command->add_option(std::string(setting.flag), value, std::string(setting.help))
+      ->check(CLI::IsMember(std::vector<std::string>(setting.names.begin(), setting.names.end())));
+}
+
 void ComparisonOptions::apply_antialiasing(diff::DiffCommandOptions& diff) const {
   if (antialiasing->count() > 0) diff.ignore_antialiasing = ignore_antialiasing;
 }

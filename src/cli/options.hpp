@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "common/render_setting_table.hpp"
 #include "diff/diff_command.hpp"  // DiffCommandOptions
 
 namespace tumble::cli {
@@ -22,6 +23,13 @@ std::optional<std::pair<long long, long long>> parse_range(const std::string& te
 
 // The error of a --frames A:B that is not one.
 std::string frames_error(const std::string& text);
+
+// The option of a row of the settings table (common/render_setting_table.hpp): its flag, its
+// check and its help (or `help`, where the option is another command's).
+CLI::Option* add_setting_option(CLI::App* command, const common::RenderSetting& setting,
+                                std::optional<int>& value, const std::string& help = "");
+CLI::Option* add_setting_option(CLI::App* command, const common::RenderSetting& setting,
+                                std::string& value);
 
 // How frames are compared and what is written of the comparison: `tumble diff` and
 // `tumble render --golden` take the same options. --ignore-antialiasing's default depends on the

@@ -71,8 +71,8 @@ void add_plan_command(CLI::App& app, Commands& commands) {
                    "possible")
       ->check(whole_number_in(1, LLONG_MAX, ">= 1"))
       ->excludes(chunks);
-  command->add_option("--fps", options->render.fps, "Frames per second (as render --fps)")
-      ->check(CLI::Range(1, 240));
+  add_setting_option(command, common::render_setting("fps"), options->render.fps,
+                     "Frames per second (as render --fps)");
   command->add_option("--quality", options->render.quality,
                       "Size and frame rate preset (as render --quality): the frame count "
                       "follows its rate");

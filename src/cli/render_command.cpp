@@ -19,7 +19,6 @@
 #include "job/render_job.hpp"
 #include "job/scene_hash.hpp"
 #include "pipeline/progress.hpp"
-#include "scene/limits.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/stability_report.hpp"
 #include "sys/interrupt.hpp"
@@ -271,11 +270,9 @@ void add_render_command(CLI::App& app, Commands& commands) {
                    "Output folder; files go to OUTPUT/<scene name>/")
       ->check(not_empty())
       ->capture_default_str();
-  command->add_option("--width", render.width, "Image width (pixels)")
-      ->check(CLI::Range(scene::kMinImageSide, scene::kMaxImageSide));
-  command->add_option("--height", render.height, "Image height (pixels)")
-      ->check(CLI::Range(scene::kMinImageSide, scene::kMaxImageSide));
-  command->add_option("--fps", render.fps, "Frames per second")->check(CLI::Range(1, 240));
+  add_setting_option(command, common::render_setting("width"), render.width);
+  add_setting_option(command, common::render_setting("height"), render.height);
+  add_setting_option(command, common::render_setting("fps"), render.fps);
   CLI::Option* frames =
       command->add_option("--frames", line->frame_range, "Render frames A to B-1 only (A:B)")
           ->check(not_empty());
@@ -300,18 +297,8 @@ void add_render_command(CLI::App& app, Commands& commands) {
   command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
   command->add_flag("--serial", render.serial,
                     "Render, write and encode on one thread (slower; same bytes)");
-  command
-      ->add_option(
-          "--backend", line->backend,
-          "Off-screen OpenGL: osmesa, egl (a GPU's EGL device, else surfaceless) or auto (EGL "
-          "on a GPU, else OSMesa if built in); "
-          "replaces the scene's [render] backend")
-      ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
-  command
-      ->add_option("--egl-device", render.egl_device,
-                   "Draw with EGL on device N of EGL's list (EGL_EXT_platform_device; a wrong N "
-                   "lists them); replaces the scene's [render] egl_device")
-      ->check(CLI::Range(0, common::kMaxEglDevice));
+  add_setting_option(command, common::render_setting("backend"), line->backend);
+  add_setting_option(command, common::render_setting("egl_device"), render.egl_device);
   command
       ->add_option("--png-compression", line->png_compression,
                    "fast (zlib 1, no filter), default (libpng's: zlib 6, adaptive filter) or "
