@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -11,13 +12,18 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "bench/accuracy.hpp"
 #include "bench/hard_cases.hpp"
+#include "bench/jobs/bench_contact.hpp"
+#include "bench/jobs/bench_pipeline.hpp"
+#include "cli/options.hpp"
 #include "io/atomic_file.hpp"
+#include "scene/limits.hpp"
 
 extern char** environ;
 
@@ -313,24 +319,17 @@ std::string run_gnuplot(const fs::path& directory, const fs::path& script) {
 
 }  // namespace
 
-int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std::FILE* err) {
+CommandResult run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out,
+                                 std::FILE* err) {
   std::error_code error_code;
   const fs::path directory = fs::absolute(options.out, error_code);
-  if (error_code) {
-    std::fprintf(err, "tumble: --out: expected a folder name, got \"%s\"\n", options.out.c_str());
-    return kExitBadInput;
-  }
+  if (error_code) return Error{"--out: expected a folder name, got \"" + options.out + "\""};
   fs::create_directories(directory, error_code);
-  if (error_code) {
-    std::fprintf(err, "tumble: cannot create %s: %s\n", directory.c_str(),
-                 error_code.message().c_str());
-    return kExitBadInput;
-  }
+  if (error_code) return Error{"cannot create " + directory.string() + ": " + error_code.message()};
   // The sweep takes over a minute: find an unwritable folder before it, not after.
   if (const auto probe = io::AtomicFile::open((directory / ".tumble-write-test").string());
       !probe) {
-    std::fprintf(err, "tumble: %s\n", probe.error().c_str());
-    return kExitBadInput;
+    return Error{probe.error()};
   }
 
   const bench::AccuracySettings settings =
@@ -374,14 +373,92 @@ int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std:
   if (!gnuplot_error.empty() || error_code) {
     fs::remove(directory / png_temporary, error_code);
     fs::remove(png, error_code);  // an earlier run's chart would not match the new figures
-    std::fprintf(
-        err, "tumble: %s (accuracy.csv and accuracy.md are written; there is no accuracy.png)\n",
-        gnuplot_error.empty() ? ("cannot rename the chart into " + png.string()).c_str()
-                              : gnuplot_error.c_str());
-    return kExitBadInput;
+    return Error{
+        (gnuplot_error.empty() ? "cannot rename the chart into " + png.string() : gnuplot_error) +
+        " (accuracy.csv and accuracy.md are written; there is no accuracy.png)"};
   }
   std::fprintf(out, "%s\n", png.c_str());
   return kExitOk;
+}
+
+namespace {
+
+void add_bench_pipeline(CLI::App& bench, Commands& commands) {
+  const auto options = std::make_shared<bench::BenchPipelineOptions>();
+  CLI::App* command = bench.add_subcommand(
+      "pipeline", "Render one scene the naive ways and tumble's way, in one run, and compare");
+  command->add_option("--scene", options->scene_path,
+                      "Scene to render (default: a built-in lit cube with ground and shadow)");
+  command->add_option("--width", options->width, "Image width")
+      ->check(CLI::Range(scene::kMinImageSide, scene::kMaxImageSide))
+      ->capture_default_str();
+  command->add_option("--height", options->height, "Image height")
+      ->check(CLI::Range(scene::kMinImageSide, scene::kMaxImageSide))
+      ->capture_default_str();
+  command->add_option("--frames", options->frames, "Frames per path")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{100000}))
+      ->capture_default_str();
+  command
+      ->add_option("--msaa", options->msaa,
+                   "Samples per pixel (default: the scene's [render] msaa, as tumble render)")
+      ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+  command
+      ->add_option("--chunks", options->chunks,
+                   "Instead: the whole render against N chunks, each a process of its own "
+                   "(per-chunk overhead and total CPU)")
+      ->check(whole_number_in(1, 100000, "from 1 to 100000"));
+  command->add_option("--out", options->out, "Folder for pipeline.md")
+      ->check(not_empty())
+      ->capture_default_str();
+  commands.push_back({command, [options] {
+                        return exit_code(bench::run_bench_pipeline(*options, stdout, stderr));
+                      }});
+}
+
+void add_bench_accuracy(CLI::App& bench, Commands& commands) {
+  const auto options = std::make_shared<BenchAccuracyOptions>();
+  CLI::App* command = bench.add_subcommand(
+      "accuracy", "Error against cost of every integrator on hard cases: CSV, Markdown, chart");
+  command->add_option("--out", options->out, "Folder for accuracy.csv, .md and .png")
+      ->check(not_empty())
+      ->capture_default_str();
+  command->add_flag("--quick", options->quick,
+                    "A reduced sweep (3 cases, 2 step sizes, 1 timing) for tests");
+  commands.push_back({command, [options] { return run_bench_accuracy(*options, stdout, stderr); }});
+}
+
+void add_bench_contact(CLI::App& bench, Commands& commands) {
+  const auto options = std::make_shared<bench::BenchContactOptions>();
+  CLI::App* command = bench.add_subcommand(
+      "contact",
+      "The pile of issue 12 in tumble and in Bullet 3.24 (through contact_bench), in one run");
+  command->add_option("--bodies", options->bodies, "Boxes in the pile")
+      ->check(whole_number_in(0, 100000, "from 0 to 100000"))
+      ->capture_default_str();
+  command->add_option("--seconds", options->seconds, "Simulated time (s), in steps of 1/60 s")
+      ->check(CLI::Range(0.0, 3600.0))
+      ->capture_default_str();
+  command
+      ->add_option("--seed", options->seed, "Seed of the boxes' sizes, orientations and velocities")
+      ->capture_default_str();
+  command
+      ->add_option("--out", options->out,
+                   "An existing folder for contact_bench.json and contact_bench.csv")
+      ->check(not_empty());
+  command->add_flag("-q,--quiet", options->quiet, "No progress");
+  commands.push_back({command, [options] {
+                        return exit_code(bench::run_bench_contact(*options, stdout, stderr));
+                      }});
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, Commands& commands) {
+  CLI::App* bench = app.add_subcommand("bench", "Measure tumble's speed");
+  bench->require_subcommand(1);
+  add_bench_pipeline(*bench, commands);
+  add_bench_accuracy(*bench, commands);
+  add_bench_contact(*bench, commands);
 }
 
 }  // namespace tumble::cli

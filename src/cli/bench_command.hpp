@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "common/exit_codes.hpp"
+#include "cli/command.hpp"
 
 namespace tumble::cli {
 
@@ -16,9 +16,13 @@ struct BenchAccuracyOptions {
   bool quick = false;  // the reduced sweep of bench::quick_accuracy_settings()
 };
 
-// Progress lines go to `err`, the list of files written to `out`. Returns kExitOk, or
-// kExitBadInput when a file cannot be written or gnuplot is missing or fails (the CSV and the
-// Markdown are written first, so they are there either way).
-int run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out, std::FILE* err);
+// Progress lines go to `err`, the list of files written to `out`. Returns kExitOk, or an error
+// when a file cannot be written or gnuplot is missing or fails (the CSV and the Markdown are
+// written first, so they are there either way).
+CommandResult run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE* out,
+                                 std::FILE* err);
+
+// `tumble bench pipeline | accuracy | contact`, each with its options.
+void add_bench_command(CLI::App& app, Commands& commands);
 
 }  // namespace tumble::cli

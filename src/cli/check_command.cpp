@@ -1,5 +1,7 @@
 #include "cli/check_command.hpp"
 
+#include <CLI/CLI.hpp>
+#include <memory>
 #include <variant>
 
 #include "physics/integrators.hpp"
@@ -9,12 +11,9 @@
 
 namespace tumble::cli {
 
-int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err) {
+CommandResult run_check(const CheckOptions& options, std::FILE* out) {
   const Result<scene::Scene> loaded = scene::load_scene_file(options.scene_path);
-  if (!loaded) {
-    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
-    return kExitBadInput;
-  }
+  if (!loaded) return Error{loaded.error()};
   const scene::Scene& scene = *loaded;
   const std::vector<std::string> warnings = scene::stability_warnings(scene);
   for (const std::string& line : warnings) std::fprintf(out, "tumble: warning: %s\n", line.c_str());
@@ -26,6 +25,14 @@ int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err) {
                std::string(physics::integrator_name(scene.physics.integrator)).c_str(),
                warnings.size(), warnings.size() == 1 ? "" : "s");
   return kExitOk;
+}
+
+void add_check_command(CLI::App& app, Commands& commands) {
+  const auto options = std::make_shared<CheckOptions>();
+  CLI::App* command = app.add_subcommand(
+      "check", "Validate a scene and warn about its step: exit 0 if valid, 2 if not");
+  command->add_option("scene", options->scene_path, "Scene file (TOML)")->required();
+  commands.push_back({command, [options] { return run_check(*options, stdout); }});
 }
 
 }  // namespace tumble::cli

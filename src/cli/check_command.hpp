@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "common/exit_codes.hpp"
+#include "cli/command.hpp"
 
 namespace tumble::cli {
 
@@ -13,8 +13,11 @@ struct CheckOptions {
   std::string scene_path;
 };
 
-// Warnings and a closing summary line go to `out`, a load error to `err`. Returns kExitOk for a
-// valid scene (warnings or not) and kExitBadInput for one that does not load.
-int run_check(const CheckOptions& options, std::FILE* out, std::FILE* err);
+// Warnings and a closing summary line go to `out`. Returns kExitOk for a valid scene (warnings or
+// not) and the load error for one that does not load.
+CommandResult run_check(const CheckOptions& options, std::FILE* out);
+
+// `tumble check SCENE`.
+void add_check_command(CLI::App& app, Commands& commands);
 
 }  // namespace tumble::cli

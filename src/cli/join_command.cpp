@@ -1,9 +1,12 @@
 #include "cli/join_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
+#include "cli/options.hpp"
 #include "common/exit_codes.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_text.hpp"
@@ -156,39 +159,30 @@ std::string write_joined(const std::vector<job::ChunkReport>& chunks, const fs::
 
 }  // namespace
 
-int run_join(const JoinOptions& options, std::FILE* err) {
+CommandResult run_join(const JoinOptions& options, std::FILE* err) {
   sys::install_interrupt_handlers();
   const Result<std::vector<job::ChunkReport>> chunks = checked_chunks(options.chunks);
-  if (!chunks) {
-    std::fprintf(err, "tumble: join: %s\n", chunks.error().c_str());
-    return kExitBadInput;
-  }
+  if (!chunks) return Error{"join: " + chunks.error()};
   const fs::path out = fs::path(options.out).lexically_normal();
   const fs::path folder = out.filename().empty() ? out.parent_path() : out;  // "a/b/" is "a/b"
   if (const std::string problem = output_problem(folder, *chunks); !problem.empty()) {
-    std::fprintf(err, "tumble: join: %s\n", problem.c_str());
-    return kExitBadInput;
+    return Error{"join: " + problem};
   }
   Result<io::StagedDirectory> staged = io::StagedDirectory::create(folder.string());
-  if (!staged) {
-    std::fprintf(err, "tumble: join: %s\n", staged.error().c_str());
-    return kExitBadInput;
-  }
+  if (!staged) return Error{"join: " + staged.error()};
   std::string error = write_joined(*chunks, staged->path(), folder);
   if (const int signal = sys::interrupt_signal()) {
     std::fprintf(err, "tumble: join stopped by %s; %s was left as it was\n",
                  sys::signal_name(signal), folder.c_str());
-    return kExitInterrupted + signal;
+    return exit_code(kExitInterrupted + signal);
   }
   // Checked again: the folder may have been made or filled while the chunks were copied.
   if (error.empty()) error = output_problem(folder, *chunks);
   if (error.empty()) {
     if (const Result<void> committed = staged->commit(); !committed) error = committed.error();
   }
-  if (!error.empty()) {
-    std::fprintf(err, "tumble: join: %s; %s was left as it was\n", error.c_str(), folder.c_str());
-    return kExitBadInput;
-  }
+  if (!error.empty())
+    return Error{"join: " + error + "; " + folder.string() + " was left as it was"};
   if (!staged->leftover().empty())
     std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
   if (!options.quiet) {
@@ -196,6 +190,20 @@ int run_join(const JoinOptions& options, std::FILE* err) {
                  static_cast<long long>(chunks->front().scene_frames), folder.c_str());
   }
   return kExitOk;
+}
+
+void add_join_command(CLI::App& app, Commands& commands) {
+  const auto options = std::make_shared<JoinOptions>();
+  CLI::App* command = app.add_subcommand(
+      "join", "Join the chunk folders of one render into one render folder (frames, MP4, report)");
+  command->add_option("out", options->out, "Render folder to write (replaced as a whole)")
+      ->required()
+      ->check(not_empty());
+  command->add_option("chunks", options->chunks, "Chunk folders, in any order")
+      ->required()
+      ->check(not_empty());
+  command->add_flag("-q,--quiet", options->quiet, "No summary");
+  commands.push_back({command, [options] { return run_join(*options, stderr); }});
 }
 
 }  // namespace tumble::cli

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/command.hpp"
+
 namespace tumble::cli {
 
 struct JoinOptions {
@@ -16,7 +18,10 @@ struct JoinOptions {
   bool quiet = false;
 };
 
-// Messages go to `err`. Returns the process exit code.
-int run_join(const JoinOptions& options, std::FILE* err);
+// The summary and the note of a stop by a signal go to `err`.
+CommandResult run_join(const JoinOptions& options, std::FILE* err);
+
+// `tumble join OUT CHUNK... [-q]`.
+void add_join_command(CLI::App& app, Commands& commands);
 
 }  // namespace tumble::cli

@@ -1,8 +1,12 @@
 #include "cli/plan_command.hpp"
 
+#include <CLI/CLI.hpp>
+#include <climits>
+#include <memory>
 #include <string>
 #include <variant>
 
+#include "cli/options.hpp"
 #include "common/exit_codes.hpp"
 #include "io/json_text.hpp"
 #include "job/chunk_plan.hpp"
@@ -26,22 +30,15 @@ std::string plan_json(const scene::Scene& scene, std::int64_t frame_count,
 
 }  // namespace
 
-int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err) {
+CommandResult run_plan(const PlanOptions& options, std::FILE* out) {
   if (!options.chunks && !options.chunk_frames) {
-    std::fputs("tumble: plan: give --chunks N or --chunk-frames K\n", err);
-    return kExitBadInput;
+    return Error{"plan: give --chunks N or --chunk-frames K"};
   }
   const Result<scene::Scene> loaded = scene::load_scene_file(options.render.scene_path);
-  if (!loaded) {
-    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
-    return kExitBadInput;
-  }
+  if (!loaded) return Error{loaded.error()};
   // The overrides render takes, so that plan and render count the same frames.
   const Result<scene::Scene> scene = job::scene_as_rendered(*loaded, options.render);
-  if (!scene) {
-    std::fprintf(err, "tumble: %s\n", scene.error().c_str());
-    return kExitBadInput;
-  }
+  if (!scene) return Error{scene.error()};
   const std::int64_t frame_count = scene::frame_count(*scene);
   Result<std::int64_t> chunks = options.chunks
                                     ? Result<std::int64_t>(*options.chunks)
@@ -49,11 +46,7 @@ int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err) {
   const Result<std::vector<job::FrameRange>> ranges =
       chunks ? job::plan_chunks(frame_count, *chunks)
              : Result<std::vector<job::FrameRange>>(Error{chunks.error()});
-  if (!ranges) {
-    std::fprintf(err, "tumble: %s: %s\n", options.render.scene_path.c_str(),
-                 ranges.error().c_str());
-    return kExitBadInput;
-  }
+  if (!ranges) return Error{options.render.scene_path + ": " + ranges.error()};
   if (options.json) {
     std::fputs(plan_json(*scene, frame_count, *ranges).c_str(), out);
   } else {
@@ -61,6 +54,29 @@ int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err) {
       std::fprintf(out, "%s\n", job::range_text(range).c_str());
   }
   return kExitOk;
+}
+
+void add_plan_command(CLI::App& app, Commands& commands) {
+  const auto options = std::make_shared<PlanOptions>();
+  CLI::App* command = app.add_subcommand(
+      "plan", "Print the frame ranges of a render cut into chunks, one A:B per line");
+  command->add_option("scene", options->render.scene_path, "Scene file (TOML)")->required();
+  CLI::Option* chunks =
+      command->add_option("--chunks", options->chunks, "Cut into N chunks, as even as possible")
+          ->check(whole_number_in(1, LLONG_MAX, ">= 1"));
+  command
+      ->add_option("--chunk-frames", options->chunk_frames,
+                   "Cut into as few chunks of at most K frames as cover the scene, as even as "
+                   "possible")
+      ->check(whole_number_in(1, LLONG_MAX, ">= 1"))
+      ->excludes(chunks);
+  add_setting_option(command, common::render_setting("fps"), options->render.fps,
+                     "Frames per second (as render --fps)");
+  command->add_option("--quality", options->render.quality,
+                      "Size and frame rate preset (as render --quality): the frame count "
+                      "follows its rate");
+  command->add_flag("--json", options->json, "Print the plan as JSON");
+  commands.push_back({command, [options] { return run_plan(*options, stdout); }});
 }
 
 }  // namespace tumble::cli

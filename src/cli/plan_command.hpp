@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "cli/command.hpp"
 #include "job/render_job.hpp"  // RenderOptions
 
 namespace tumble::cli {
@@ -18,7 +19,10 @@ struct PlanOptions {
   bool json = false;
 };
 
-// The plan goes to `out`, errors to `err`. Returns the process exit code.
-int run_plan(const PlanOptions& options, std::FILE* out, std::FILE* err);
+// The plan goes to `out`.
+CommandResult run_plan(const PlanOptions& options, std::FILE* out);
+
+// `tumble plan SCENE --chunks N | --chunk-frames K [--fps F] [--quality Q] [--json]`.
+void add_plan_command(CLI::App& app, Commands& commands);
 
 }  // namespace tumble::cli

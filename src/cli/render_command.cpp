@@ -1,13 +1,15 @@
 #include "cli/render_command.hpp"
 
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <memory>
 #include <sstream>
+#include <thread>
 #include <variant>
 
-#include <algorithm>
-#include <thread>
-
+#include "cli/options.hpp"
 #include "common/exit_codes.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_text.hpp"
@@ -138,32 +140,22 @@ std::string report_json(const job::RenderJob& job, const job::RenderResult& resu
 
 }  // namespace
 
-int run_render(const job::RenderOptions& options,
-               const std::optional<diff::DiffCommandOptions>& golden, std::FILE* out,
-               std::FILE* err) {
+CommandResult run_render(const job::RenderOptions& options,
+                         const std::optional<diff::DiffCommandOptions>& golden, std::FILE* out,
+                         std::FILE* err) {
   const auto start = Clock::now();
   sys::install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
   const Result<std::string> text = scene::read_scene_text(options.scene_path);
-  if (!text) {
-    std::fprintf(err, "tumble: %s\n", text.error().c_str());
-    return kExitBadInput;
-  }
+  if (!text) return Error{text.error()};
   const Result<scene::Scene> loaded = scene::parse_scene(*text, options.scene_path);
-  if (!loaded) {
-    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
-    return kExitBadInput;
-  }
+  if (!loaded) return Error{loaded.error()};
   Result<job::RenderJob> made = job::make_render_job(*loaded, options);
-  if (!made) {
-    std::fprintf(err, "tumble: %s\n", made.error().c_str());
-    return kExitBadInput;
-  }
+  if (!made) return Error{made.error()};
   made->scene_hash = job::scene_hash(*text, made->scene);
   const job::RenderJob& job = *made;
   if (golden) {
     if (const std::string problem = job::golden_problem(*golden, job); !problem.empty()) {
-      std::fprintf(err, "tumble: %s\n", problem.c_str());
-      return kExitBadInput;
+      return Error{problem};
     }
   }
   if (!options.quiet) scene::print_stability_warnings(job.scene, err);
@@ -172,14 +164,10 @@ int run_render(const job::RenderOptions& options,
   // a failed or interrupted render leaves the earlier output as it was.
   if (const std::string problem = job::replace_problem(job.output_root, job.scene.output.directory);
       !problem.empty()) {
-    std::fprintf(err, "tumble: %s\n", problem.c_str());
-    return kExitBadInput;
+    return Error{problem};
   }
   Result<io::StagedDirectory> staged = io::StagedDirectory::create(job.directory.string());
-  if (!staged) {
-    std::fprintf(err, "tumble: %s\n", staged.error().c_str());
-    return kExitBadInput;
-  }
+  if (!staged) return Error{staged.error()};
   const fs::path staging = staged->path();
   const std::int64_t count = job.end - job.first;
   pipeline::Progress progress(count, options.quiet, err);
@@ -195,20 +183,18 @@ int run_render(const job::RenderOptions& options,
   if (options.verbose && !result.renderer.empty()) {
     std::fprintf(err, "tumble: renderer %s\n", result.renderer.c_str());
   }
+  // "<why> after K of N frames; <folder> was left as it was".
   const auto stopped = [&](const std::string& why) {
-    std::fprintf(err, "tumble: %s after %lld of %lld frames; %s was left as it was\n", why.c_str(),
-                 static_cast<long long>(result.pipeline.frames_done), static_cast<long long>(count),
-                 job.directory.c_str());
+    return why + " after " + std::to_string(result.pipeline.frames_done) + " of " +
+           std::to_string(count) + " frames; " + job.directory.string() + " was left as it was";
   };
   if (const int signal = sys::interrupt_signal()) {
-    stopped(std::string("stopped by ") + sys::signal_name(signal));
-    return kExitInterrupted + signal;
+    std::fprintf(err, "tumble: %s\n",
+                 stopped(std::string("stopped by ") + sys::signal_name(signal)).c_str());
+    return exit_code(kExitInterrupted + signal);
   }
-  if (!result.error.empty()) {
-    std::fprintf(err, "tumble: %s\n", result.error.c_str());
-    stopped("render failed");
-    return kExitBadInput;
-  }
+  // Two lines, each "tumble: ...": what failed, then what became of the output.
+  if (!result.error.empty()) return Error{result.error + "\ntumble: " + stopped("render failed")};
 
   const double total_seconds = seconds_since(start);
   const Result<void> written = io::write_file_atomically((staging / "report.json").string(),
@@ -219,11 +205,7 @@ int run_render(const job::RenderOptions& options,
   if (error.empty()) {
     if (const Result<void> committed = staged->commit(); !committed) error = committed.error();
   }
-  if (!error.empty()) {
-    std::fprintf(err, "tumble: %s\n", error.c_str());
-    stopped("render failed");
-    return kExitBadInput;
-  }
+  if (!error.empty()) return Error{error + "\ntumble: " + stopped("render failed")};
   if (!staged->leftover().empty())
     std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
   if (!options.quiet) {
@@ -236,7 +218,105 @@ int run_render(const job::RenderOptions& options,
                  static_cast<long long>(count), total_seconds,
                  static_cast<double>(count) / total_seconds, drawn_by.c_str(), shown.c_str());
   }
-  return golden ? job::compare_with_golden(*golden, job, out, err) : kExitOk;
+  return golden ? exit_code(job::compare_with_golden(*golden, job, out, err)) : kExitOk;
+}
+
+namespace {
+
+// The command line of `tumble render`, as given: what run_render takes is made of it once parsed.
+struct RenderCommandLine {
+  job::RenderOptions render;
+  std::string frame_range;  // --frames A:B
+  std::string chunk_index;  // --chunk I/N
+  std::string backend;      // --backend (checked by IsMember)
+  std::string png_compression = "fast";
+  diff::DiffCommandOptions golden;  // --golden DIR and tumble diff's options
+  ComparisonOptions golden_comparison;
+};
+
+CommandResult run_command_line(RenderCommandLine& line) {
+  job::RenderOptions& render = line.render;
+  if (!line.frame_range.empty()) {
+    const std::optional<std::pair<long long, long long>> range = parse_range(line.frame_range);
+    if (!range) return Error{frames_error(line.frame_range)};
+    render.first_frame = range->first;
+    render.end_frame = range->second;
+  }
+  if (!line.chunk_index.empty()) {
+    render.chunk = job::parse_chunk_index(line.chunk_index);
+    if (!render.chunk) {
+      return Error{"--chunk: expected I/N (chunk I of N, 1 <= I <= N), got " + line.chunk_index};
+    }
+  }
+  render.png = *io::png_settings_named(line.png_compression);  // checked by IsMember
+  for (const auto each : common::kAllBackends) {
+    if (line.backend == common::backend_name(each)) render.backend = each;
+  }
+  std::optional<diff::DiffCommandOptions> compare;
+  if (!line.golden.first_path.empty()) {
+    line.golden_comparison.apply_antialiasing(line.golden);
+    compare = line.golden;
+  }
+  return run_render(render, compare, stdout, stderr);
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app, Commands& commands) {
+  const auto line = std::make_shared<RenderCommandLine>();
+  job::RenderOptions& render = line->render;
+  CLI::App* command = app.add_subcommand(
+      "render", "Render a scene to PNG frames and videos (MP4, WebM, GIF), off-screen");
+  command->add_option("scene", render.scene_path, "Scene file (TOML)")->required();
+  command
+      ->add_option("-o,--output", render.output_root,
+                   "Output folder; files go to OUTPUT/<scene name>/")
+      ->check(not_empty())
+      ->capture_default_str();
+  add_setting_option(command, common::render_setting("width"), render.width);
+  add_setting_option(command, common::render_setting("height"), render.height);
+  add_setting_option(command, common::render_setting("fps"), render.fps);
+  CLI::Option* frames =
+      command->add_option("--frames", line->frame_range, "Render frames A to B-1 only (A:B)")
+          ->check(not_empty());
+  command
+      ->add_option("--chunk", line->chunk_index,
+                   "Render chunk I of N (I/N, from 1): the frames of line I of `tumble plan "
+                   "--chunks N`, into OUTPUT/<scene output directory>.chunk-I-of-N/")
+      ->check(not_empty())
+      ->excludes(frames);
+  command->add_flag("!--no-frames", render.frames, "Do not write PNG frames");
+  command->add_option(
+      "--quality", render.quality,
+      "Size and frame rate: low (854x480, 15 fps), medium (1280x720, 30), high (1920x1080, 60), "
+      "production (2560x1440, 60), 4k (3840x2160, 60); --width, --height, --fps win");
+  command
+      ->add_option("--format", render.formats,
+                   "Video formats to write, mp4, webm or gif: repeat or separate with commas "
+                   "(replaces [output] formats)")
+      ->delimiter(',');
+  command->add_flag("!--no-video", render.video, "Do not write any video");
+  command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");
+  command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
+  command->add_flag("--serial", render.serial,
+                    "Render, write and encode on one thread (slower; same bytes)");
+  add_setting_option(command, common::render_setting("backend"), line->backend);
+  add_setting_option(command, common::render_setting("egl_device"), render.egl_device);
+  command
+      ->add_option("--png-compression", line->png_compression,
+                   "fast (zlib 1, no filter), default (libpng's: zlib 6, adaptive filter) or "
+                   "small (zlib 9, adaptive filter)")
+      ->check(CLI::IsMember({"fast", "default", "small"}))
+      ->capture_default_str();
+  CLI::Option* golden =
+      command
+          ->add_option(
+              "--golden", line->golden.first_path,
+              "Then compare the render with this golden render (its folder, a folder of "
+              "frames or a video) as `tumble diff` does: exit 0 match, 1 mismatch, 2 error")
+          ->check(not_empty());
+  add_comparison_options(command, line->golden, line->golden_comparison, golden);
+  commands.push_back({command, [line] { return run_command_line(*line); }});
 }
 
 }  // namespace tumble::cli

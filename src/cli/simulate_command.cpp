@@ -2,11 +2,14 @@
 
 #include <stdio_ext.h>
 
+#include <CLI/CLI.hpp>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <memory>
 #include <variant>
 
+#include "cli/options.hpp"
 #include "common/exit_codes.hpp"
 #include "io/atomic_file.hpp"
 #include "io/state_csv.hpp"
@@ -43,13 +46,10 @@ bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation
 
 }  // namespace
 
-int run_simulate(const SimulateOptions& options, std::FILE* err) {
+CommandResult run_simulate(const SimulateOptions& options, std::FILE* err) {
   sys::install_interrupt_handlers();  // from the start: a signal is acted on at the first step
   const Result<scene::Scene> loaded = scene::load_scene_file(options.scene_path);
-  if (!loaded) {
-    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
-    return kExitBadInput;
-  }
+  if (!loaded) return Error{loaded.error()};
   const scene::Scene& scene = *loaded;
   scene::print_stability_warnings(scene, err);
 
@@ -64,17 +64,14 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
     // Rows still buffered for standard output are dropped: flushing them at exit could block
     // on the very pipe the signal cut short.
     if (!to_file) __fpurge(stdout);
-    return kExitInterrupted + signal;
+    return exit_code(kExitInterrupted + signal);
   };
   std::FILE* out = stdout;
   if (options.out != "-") {
     Result<io::AtomicFile> opened = io::AtomicFile::open(options.out);
     if (const int signal = sys::interrupt_signal())
       return stopped(signal);  // a FIFO's open, cut short
-    if (!opened) {
-      std::fprintf(err, "tumble: %s\n", opened.error().c_str());
-      return kExitBadInput;
-    }
+    if (!opened) return Error{opened.error()};
     file = std::make_unique<io::AtomicFile>(std::move(opened).value());
     out = file->stream();
   }
@@ -87,8 +84,7 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
     time = simulation.time();
     if (const int signal = sys::interrupt_signal()) return stopped(signal);
     if (const auto& blow_up = simulation.blow_up()) {
-      std::fprintf(err, "tumble: %s\n", scene::blow_up_message(scene, *blow_up).c_str());
-      return kExitBadInput;
+      return Error{scene::blow_up_message(scene, *blow_up)};
     }
     if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
   }
@@ -101,12 +97,22 @@ int run_simulate(const SimulateOptions& options, std::FILE* err) {
   if (ok) return kExitOk;
   const int reason = errno;
   if (const int signal = sys::interrupt_signal()) return stopped(signal);  // during that last flush
-  if (file) {
-    std::fprintf(err, "tumble: %s\n", committed.error().c_str());
-  } else {
-    std::fprintf(err, "tumble: error writing to standard output: %s\n", std::strerror(reason));
-  }
-  return kExitBadInput;
+  if (file) return Error{committed.error()};
+  return Error{std::string("error writing to standard output: ") + std::strerror(reason)};
+}
+
+void add_simulate_command(CLI::App& app, Commands& commands) {
+  const auto options = std::make_shared<SimulateOptions>();
+  CLI::App* command =
+      app.add_subcommand("simulate", "Run a scene's physics and write the states as CSV");
+  command->add_option("scene", options->scene_path, "Scene file (TOML)")->required();
+  command->add_option("--out", options->out, "CSV file to write, or - for stdout")
+      ->check(not_empty())
+      ->capture_default_str();
+  command->add_option("--every", options->every, "Write a row every N steps")
+      ->check(whole_number_in(1, LLONG_MAX, ">= 1"))
+      ->capture_default_str();
+  commands.push_back({command, [options] { return run_simulate(*options, stderr); }});
 }
 
 }  // namespace tumble::cli

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "common/exit_codes.hpp"
+#include "cli/command.hpp"
 
 namespace tumble::cli {
 
@@ -15,7 +15,10 @@ struct SimulateOptions {
   std::int64_t every = 1;  // write a row every N steps (plus t = 0 and the last step)
 };
 
-// Runs the command; messages go to `err`. Returns the process exit code.
-int run_simulate(const SimulateOptions& options, std::FILE* err);
+// Runs the command; warnings and the note of a stop by a signal go to `err`.
+CommandResult run_simulate(const SimulateOptions& options, std::FILE* err);
+
+// `tumble simulate SCENE [--out CSV] [--every N]`.
+void add_simulate_command(CLI::App& app, Commands& commands);
 
 }  // namespace tumble::cli

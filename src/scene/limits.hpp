@@ -6,10 +6,15 @@
 
 #include <cstdint>
 
+#include "common/render_setting_table.hpp"
+
 namespace tumble::scene {
 
-inline constexpr std::int64_t kMinImageSide = 16;
-inline constexpr std::int64_t kMaxImageSide = 8192;
+// [render] width and height, and --width and --height: their rows of the settings table.
+inline constexpr std::int64_t kMinImageSide = common::render_setting("width").min;
+inline constexpr std::int64_t kMaxImageSide = common::render_setting("width").max;
+static_assert(common::render_setting("height").min == kMinImageSide &&
+              common::render_setting("height").max == kMaxImageSide);
 // width × height: 8192 × 4320, the largest frame of H.264's highest level (6.2: 139 264
 // macroblocks of 16 × 16), about 142 MB per RGBA frame.
 inline constexpr std::int64_t kMaxPixels = 8192 * 4320;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "common/render_setting_table.hpp"
 #include "scene/camera_keys.hpp"
 #include "scene/limits.hpp"
 #include "scene/output_tables.hpp"
@@ -15,12 +16,16 @@ constexpr std::array<std::string_view, 10> kPresets = {
     "ultrafast", "superfast", "veryfast", "faster",   "fast",
     "medium",    "slow",      "slower",   "veryslow", "placebo"};
 
+// A [render] key of the settings table (common/render_setting_table.hpp), held to its row.
+int setting_integer(TableReader& in, const common::RenderSetting& setting, int fallback) {
+  return static_cast<int>(in.optional_integer(setting.key, fallback, setting.min, setting.max));
+}
+
 void read_render(TableReader& in, Scene& scene) {
   common::RenderSettings& r = scene.render;
-  r.width = static_cast<int>(in.optional_integer("width", r.width, kMinImageSide, kMaxImageSide));
-  r.height =
-      static_cast<int>(in.optional_integer("height", r.height, kMinImageSide, kMaxImageSide));
-  scene.fps = static_cast<int>(in.optional_integer("fps", scene.fps, 1, 240));
+  r.width = setting_integer(in, common::render_setting("width"), r.width);
+  r.height = setting_integer(in, common::render_setting("height"), r.height);
+  scene.fps = setting_integer(in, common::render_setting("fps"), scene.fps);
   r.msaa = static_cast<int>(in.optional_integer("msaa", r.msaa, 1, 16));
   if (r.msaa & (r.msaa - 1)) {
     in.fail("msaa",
@@ -28,7 +33,9 @@ void read_render(TableReader& in, Scene& scene) {
   }
   read_background(in, r);
   r.shadows = in.optional_bool("shadows", r.shadows);
-  const std::string backend = in.optional_string("backend", common::backend_name(r.backend));
+  constexpr const common::RenderSetting& backend_setting = common::render_setting("backend");
+  const std::string backend =
+      in.optional_string(backend_setting.key, common::backend_name(r.backend));
   const auto named =
       std::find_if(std::begin(common::kAllBackends), std::end(common::kAllBackends),
                    [&](common::Backend each) { return backend == backend_name(each); });
@@ -37,8 +44,7 @@ void read_render(TableReader& in, Scene& scene) {
             "unknown off-screen OpenGL " + in_quotes(backend) + " (auto, osmesa or egl)");
   }
   r.backend = *named;
-  r.egl_device =
-      static_cast<int>(in.optional_integer("egl_device", r.egl_device, 0, common::kMaxEglDevice));
+  r.egl_device = setting_integer(in, common::render_setting("egl_device"), r.egl_device);
   if (in.has("egl_device") && r.backend == common::Backend::osmesa) {
     in.fail("egl_device",
             "names an EGL device, but backend is \"osmesa\" (use \"egl\" or \"auto\")");
