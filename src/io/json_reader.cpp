@@ -90,7 +90,7 @@ class Parser {
       ++at_;
       JsonValue member;
       if (!parse_value(member, depth + 1)) return false;
-      value.members.emplace_back(std::move(key), std::move(member));
+      value.members.push_back({std::move(key), std::move(member)});
       skip_space();
       if (at_ < text_.size() && text_[at_] == ',') {
         ++at_;

@@ -12,6 +12,10 @@
 
 namespace tumble::io {
 
+// An object's member (below): a struct, not a std::pair, which clang with libstdc++ refuses
+// to hold while JsonValue is still incomplete.
+struct JsonMember;
+
 struct JsonValue {
   enum class Kind { null, boolean, number, string, array, object };
   Kind kind = Kind::null;
@@ -19,11 +23,16 @@ struct JsonValue {
   double number = 0.0;
   std::string string;  // a string's value, escapes decoded
   std::vector<JsonValue> items;
-  std::vector<std::pair<std::string, JsonValue>> members;  // in the order written
-  std::string text;                                        // the JSON text this value was read from
+  std::vector<JsonMember> members;  // in the order written
+  std::string text;                 // the JSON text this value was read from
 
   // The member named `key`, or null when there is none (or this is not an object).
   const JsonValue* find(std::string_view key) const;
+};
+
+struct JsonMember {
+  std::string key;
+  JsonValue value;
 };
 
 // The one JSON value `text` holds (with white space around it); an error names the byte offset
