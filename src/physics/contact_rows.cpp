@@ -234,8 +234,6 @@ void restore(const CarriedImpulses& carried, const RowSlots& at, ContactRows& ro
   for (std::uint32_t k = 0; k < patch.count; ++k) {
     ContactConstraint& c = rows.points[at.first + k];
     c.normal_impulse = carried.impulse[k];
-    c.largest_impulse = carried.largest[k];
-    c.approach_speed = std::min(c.approach_speed, carried.approach[k]);
   }
   for (int k = 0; k < 2; ++k) {
     patch.tangent_impulse[k] = carried.friction.tangent.dot(patch.tangent[k].linear);

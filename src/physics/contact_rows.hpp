@@ -72,12 +72,10 @@ void append_rows(const PairManifoldRows& manifold, ContactRows& rows);
 void write_rows(const PairManifoldRows& manifold, const RowSlots& at, ContactRows& rows);
 
 // What a row carries from one sub-step's rows to the next when its manifold is found again
-// (island_solve.cpp): per slot the accumulated normal impulse (N s), the largest of any sub-step
-// (N s) and the approach speed before it pushed (m/s), and the patch's friction (world frame).
+// (island_solve.cpp): per slot the accumulated normal impulse (N s), and the patch's friction
+// (world frame).
 struct CarriedImpulses {
   double impulse[kMaxManifoldPoints] = {};
-  double largest[kMaxManifoldPoints] = {};
-  double approach[kMaxManifoldPoints] = {};
   PatchImpulses friction;
 };
 // Into `carried`, for each point of `now` whose feature the manifold `then` (in `at`) has, that
@@ -90,15 +88,12 @@ void carry_by_feature(Manifold& now, const Manifold& then, const RowSlots& at,
         then.points[static_cast<std::size_t>(j)].impulses;
     const ContactConstraint& c = rows.points[at.first + static_cast<std::uint32_t>(j)];
     carried.impulse[k] = c.normal_impulse;
-    carried.largest[k] = c.largest_impulse;
-    carried.approach[k] = c.approach_speed;
   });
 }
 // The friction impulses of the patch in `at` (world frame, N s and N m s).
 PatchImpulses patch_impulses(const FrictionPatch& patch);
-// The carried values into the rows in `at`, written again for the manifold found now: each
-// slot's approach is the least of its new and carried ones, the friction turned onto the new
-// tangents.
+// The carried values into the rows in `at`, written again for the manifold found now, the
+// friction turned onto the new tangents.
 void restore(const CarriedImpulses& carried, const RowSlots& at, ContactRows& rows);
 
 // The rows' accumulated impulses back to the manifolds they were built from (each patch's

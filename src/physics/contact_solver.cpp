@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "physics/normal_block.hpp"
+
 namespace tumble::physics {
 namespace {
 
@@ -45,7 +47,9 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
   SolverBody& a = bodies[f.a];
   SolverBody* b = f.b == kStatic ? nullptr : &bodies[f.b];
   double normal = 0.0;
-  for (std::uint32_t i = f.first; i < f.first + f.count; ++i) normal += points[i].normal_impulse;
+  for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
+    normal += points[i].normal_impulse + points[i].impact_impulse;
+  }
   // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
   double wanted[2];
   for (int k = 0; k < 2; ++k) {
@@ -79,6 +83,56 @@ double inelastic_pass(std::span<SolverBody> bodies, std::span<ContactConstraint>
     for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
       largest_change = std::max(largest_change, std::abs(solve_normal(bodies, points[i])));
     }
+    largest_change = std::max(largest_change, solve_friction(bodies, points, f));
+  }
+  return largest_change;
+}
+
+// The normal rows of the points in the patches solved as one block, with what it needs of them.
+struct BlockRows {
+  NormalBlock block;
+  std::vector<double> least, impulses;
+
+  // The rows of the points in `patches`, which must be at most kMostBlockRows; false if more.
+  bool build(std::span<const SolverBody> bodies, std::span<const ContactConstraint> points,
+             std::span<const FrictionPatch> patches) {
+    std::vector<std::uint32_t> rows;
+    for (const FrictionPatch& f : patches) {
+      for (std::uint32_t i = f.first; i < f.first + f.count; ++i) rows.push_back(i);
+    }
+    if (rows.size() > kMostBlockRows) return false;
+    block.build(bodies, points, rows);
+    least.resize(rows.size());
+    impulses.resize(rows.size());
+    return true;
+  }
+};
+
+// One pass of the inelastic solve with the normal rows as one block (each point's speed at
+// least the speculative speed it may still approach at), then each patch's friction. A block
+// that does not solve leaves this pass to the rows one by one. Returns the largest change of an
+// accumulated impulse.
+double block_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
+                  std::span<FrictionPatch> patches, BlockRows& rows) {
+  std::size_t k = 0;
+  for (const FrictionPatch& f : patches) {
+    for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
+      rows.least[k] = -points[i].speculative_speed;
+      rows.impulses[k] = points[i].normal_impulse;
+    }
+  }
+  if (!rows.block.solve(bodies, points, rows.least, rows.impulses)) {
+    return inelastic_pass(bodies, points, patches);
+  }
+  double largest_change = 0.0;
+  k = 0;
+  for (const FrictionPatch& f : patches) {
+    for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
+      largest_change = std::max(largest_change, std::abs(rows.impulses[k] - points[i].normal_impulse));
+      points[i].normal_impulse = rows.impulses[k];
+    }
+  }
+  for (FrictionPatch& f : patches) {
     largest_change = std::max(largest_change, solve_friction(bodies, points, f));
   }
   return largest_change;
@@ -180,7 +234,6 @@ void solve_substep_normal(std::span<SolverBody> bodies, ContactConstraint& c, do
       std::max(0.0, c.normal_impulse - c.normal.mass * (relative_speed(c.normal, a, b) + allowed));
   const double change = accumulated - c.normal_impulse;
   c.normal_impulse = accumulated;
-  c.largest_impulse = std::max(c.largest_impulse, accumulated);
   push(c.normal, a, b, change);
 }
 
@@ -206,7 +259,28 @@ void warm_start(std::span<SolverBody> bodies, std::span<const ContactConstraint>
 }
 
 void substep_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
-                  std::span<const double> separations, std::span<FrictionPatch> patches, double h) {
+                  std::span<const double> separations, std::span<FrictionPatch> patches, double h,
+                  bool by_block) {
+  BlockRows block;
+  if (by_block && block.build(bodies, points, patches)) {
+    std::size_t k = 0;
+    for (const FrictionPatch& f : patches) {
+      for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
+        block.least[k] = separations[i] > 0.0 ? -separations[i] / h : 0.0;
+        block.impulses[k] = points[i].normal_impulse;
+      }
+    }
+    if (block.block.solve(bodies, points, block.least, block.impulses)) {
+      k = 0;
+      for (const FrictionPatch& f : patches) {
+        for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
+          points[i].normal_impulse = block.impulses[k];
+        }
+      }
+      for (FrictionPatch& f : patches) solve_friction(bodies, points, f);
+      return;
+    }
+  }
   for (FrictionPatch& f : patches) {
     for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
       solve_substep_normal(bodies, points[i], separations[i], h);
@@ -215,18 +289,36 @@ void substep_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> poi
   }
 }
 
-void bounce(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
-            double threshold, double energy_bound) {
-  std::vector<double> bouncing(points.size(), 0.0);
-  bool any = false;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const ContactConstraint& c = points[i];
-    if (c.restitution > 0.0 && c.approach_speed < -threshold && c.largest_impulse > 0.0) {
-      bouncing[i] = 1.0;
+void resolve_impacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
+                     std::span<const FrictionPatch> patches, std::span<const double> allowed,
+                     double threshold) {
+  NormalBlock block;
+  std::vector<std::uint32_t> rows;
+  std::vector<double> least, impulses;
+  for (int round = 0; round < kImpactRounds; ++round) {
+    bool any = false;
+    for (const FrictionPatch& f : patches) {
+      if (f.count == 0 || points[f.first].restitution <= 0.0) continue;
+      rows.clear();
+      least.clear();
+      bool impact = false;
+      for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
+        const ContactConstraint& c = points[i];
+        const double speed = relative_speed(c.normal, bodies[c.a], second(bodies, c));
+        if (speed + allowed[i] >= 0.0) continue;  // apart at the (sub-)step's end, or leaving
+        rows.push_back(i);
+        least.push_back(-c.restitution * speed);
+        impact = impact || speed < -threshold;
+      }
+      if (!impact) continue;
+      block.build(bodies, points, rows);
+      impulses.assign(rows.size(), 0.0);
+      if (!block.solve(bodies, points, least, impulses)) continue;
+      for (std::size_t k = 0; k < rows.size(); ++k) points[rows[k]].impact_impulse += impulses[k];
       any = true;
     }
+    if (!any) return;
   }
-  if (any) bounce_points(bodies, points, bouncing, kBounceIterations, energy_bound);
 }
 
 SolverBody SolverBody::from(const BodyState& state, const BodyConstants& constants,
@@ -272,10 +364,12 @@ void tangent_basis(const Vec3& normal, Vec3 (&out)[2]) {
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                     std::span<FrictionPatch> patches, const SolveSettings& settings) {
   // Which points may bounce is known before the solve; the energy guard needs the energy then.
+  // With the normal rows as one block the impacts come first, at once (resolve_impacts).
   const auto may_bounce = [&](const ContactConstraint& c) {
     return c.restitution > 0.0 && c.approach_speed < -settings.restitution_threshold;
   };
-  const bool some_may_bounce = std::any_of(points.begin(), points.end(), may_bounce);
+  const bool some_may_bounce =
+      !settings.block && std::any_of(points.begin(), points.end(), may_bounce);
   const double energy_before = some_may_bounce ? total_kinetic_energy(bodies) : 0.0;
 
   if (settings.warm_start) {
@@ -290,8 +384,16 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
       push(f.twist, a, b, f.twist_impulse);
     }
   }
+  if (settings.block) {
+    std::vector<double> allowed(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) allowed[i] = points[i].speculative_speed;
+    resolve_impacts(bodies, points, patches, allowed, settings.restitution_threshold);
+  }
+  BlockRows block;
+  const bool by_block = settings.block && block.build(bodies, points, patches);
   for (int pass = 0; pass < settings.iterations; ++pass) {
-    const double change = inelastic_pass(bodies, points, patches);
+    const double change = by_block ? block_pass(bodies, points, patches, block)
+                                   : inelastic_pass(bodies, points, patches);
     if (change <= settings.tolerance * largest_normal_impulse(points)) break;
   }
 

@@ -87,9 +87,9 @@ struct ContactConstraint {
   // point that touches (m/s).
   double speculative_speed = 0.0;
   double normal_impulse = 0.0;  // accumulated (N s, >= 0)
-  // The largest normal impulse of any sub-step (N s): a sub-stepped point that pushed at all may
-  // bounce, though its last sub-step may have been apart.
-  double largest_impulse = 0.0;
+  // What resolve_impacts gave the point in this (sub-)step (N s, >= 0): apart from the
+  // accumulated impulse, which the solve may take back, but counted in the friction's limit.
+  double impact_impulse = 0.0;
 };
 
 // The manifold a patch's rows were built from, which its impulses go back to by index after the
@@ -142,6 +142,10 @@ struct SolveSettings {
   // Apply the rows' accumulated impulses first (the row builder started them from the last
   // step's, contact_rows.hpp), friction only where the patch keeps_friction.
   bool warm_start = false;
+  // Solve the normal rows as one block each pass (physics/normal_block.hpp), friction after them,
+  // where there are at most kMostBlockRows of them; and the impacts first, by resolve_impacts,
+  // rather than a bounce after the solve.
+  bool block = false;
 };
 
 // Solves the points against the bodies' velocities in place: first the inelastic solve (normal
@@ -164,16 +168,31 @@ void warm_start(std::span<SolverBody> bodies, std::span<const ContactConstraint>
 // One pass over every patch of a sub-step of h (s): its points' normal rows, with separations[i]
 // (m, negative inside) the current separation of points[i], then its friction. A point apart by
 // s may still approach at s/h (speculative, as above); one inside may not approach (the
-// projection, not the velocities, takes it out: that adds no kinetic energy).
+// projection, not the velocities, takes it out: that adds no kinetic energy). `by_block`: the
+// normal rows as one block where there are at most kMostBlockRows (physics/normal_block.hpp).
 void substep_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                   std::span<const double> separations, std::span<FrictionPatch> patches,
-                  double h /* s */);
+                  double h /* s */, bool by_block);
 
-// The bounce after the sub-steps: each point with restitution that approached faster than
-// `threshold` (m/s, its approach_speed) and pushed in some sub-step leaves at >= e × that speed,
-// solved to round-off, then held to the kinetic energy `energy_bound` (J) as solve_contacts does.
-void bounce(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
-            double threshold, double energy_bound);
+// The impacts among the points, each resolved at once as an instant impulse, before the solve
+// of the (sub-)step: a manifold with a point of restitution e > 0 that approaches faster than
+// `threshold` (m/s) and closes within the (sub-)step (its speed below -allowed[i], the approach it
+// may have while still apart: speculative_speed, or a sub-step's separation over its length) is
+// solved alone, its closing points as one block (physics/normal_block.hpp) to leave each at
+// -e × the speed it approached at, now. Manifolds are taken in turn, in rounds, until none
+// approaches so (up to kImpactRounds): an impact passes on along a row of touching bodies as a
+// momentum pulse, pair by pair (Newton's cradle: the struck end leaves with the striker's speed,
+// where one solve of every contact at once gives the three cubes -v/3, 2v/3, 2v/3; edyn's
+// restitution pass, xissburg/edyn#49, walks the contact graph so). Each impact's impulse and
+// velocities are of one instant at one pose, so for e = 1 it keeps the kinetic energy to
+// rounding, at one point or several (the simultaneous Newton impact of a block keeps it too:
+// ΔE = λ·u⁻ + ½ λ·Aλ and Aλ = -2u⁻ on the pushing rows), and for e < 1 it takes energy. The
+// impulses add to each point's impact_impulse, which the friction's limit counts (the caller
+// zeroes it at the start of each (sub-)step).
+inline constexpr int kImpactRounds = 8;
+void resolve_impacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
+                     std::span<const FrictionPatch> patches, std::span<const double> allowed,
+                     double threshold);
 
 // The kinetic energy of the bodies (J).
 double total_kinetic_energy(std::span<const SolverBody> bodies);

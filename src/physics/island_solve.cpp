@@ -52,20 +52,10 @@ void refind_pair(const StepContext& context, const PairRows& rows, double left) 
   PairManifold found = box_box_manifold(pose_of(a_state, a_rotation, model_a.half_size),
                                         pose_of(b_state, b_rotation, model_b.half_size),
                                         kTouchingDistance + left * rows.reach);
-  // A point found again keeps its impulse, and what the bounce needs: the speed it approached at
-  // before it pushed, and whether it pushed. A new one takes the pair's fastest approach and its
-  // largest push: the features found after an impact differ from the speculative ones before it.
+  // A point found again keeps its impulse.
   ContactRows& solve = context.scratch.rows;
   const RowSlots at = slots_of(rows);
   CarriedImpulses carried;
-  double pair_approach = 0.0, pair_largest = 0.0;
-  for (int j = 0; j < pair.manifold.count; ++j) {
-    const ContactConstraint& c = solve.points[rows.first + static_cast<std::uint32_t>(j)];
-    pair_approach = std::min(pair_approach, c.approach_speed);
-    pair_largest = std::max(pair_largest, c.largest_impulse);
-  }
-  std::fill(std::begin(carried.largest), std::end(carried.largest), pair_largest);
-  std::fill(std::begin(carried.approach), std::end(carried.approach), pair_approach);
   carry_by_feature(found, pair.manifold, at, solve, carried);
   carried.friction = patch_impulses(solve.patches[rows.patch]);
   found.friction = pair.manifold.friction;

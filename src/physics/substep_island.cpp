@@ -61,6 +61,16 @@ bool gravity_only(const BodyModel& model, Vec3& g) {
   return true;
 }
 
+// resolve_impacts for the points of a sub-step of h (s) at `separations` (m), each apart point
+// allowed to approach at its separation over h.
+void impacts(std::span<SolverBody> solver, std::span<ContactConstraint> points,
+             std::span<const FrictionPatch> patches, std::span<const double> separations, double h,
+             const ContactSettings& settings, std::vector<double>& allowed) {
+  allowed.resize(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) allowed[i] = std::max(separations[i], 0.0) / h;
+  resolve_impacts(solver, points, patches, allowed, settings.restitution_threshold);
+}
+
 }  // namespace
 
 int substeps_for(double reach) {
@@ -84,15 +94,12 @@ void substep_island(const StepContext& context, int substeps,
   const double h = dt / substeps;
 
   // Warm start: a sub-step's share of the last step's impulses (the rows start from them).
-  for (ContactConstraint& c : points) c.largest_impulse = 0.0;
   scale_impulses(points, patches, 1.0 / substeps);
 
-  const bool may_bounce = std::any_of(points.begin(), points.end(), [&](const auto& c) {
-    return c.restitution > 0.0 && c.approach_speed < -settings.restitution_threshold;
-  });
-  double energy_bound = 0.0;  // the most kinetic energy an impact found (J)
-
   const std::size_t n = bodies.size();
+  // An island of two bodies or more has its normal rows solved as one block where it is small
+  // (physics/normal_block.hpp): mass ratios and symmetric impacts.
+  const bool by_block = n > 1;
   scratch.rotations.resize(n);
   scratch.free_velocity.resize(n);
   scratch.free_angular_velocity.resize(n);
@@ -124,10 +131,13 @@ void substep_island(const StepContext& context, int substeps,
       solver[i].angular_velocity = scratch.free_angular_velocity[i];
       scratch.rotations[i] = now.orientation().toRotationMatrix();
     }
-    if (may_bounce) energy_bound = std::max(energy_bound, total_kinetic_energy(solver));
     measure<SubstepBody>(bodies, scratch.rotations, positions, scratch.separations);
     warm_start(solver, points, patches);
-    substep_pass(solver, points, scratch.separations, patches, h);
+    // The impacts of points that close within this sub-step, at once (resolve_impacts), before
+    // each pass: a pass would take their approach as a contact without restitution.
+    for (ContactConstraint& c : points) c.impact_impulse = 0.0;
+    impacts(solver, points, patches, scratch.separations, h, settings, scratch.allowed);
+    substep_pass(solver, points, scratch.separations, patches, h, by_block);
 
     scratch.poses.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -146,27 +156,14 @@ void substep_island(const StepContext& context, int substeps,
       scratch.rotations[i] = scratch.poses[i].primary.orientation.toRotationMatrix();
     }
     measure<ProjectedPose>(scratch.poses, scratch.rotations, positions, scratch.separations);
-    substep_pass(solver, points, scratch.separations, patches, h);
+    impacts(solver, points, patches, scratch.separations, h, settings, scratch.allowed);
+    substep_pass(solver, points, scratch.separations, patches, h, by_block);
 
     for (std::size_t i = 0; i < n; ++i) {
       PrimaryState& primary = scratch.poses[i].primary;
       primary.momentum = solver[i].linear_impulse(Vec3::Zero());  // m v
       primary.angular_momentum = scratch.free_angular_momentum[i] +
                                  solver[i].angular_impulse(scratch.free_angular_velocity[i]);
-      bodies[i].state = BodyState(primary, bodies[i].model->constants);
-    }
-  }
-
-  if (may_bounce) {
-    for (std::size_t i = 0; i < n; ++i) {
-      scratch.free_velocity[i] = solver[i].velocity;
-      scratch.free_angular_velocity[i] = solver[i].angular_velocity;
-    }
-    bounce(solver, points, settings.restitution_threshold, energy_bound);
-    for (std::size_t i = 0; i < n; ++i) {
-      PrimaryState primary = bodies[i].state.primary();
-      primary.momentum += solver[i].linear_impulse(scratch.free_velocity[i]);
-      primary.angular_momentum += solver[i].angular_impulse(scratch.free_angular_velocity[i]);
       bodies[i].state = BodyState(primary, bodies[i].model->constants);
     }
   }

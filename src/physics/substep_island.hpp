@@ -58,6 +58,7 @@ struct SubstepBody {
 // Scratch kept between steps so that a warm step allocates little.
 struct SubstepScratch {
   std::vector<double> separations;   // per point
+  std::vector<double> allowed;       // per point: its approach speed while apart (m/s)
   std::vector<Mat3> rotations;       // per body, of the pose being measured
   std::vector<ProjectedPose> poses;  // per body
   std::vector<Vec3> free_velocity, free_angular_velocity, free_angular_momentum;  // per body

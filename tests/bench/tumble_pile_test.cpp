@@ -12,12 +12,14 @@
 namespace tumble::bench {
 namespace {
 
-// 300 boxes poured into the bin for 12 s: none leaves it, no box goes 1 cm into another or a
-// plane at any step (the bound; measured 3 mm), and once settled (the last second) the
-// pile is at most 2 mm inside itself or the floor and its fastest box below 0.05 m/s. (At 9 s a
-// few boxes still slip at up to 0.06 m/s, and one rocks until 9.5 s.)
+// 300 boxes poured into the bin for 16 s: none leaves it, no box goes 1 cm into another or a
+// plane at any step (the bound; measured 4 mm), and once settled (the last second) the
+// pile is at most 2 mm inside itself or the floor and its fastest box below 0.05 m/s. When a pile
+// settles is chaotic: over seeds 1 to 8 the last second with a box faster than 0.05 m/s was the
+// 3rd to the 15th, with the solver of the one block (seed 1: the 13th) as before it (seed 7: the
+// 15th).
 TEST(TumblePile, ThreeHundredBoxesPourSettleAndHold) {
-  const Pile pile = make_pile(300, 1, 12.0);
+  const Pile pile = make_pile(300, 1, 16.0);
   const PileRun run = run_pile_in_tumble(pile);
   ASSERT_EQ(run.depth_m.size(), static_cast<std::size_t>(pile.steps));
   const std::size_t settled = run.depth_m.size() - 60;
