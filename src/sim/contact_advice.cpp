@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "physics/box_box.hpp"
+#include "physics/normal_block.hpp"
 
 namespace tumble::sim {
 
@@ -19,6 +20,17 @@ std::vector<std::string> check_contact(const physics::BodyModel& model,
     if (const auto* g = std::get_if<physics::Gravity>(&law)) gravity += g->acceleration;
   }
   const double step_speed = gravity.norm() * dt;  // m/s gained in one step of free fall
+  if (step_speed == 0.0 && settings.restitution_threshold > 0.0 &&
+      model.material.restitution > 0.0) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "it bounces (restitution %.3g) with no gravity, so nothing rests, but its "
+                  "impacts slower than restitution_threshold = %.3g m/s lose their bounce; use "
+                  "restitution_threshold = 0",
+                  model.material.restitution, settings.restitution_threshold);
+    out.push_back(text);
+    return out;
+  }
   const double wanted = kThresholdOverStepSpeed * step_speed;
   if (settings.restitution_threshold >= wanted) return out;
   for (const physics::Plane& plane : planes) {
@@ -91,6 +103,7 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
       }
     }
   }
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // touching at the start
   for (std::size_t i = 0; i < count; ++i) {
     for (std::size_t j = i + 1; j < count && settings.collide_bodies; ++j) {
       if (!models[i].collides || !models[j].collides) continue;
@@ -99,20 +112,39 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
       if (physics::box_box_axis(a, b).separation >= kTouching) continue;
       touches[i] = touches[j] = true;
       parent[root_of(parent, i)] = root_of(parent, j);
-      const double heavy = std::max(models[i].constants.mass, models[j].constants.mass);
-      const double light = std::min(models[i].constants.mass, models[j].constants.mass);
-      if (heavy > kMostMassRatio * light) {
-        out.push_back({{i, j},
-                       formatted("touch with a mass ratio of %.3g (%.3g kg on %.3g kg), beyond "
-                                 "the %.0f the contact solver holds: the lighter body is pressed "
-                                 "into what holds it or squeezed out (100:1 sank 8.8 cm in 5 s); "
-                                 "bring the masses within %.0fx of each other",
-                                 heavy / light, heavy, light, kMostMassRatio, kMostMassRatio)});
-      }
+      pairs.emplace_back(i, j);
+    }
+  }
+  // The contact points of each group (by its root): whether the block solve takes it.
+  std::vector<std::size_t> points(count, 0);
+  for (const auto& [i, j] : pairs) points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (on_plane[i]) points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
+  }
+  const auto by_rows = [&](std::size_t i) {
+    return points[root_of(parent, i)] > physics::kMostBlockRows;
+  };
+  const std::string why = formatted(
+      "in a group of touching bodies with more than %zu contact points, which the contact solver "
+      "solves one point at a time",
+      physics::kMostBlockRows);
+  for (const auto& [i, j] : pairs) {
+    if (!by_rows(i)) continue;
+    const double heavy = std::max(models[i].constants.mass, models[j].constants.mass);
+    const double light = std::min(models[i].constants.mass, models[j].constants.mass);
+    if (heavy > kMostMassRatio * light) {
+      out.push_back({{i, j},
+                     formatted("touch with a mass ratio of %.3g (%.3g kg on %.3g kg) %s, beyond "
+                               "the %.0f it holds there: the lighter body is pressed into what "
+                               "holds it or squeezed out (a column of 14 cubes with a top 50 "
+                               "times as heavy collapses); bring the masses within %.0fx of each "
+                               "other or split the group",
+                               heavy / light, heavy, light, why.c_str(), kMostMassRatio,
+                               kMostMassRatio)});
     }
   }
   for (std::size_t i = 0; i < count; ++i) {
-    if (!touches[i]) continue;
+    if (!touches[i] || !by_rows(i)) continue;
     const double acceleration = constant_acceleration(models[i]).norm();  // m/s²
     const double edge = 2.0 * models[i].half_size.minCoeff();             // m
     const double per_step = 0.5 * acceleration * dt * dt;                 // m
@@ -120,14 +152,15 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
       out.push_back(
           {{i},
            formatted("its constant load (%.3g m/s²) moves it %.3g m in one step of "
-                     "%.3g s, more than its smallest edge (%.3g m): one step's "
+                     "%.3g s, more than its smallest edge (%.3g m), %s: one step's "
                      "contact cannot carry it and it ends its steps inside what holds "
                      "it; use dt <= %.3g s",
-                     acceleration, per_step, dt, edge, std::sqrt(2.0 * edge / acceleration))});
+                     acceleration, per_step, dt, edge, why.c_str(),
+                     std::sqrt(2.0 * edge / acceleration))});
     }
   }
   for (std::size_t i = 0; i < count; ++i) {
-    if (root_of(parent, i) != i) continue;
+    if (root_of(parent, i) != i || !by_rows(i)) continue;
     std::vector<std::size_t> stack;
     bool grounded = false;
     double gravity = 0.0;  // m/s²
@@ -139,13 +172,13 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
     }
     const double sink = gravity * dt * dt;  // m
     if (stack.size() < 3 || !grounded || sink <= kMostStackSink) continue;
-    out.push_back(
-        {stack, formatted("a stack of %zu bodies stepped at dt = %.3g s sinks |g| dt² = %.3g "
-                          "m a step under gravity, beyond the %.0f mm at which the contact "
-                          "solver settles a stack (a 3-cube stack at dt = 1/30 s jitters at "
-                          "0.14 m/s for ever); use dt <= %.3g s",
-                          stack.size(), dt, sink, kMostStackSink * 1e3,
-                          std::sqrt(kMostStackSink / gravity))});
+    out.push_back({stack, formatted("a stack of %zu bodies with %zu contact points stepped at "
+                                    "dt = %.3g s sinks |g| dt² = %.3g m a step under gravity, "
+                                    "beyond the %.0f mm at which the contact solver settles a "
+                                    "stack it solves one point at a time (a column of 14 cubes "
+                                    "at dt = 1/30 s collapses); use dt <= %.3g s",
+                                    stack.size(), points[i], dt, sink, kMostStackSink * 1e3,
+                                    std::sqrt(kMostStackSink / gravity))});
   }
   return out;
 }

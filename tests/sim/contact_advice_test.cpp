@@ -90,33 +90,59 @@ std::vector<BodiesAdvice> advice_for(const Column& c, double dt,
   return check_contact_world(c.models, c.initial, {physics::Plane{}}, settings, dt);
 }
 
-TEST(ContactWorldAdvice, NamesTwoTouchingBodiesOfAMassRatioBeyondWhatTheSolverHolds) {
-  const std::vector<BodiesAdvice> advice = advice_for(column({1.0, 100.0}), kStep);
+// Thirteen 1 kg cubes under one of `top` kg: 14 bodies on a floor, 56 contact points, beyond the
+// block solve's 48.
+std::vector<double> tall_column(double top) {
+  std::vector<double> masses(13, 1.0);
+  masses.push_back(top);
+  return masses;
+}
+
+TEST(ContactWorldAdvice, NamesTouchingBodiesOfAMassRatioBeyondWhatTheSolverHoldsInAGroupThatLarge) {
+  const std::vector<BodiesAdvice> advice = advice_for(column(tall_column(100.0)), kStep);
   ASSERT_EQ(advice.size(), 1u);
-  EXPECT_EQ(advice[0].bodies, (std::vector<std::size_t>{0, 1}));
+  EXPECT_EQ(advice[0].bodies, (std::vector<std::size_t>{12, 13}));
   EXPECT_NE(advice[0].message.find("mass ratio of 100"), std::string::npos) << advice[0].message;
-  EXPECT_TRUE(advice_for(column({1.0, 40.0}), kStep).empty());
+  EXPECT_TRUE(advice_for(column(tall_column(5.0)), kStep).empty());
+  // Two bodies are solved as one block, at any ratio (contact_hard: 1000:1 holds within 1e-13 m).
+  EXPECT_TRUE(advice_for(column({1.0, 1000.0}), kStep).empty());
   // Apart, the same bodies do not touch and say nothing.
-  Column apart = column({1.0, 100.0});
-  apart.initial[1].set({.position = physics::Vec3(0.0, 3.0, 0.0)}, apart.models[1].constants);
+  Column apart = column(tall_column(100.0));
+  apart.initial[13].set({.position = physics::Vec3(0.0, 20.0, 0.0)}, apart.models[13].constants);
   EXPECT_TRUE(advice_for(apart, kStep).empty());
 }
 
 TEST(ContactWorldAdvice, NamesALoadThatOneStepCannotCarryAndTheStepThatCan) {
-  const std::vector<BodiesAdvice> advice = advice_for(column({1.0}, 1e4), kStep);
+  const std::vector<BodiesAdvice> advice = advice_for(column(tall_column(1.0), 1e4), kStep);
   ASSERT_EQ(advice.size(), 1u);
-  EXPECT_EQ(advice[0].bodies, (std::vector<std::size_t>{0}));
+  EXPECT_EQ(advice[0].bodies, (std::vector<std::size_t>{13}));
   EXPECT_NE(advice[0].message.find("use dt <= 0.0141 s"), std::string::npos) << advice[0].message;
-  EXPECT_TRUE(advice_for(column({1.0}, 5e3), kStep).empty());
+  EXPECT_TRUE(advice_for(column(tall_column(1.0), 5e3), kStep).empty());
+  // A cube alone on the floor holds any load (contact_hard: 1e6 N within 3e-5 m).
+  EXPECT_TRUE(advice_for(column({1.0}, 1e6), kStep).empty());
 }
 
 TEST(ContactWorldAdvice, NamesAStackStepTooCoarselyToSettle) {
-  const std::vector<BodiesAdvice> advice = advice_for(column({1.0, 1.0, 1.0}), 1.0 / 30.0);
+  const std::vector<BodiesAdvice> advice = advice_for(column(tall_column(1.0)), 1.0 / 30.0);
   ASSERT_EQ(advice.size(), 1u);
-  EXPECT_EQ(advice[0].bodies, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(advice[0].bodies.size(), 14u);
   EXPECT_NE(advice[0].message.find("use dt <= 0.0286 s"), std::string::npos) << advice[0].message;
-  EXPECT_TRUE(advice_for(column({1.0, 1.0, 1.0}), kStep).empty());
-  EXPECT_TRUE(advice_for(column({1.0, 1.0}), 1.0 / 30.0).empty());  // two bodies settle
+  EXPECT_TRUE(advice_for(column(tall_column(1.0)), kStep).empty());
+  // A stack of three is one block and settles even at dt = 1/10 s (contact_hard).
+  EXPECT_TRUE(advice_for(column({1.0, 1.0, 1.0}), 0.1).empty());
+}
+
+// With no gravity nothing rests: a bouncing cube is told that a threshold above zero takes the
+// bounce of its slow impacts.
+TEST(ContactAdvice, TellsABouncingBodyWithNoGravityToBounceAtAnySpeed) {
+  physics::BodyModel weightless = cube(1.0);
+  weightless.forces.clear();
+  const std::vector<physics::Plane> floor = {physics::Plane{}};
+  const std::vector<std::string> advice = check_contact(weightless, floor, {}, kStep);
+  ASSERT_EQ(advice.size(), 1u);
+  EXPECT_NE(advice[0].find("restitution_threshold = 0"), std::string::npos) << advice[0];
+  EXPECT_TRUE(check_contact(weightless, floor, {.restitution_threshold = 0.0}, kStep).empty());
+  EXPECT_TRUE(check_contact(cube(1.0), floor, {}, kStep).empty());  // under gravity: quiet
 }
 
 TEST(ContactWorldAdvice, SaysNothingForPenaltyContact) {
