@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "physics/normal_block.hpp"
 #include "physics/patch_friction.hpp"
@@ -101,7 +102,67 @@ double project_block(std::span<ProjectedPose> poses, std::span<const PositionPoi
   return deepest;
 }
 
+// The island's states in `out` held to the energy its bodies had at the start (resolve_island
+// says why); nothing for an island with a body that is not passive.
+void hold_energy(std::span<const IslandBody> bodies, std::span<BodyState> out) {
+  double before = 0.0, after = 0.0, scale = 0.0, kinetic = 0.0, pull = 0.0;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    double energy = 0.0, size = 0.0, end = 0.0, end_size = 0.0;
+    Vec3 force;
+    if (!bodies[i].start ||
+        !passive_energy(*bodies[i].model, *bodies[i].start, energy, size, force) ||
+        !passive_energy(*bodies[i].model, out[i], end, end_size, force)) {
+      return;
+    }
+    before += energy;
+    after += end;
+    scale += size;
+    kinetic += kinetic_energy(out[i]);
+    pull += force.squaredNorm();
+  }
+  const double excess = after - before;
+  if (!(excess > kEnergySlack * scale)) return;
+  // From the kinetic energy what it has; the rest (a body lifted from rest) from the potential,
+  // each body moved along its constant force by its share: -ΔU = Σ F·d = the rest.
+  const double taken = std::min(excess, kinetic);
+  const double factor = kinetic > 0.0 ? std::sqrt(std::max(0.0, 1.0 - taken / kinetic)) : 1.0;
+  const double rest = pull > 0.0 ? (excess - taken) / pull : 0.0;  // m/N
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    double energy = 0.0, size = 0.0;
+    Vec3 force;
+    passive_energy(*bodies[i].model, out[i], energy, size, force);
+    PrimaryState primary = out[i].primary();
+    primary.momentum *= factor;
+    primary.angular_momentum *= factor;
+    primary.position += rest * force;
+    out[i] = BodyState(primary, bodies[i].model->constants);
+  }
+}
+
 }  // namespace
+
+bool passive(const BodyModel& model) {
+  return std::all_of(model.forces.begin(), model.forces.end(), [](const ForceLaw& law) {
+    return std::holds_alternative<Gravity>(law) || std::holds_alternative<ConstantForce>(law) ||
+           std::holds_alternative<LinearDamping>(law) ||
+           std::holds_alternative<AngularDamping>(law);
+  });
+}
+
+bool passive_energy(const BodyModel& model, const BodyState& state, double& energy,
+                    double& scale, Vec3& force) {
+  if (!passive(model)) return false;
+  force = Vec3::Zero();  // N: the constant part, whose potential is -F·x
+  const double mass = model.constants.mass;
+  for (const ForceLaw& law : model.forces) {
+    if (const auto* gravity = std::get_if<Gravity>(&law)) force += mass * gravity->acceleration;
+    if (const auto* constant = std::get_if<ConstantForce>(&law)) force += constant->force;
+  }
+  const double kinetic = kinetic_energy(state);
+  energy = kinetic - force.dot(state.position());
+  scale = kinetic + force.norm() * model.half_size.norm();
+  return true;
+}
 
 Vec3 without_residue(Vec3 momentum) {
   for (int i = 0; i < 3; ++i) {
@@ -185,6 +246,7 @@ void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     out[i] = BodyState(poses[i].primary, bodies[i].model->constants);
   }
+  hold_energy(bodies, out);
 }
 
 }  // namespace tumble::physics

@@ -46,6 +46,8 @@ Vec3 without_residue(Vec3 momentum);
 // A body of an island, at the end of its free step (after any impacts of its own with planes).
 struct IslandBody {
   const BodyModel* model = nullptr;
+  // At the start of the step, for its energy (resolve_island); none where it is not held.
+  const BodyState* start = nullptr;
   BodyState end;                     // what the solve corrects
   Mat3 rotation = Mat3::Identity();  // end's, body to world
   double weight = 0.0;  // impulse_position_weight of the step's rest after its last impact (s)
@@ -99,9 +101,40 @@ struct ContactRows {
 // each body's pose by weight × its velocity change and projects the positions out of every
 // PositionPoint still inside (non-linear Gauss-Seidel, Catto, Box2D 2.4 "solve position
 // constraints": it moves no momentum, so it adds no kinetic energy). rows.bodies holds one
-// SolverBody per body, made from its end state. The corrected states go to `out`.
+// SolverBody per body, made from its end state. The corrected states go to `out`, held to the
+// island's energy at the start (hold_energy).
+//
+// Why the hold: the pose update and the projection lift a body that turns about a contact (its
+// contact point moves on a circle, the step's correction along a line), so a box tipping over an
+// edge gained energy every step, first order in dt: 0.46 % of its start by the time it landed at
+// dt = 1/60 s, a 3 m rod 0.35 %. An island of passive bodies (passive_energy) cannot gain
+// energy: where the step ends above its start by more than kEnergySlack, the excess is taken
+// from its kinetic energy, every body's velocities scaled by one factor (which keeps every
+// contact's normal speed on the side it was: a speed scales with them), and what the kinetic
+// energy cannot give (a body lifted in its first step from rest) from the potential, the bodies
+// moved along their constant forces (a rod tipping from rest sinks 1e-6 m so, which the next
+// step's projection takes back, charged to the kinetic energy it has by then).
+// Explicit Euler gains energy in its free steps by itself (½ m g² dt² a step under gravity), and
+// a hold would turn that into a drag that stands a tipping box on its edge: its steps are not
+// held. Every other integrator's free step keeps a passive body's energy (or loses some).
+inline constexpr double kEnergySlack = 1e-12;  // of the island's energy scale (J per J)
+inline bool holds_energy(Integrator integrator) {
+  return integrator != Integrator::euler;
+}
 void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
                     const ContactSettings& settings, std::span<BodyState> out);
+
+// Whether the body's force laws are all gravity, constant forces and damping: its energy (below)
+// can only fall, but for the work of contacts.
+bool passive(const BodyModel& model);
+
+// The mechanical energy of a body whose force laws are all gravity, constant forces and damping
+// (J: kinetic, and the potential of gravity and of constant forces, 0 at the origin), into
+// `scale` the size of the energy it moves (J: kinetic, plus its weight times its half diagonal)
+// and into `force` the constant force (N) whose potential that is; false for a body with any
+// other law, whose energy a step may rightly raise or that has no potential here.
+bool passive_energy(const BodyModel& model, const BodyState& state, double& energy,
+                    double& scale, Vec3& force);
 
 // The centre of the points at `arms` (m, world, from one body's centre) and their mean distance
 // from it across `normal` (unit): what a friction patch needs.

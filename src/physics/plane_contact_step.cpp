@@ -275,6 +275,7 @@ BodyState rest_on_planes(const StepContext& context, std::uint32_t body) {
   const PlaneAdvance& advance = context.scratch.advances[body];
   const BodyModel& model = context.models[body];
   const IslandBody island{.model = &model,
+                          .start = holds_energy(context.integrator) ? &context.in[body] : nullptr,
                           .end = advance.end,
                           .rotation = advance.rotation,
                           .weight = impulse_position_weight(context.integrator, advance.remaining)};

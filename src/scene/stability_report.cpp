@@ -35,8 +35,9 @@ std::vector<std::string> stability_warnings(const scene::Scene& scene) {
     for (const sim::StepWarning& warning : body_warnings(scene, body)) {
       lines.push_back("body \"" + body.name + "\": " + warning.message);
     }
-    for (const std::string& problem : sim::check_contact(scene::body_model(scene, body), planes,
-                                                         scene.physics.contact, scene.physics.dt)) {
+    for (const std::string& problem :
+         sim::check_contact(scene::body_model(scene, body), planes, scene.physics.contact,
+                            scene.physics.integrator, scene.physics.dt)) {
       lines.push_back("body \"" + body.name + "\": " + problem);
     }
   }

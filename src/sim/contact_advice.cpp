@@ -6,13 +6,15 @@
 #include <variant>
 
 #include "physics/box_box.hpp"
+#include "physics/contact_island.hpp"
 #include "physics/normal_block.hpp"
 
 namespace tumble::sim {
 
 std::vector<std::string> check_contact(const physics::BodyModel& model,
                                        const std::vector<physics::Plane>& planes,
-                                       const physics::ContactSettings& settings, double dt) {
+                                       const physics::ContactSettings& settings,
+                                       physics::Integrator integrator, double dt) {
   std::vector<std::string> out;
   if (settings.method != physics::ContactMethod::impulse) return out;
   physics::Vec3 gravity = physics::Vec3::Zero();  // m/s²
@@ -33,6 +35,7 @@ std::vector<std::string> check_contact(const physics::BodyModel& model,
   }
   const double wanted = kThresholdOverStepSpeed * step_speed;
   if (settings.restitution_threshold >= wanted) return out;
+  if (physics::holds_energy(integrator) && physics::passive(model)) return out;  // it rests
   for (const physics::Plane& plane : planes) {
     if (physics::combine(model.material, plane.material).restitution <= 0.0) continue;
     char text[320];
