@@ -107,17 +107,13 @@ double project_block(std::span<ProjectedPose> poses, std::span<const PositionPoi
 void hold_energy(std::span<const IslandBody> bodies, std::span<BodyState> out) {
   double before = 0.0, after = 0.0, scale = 0.0, kinetic = 0.0, pull = 0.0;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    double energy = 0.0, size = 0.0, end = 0.0, end_size = 0.0;
-    Vec3 force;
-    if (!bodies[i].start ||
-        !passive_energy(*bodies[i].model, *bodies[i].start, energy, size, force) ||
-        !passive_energy(*bodies[i].model, out[i], end, end_size, force)) {
-      return;
-    }
-    before += energy;
-    after += end;
-    scale += size;
-    kinetic += kinetic_energy(out[i]);
+    Vec3 force;  // N
+    if (!bodies[i].start || !constant_force(*bodies[i].model, force)) return;
+    const double end_kinetic = kinetic_energy(out[i]);
+    before += kinetic_energy(*bodies[i].start) - force.dot(bodies[i].start->position());
+    after += end_kinetic - force.dot(out[i].position());
+    scale += end_kinetic + force.norm() * bodies[i].model->half_size.norm();
+    kinetic += end_kinetic;
     pull += force.squaredNorm();
   }
   const double excess = after - before;
@@ -128,9 +124,8 @@ void hold_energy(std::span<const IslandBody> bodies, std::span<BodyState> out) {
   const double factor = kinetic > 0.0 ? std::sqrt(std::max(0.0, 1.0 - taken / kinetic)) : 1.0;
   const double rest = pull > 0.0 ? (excess - taken) / pull : 0.0;  // m/N
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    double energy = 0.0, size = 0.0;
     Vec3 force;
-    passive_energy(*bodies[i].model, out[i], energy, size, force);
+    constant_force(*bodies[i].model, force);
     PrimaryState primary = out[i].primary();
     primary.momentum *= factor;
     primary.angular_momentum *= factor;
@@ -141,27 +136,24 @@ void hold_energy(std::span<const IslandBody> bodies, std::span<BodyState> out) {
 
 }  // namespace
 
-bool passive(const BodyModel& model) {
-  return std::all_of(model.forces.begin(), model.forces.end(), [](const ForceLaw& law) {
-    return std::holds_alternative<Gravity>(law) || std::holds_alternative<ConstantForce>(law) ||
-           std::holds_alternative<LinearDamping>(law) ||
-           std::holds_alternative<AngularDamping>(law);
-  });
+bool constant_force(const BodyModel& model, Vec3& force) {
+  force = Vec3::Zero();
+  for (const ForceLaw& law : model.forces) {
+    if (const auto* gravity = std::get_if<Gravity>(&law)) {
+      force += model.constants.mass * gravity->acceleration;
+    } else if (const auto* constant = std::get_if<ConstantForce>(&law)) {
+      force += constant->force;
+    } else if (!std::holds_alternative<LinearDamping>(law) &&
+               !std::holds_alternative<AngularDamping>(law)) {
+      return false;
+    }
+  }
+  return true;
 }
 
-bool passive_energy(const BodyModel& model, const BodyState& state, double& energy,
-                    double& scale, Vec3& force) {
-  if (!passive(model)) return false;
-  force = Vec3::Zero();  // N: the constant part, whose potential is -F·x
-  const double mass = model.constants.mass;
-  for (const ForceLaw& law : model.forces) {
-    if (const auto* gravity = std::get_if<Gravity>(&law)) force += mass * gravity->acceleration;
-    if (const auto* constant = std::get_if<ConstantForce>(&law)) force += constant->force;
-  }
-  const double kinetic = kinetic_energy(state);
-  energy = kinetic - force.dot(state.position());
-  scale = kinetic + force.norm() * model.half_size.norm();
-  return true;
+bool passive(const BodyModel& model) {
+  Vec3 force;
+  return constant_force(model, force);
 }
 
 Vec3 without_residue(Vec3 momentum) {

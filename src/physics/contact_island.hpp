@@ -107,7 +107,7 @@ struct ContactRows {
 // Why the hold: the pose update and the projection lift a body that turns about a contact (its
 // contact point moves on a circle, the step's correction along a line), so a box tipping over an
 // edge gained energy every step, first order in dt: 0.46 % of its start by the time it landed at
-// dt = 1/60 s, a 3 m rod 0.35 %. An island of passive bodies (passive_energy) cannot gain
+// dt = 1/60 s, a 3 m rod 0.35 %. An island of passive bodies (constant_force) cannot gain
 // energy: where the step ends above its start by more than kEnergySlack, the excess is taken
 // from its kinetic energy, every body's velocities scaled by one factor (which keeps every
 // contact's normal speed on the side it was: a speed scales with them), and what the kinetic
@@ -124,17 +124,11 @@ inline bool holds_energy(Integrator integrator) {
 void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
                     const ContactSettings& settings, std::span<BodyState> out);
 
-// Whether the body's force laws are all gravity, constant forces and damping: its energy (below)
-// can only fall, but for the work of contacts.
+// Whether the body's force laws are all gravity, constant forces and damping, whose energy
+// (kinetic, and the potential -F·x of the constant force F) can only fall but for the work of
+// contacts; if so, that force F (N) into `force`.
+bool constant_force(const BodyModel& model, Vec3& force);
 bool passive(const BodyModel& model);
-
-// The mechanical energy of a body whose force laws are all gravity, constant forces and damping
-// (J: kinetic, and the potential of gravity and of constant forces, 0 at the origin), into
-// `scale` the size of the energy it moves (J: kinetic, plus its weight times its half diagonal)
-// and into `force` the constant force (N) whose potential that is; false for a body with any
-// other law, whose energy a step may rightly raise or that has no potential here.
-bool passive_energy(const BodyModel& model, const BodyState& state, double& energy,
-                    double& scale, Vec3& force);
 
 // The centre of the points at `arms` (m, world, from one body's centre) and their mean distance
 // from it across `normal` (unit): what a friction patch needs.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "physics/normal_block.hpp"
@@ -389,11 +390,14 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
     for (std::size_t i = 0; i < points.size(); ++i) allowed[i] = points[i].speculative_speed;
     resolve_impacts(bodies, points, patches, allowed, settings.restitution_threshold);
   }
-  BlockRows block;
-  const bool by_block = settings.block && block.build(bodies, points, patches);
+  std::optional<BlockRows> block;  // made only where it is used: a body alone pays nothing
+  if (settings.block) {
+    block.emplace();
+    if (!block->build(bodies, points, patches)) block.reset();
+  }
   for (int pass = 0; pass < settings.iterations; ++pass) {
-    const double change = by_block ? block_pass(bodies, points, patches, block)
-                                   : inelastic_pass(bodies, points, patches);
+    const double change = block ? block_pass(bodies, points, patches, *block)
+                                : inelastic_pass(bodies, points, patches);
     if (change <= settings.tolerance * largest_normal_impulse(points)) break;
   }
 
