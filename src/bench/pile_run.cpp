@@ -17,7 +17,22 @@ double median(std::vector<double> sorted) {
   return 0.5 * (below + sorted[middle]);  // an even count: the mean of the two middle values
 }
 
+double mean(const std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  double total = 0.0;
+  for (const double value : values) total += value;
+  return total / static_cast<double>(values.size());
+}
+
 }  // namespace
+
+double mean_step_ms(const PileRun& run) {
+  return mean(run.step_ms);
+}
+
+double mean_step_cpu_ms(const PileRun& run) {
+  return mean(run.step_cpu_ms);
+}
 
 double median_step_ms(const PileRun& run) {
   return median(run.step_ms);
@@ -47,7 +62,9 @@ double ms_at_peak_contacts(const PileRun& run) {
 }
 
 StepTimeRatios step_time_ratios(const PileRun& first, const PileRun& second) {
-  return {.median_ms = median_step_ms(first) / median_step_ms(second),
+  return {.mean_ms = mean_step_ms(first) / mean_step_ms(second),
+          .mean_cpu_ms = mean_step_cpu_ms(first) / mean_step_cpu_ms(second),
+          .median_ms = median_step_ms(first) / median_step_ms(second),
           .median_cpu_ms = median_step_cpu_ms(first) / median_step_cpu_ms(second),
           .ms_at_peak_contacts = ms_at_peak_contacts(first) / ms_at_peak_contacts(second)};
 }

@@ -31,6 +31,11 @@ struct PileRun {
 // outside the timed part of the step.
 using StepObserver = std::function<void(const PileRun& so_far)>;
 
+// The mean of the steps' wall times (ms): the whole run's stepping time over its steps, which
+// counts a pour's costly steps in full where the median hides them; 0 for a run of no steps.
+double mean_step_ms(const PileRun& run);
+// The mean of the steps' processor times (ms); 0 for a run of no steps.
+double mean_step_cpu_ms(const PileRun& run);
 // The median of the steps' wall times (ms); 0 for a run of no steps.
 double median_step_ms(const PileRun& run);
 // The median of the steps' processor times (ms); 0 for a run of no steps.
@@ -45,8 +50,10 @@ double peak_contact_time(const PileRun& run, double dt);
 double ms_at_peak_contacts(const PileRun& run);
 
 // How many times `first`'s step time is `second`'s (tumble / bullet: above 1, tumble is slower),
-// by each of the three measures above. Infinite or NaN when `second` took no time.
+// by each of the measures above. Infinite or NaN when `second` took no time.
 struct StepTimeRatios {
+  double mean_ms = 0.0;
+  double mean_cpu_ms = 0.0;
   double median_ms = 0.0;
   double median_cpu_ms = 0.0;
   double ms_at_peak_contacts = 0.0;

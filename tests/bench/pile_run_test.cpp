@@ -17,6 +17,15 @@ TEST(PileRun, MedianOfAnOddAndAnEvenCount) {
   EXPECT_EQ(median_step_cpu_ms(run), 0.5);
 }
 
+TEST(PileRun, MeanIsTheWholeRunsTimeOverItsSteps) {
+  PileRun run;
+  EXPECT_EQ(mean_step_ms(run), 0.0);
+  run.step_ms = {1.0, 1.0, 10.0};  // a pour's costly step counts in full
+  EXPECT_EQ(mean_step_ms(run), 4.0);
+  run.step_cpu_ms = {0.5, 0.5, 2.0};
+  EXPECT_EQ(mean_step_cpu_ms(run), 1.0);
+}
+
 TEST(PileRun, PeakContactsIsTheFirstStepWithTheMost) {
   PileRun run;
   EXPECT_EQ(peak_contact_step(run), 0u);

@@ -38,6 +38,10 @@ PileRun run_named(const std::string& engine, double ms) {
 TEST(PileTable, OneColumnPerEngineAndTheRatiosOfTwo) {
   const std::string table = table_of({run_named("tumble", 2.0), run_named("bullet", 4.0)}, 0.5);
   EXPECT_NE(table.find("  tumble                bullet"), std::string::npos) << table;
+  // The mean counts the costly third step in full: (2 + 2 + 18) / 3 ms.
+  EXPECT_NE(table.find("mean ms/step (whole run)        7.33                  14.67"),
+            std::string::npos)
+      << table;
   EXPECT_NE(table.find("median ms/step                  2.00                  4.00"),
             std::string::npos)
       << table;
@@ -50,7 +54,8 @@ TEST(PileTable, OneColumnPerEngineAndTheRatiosOfTwo) {
             std::string::npos)
       << table;
   EXPECT_NE(
-      table.find("tumble / bullet, median ms/step: 0.50 (cpu 0.50), at peak contacts: 0.50\n"),
+      table.find("tumble / bullet, mean ms/step: 0.50 (cpu 0.50); median ms/step: 0.50 (cpu "
+                 "0.50), at peak contacts: 0.50\n"),
       std::string::npos)
       << table;
 }

@@ -77,6 +77,8 @@ std::string engine_json(const PileRun& run, double dt) {
   const std::size_t peak = bench::peak_contact_step(run);
   return "{\n    \"engine\": " + io::json_string(run.engine) +
          ",\n    \"steps\": " + std::to_string(run.step_ms.size()) +
+         ",\n    \"mean_ms_per_step\": " + io::json_number(bench::mean_step_ms(run)) +
+         ",\n    \"mean_cpu_ms_per_step\": " + io::json_number(bench::mean_step_cpu_ms(run)) +
          ",\n    \"median_ms_per_step\": " + io::json_number(bench::median_step_ms(run)) +
          ",\n    \"median_cpu_ms_per_step\": " + io::json_number(bench::median_step_cpu_ms(run)) +
          ",\n    \"ms_per_step_at_peak_contacts\": " +
@@ -105,8 +107,10 @@ std::string report_json(const BenchContactOptions& options, const Pile& pile, co
          ", \"dt\": " + io::json_number(pile.dt) + ", \"steps\": " + std::to_string(pile.steps) +
          "},\n  \"tumble\": " + engine_json(tumble, pile.dt) +
          ",\n  \"bullet\": " + engine_json(bullet, pile.dt) +
-         ",\n  \"tumble_over_bullet\": {\"median_ms_per_step\": " +
-         io::json_number(ratios.median_ms) +
+         ",\n  \"tumble_over_bullet\": {\"mean_ms_per_step\": " +
+         io::json_number(ratios.mean_ms) +
+         ", \"mean_cpu_ms_per_step\": " + io::json_number(ratios.mean_cpu_ms) +
+         ", \"median_ms_per_step\": " + io::json_number(ratios.median_ms) +
          ", \"median_cpu_ms_per_step\": " + io::json_number(ratios.median_cpu_ms) +
          ", \"ms_per_step_at_peak_contacts\": " + io::json_number(ratios.ms_at_peak_contacts) +
          "}\n}\n";

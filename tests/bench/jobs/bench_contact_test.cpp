@@ -88,7 +88,7 @@ TEST_F(BenchContactCommand, TumblesColumnIsTheRunOfTheSamePileBitForBit) {
   EXPECT_EQ(run.err, "");  // -q: no progress
   EXPECT_NE(run.out.find("pile: 20 boxes (seed 1)"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("tumble (impulse, rk4)  bullet 3.24 float"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("tumble / bullet, median ms/step: "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("tumble / bullet, mean ms/step: "), std::string::npos) << run.out;
 
   const PileRun expected = tumble::bench::run_pile_in_tumble(tumble::bench::make_pile(20, 1, 0.5));
   ASSERT_EQ(expected.step_ms.size(), 30u);
@@ -116,7 +116,7 @@ TEST_F(BenchContactCommand, TumblesColumnIsTheRunOfTheSamePileBitForBit) {
   EXPECT_NE(tumble.find("\"boxes_out_of_bin\": 0,"), std::string::npos) << tumble;
   const std::string bullet = object_named(json, "bullet");
   EXPECT_NE(bullet.find("\"engine\": \"bullet 3.24 float"), std::string::npos) << bullet;
-  EXPECT_NE(json.find("\"tumble_over_bullet\": {\"median_ms_per_step\": "), std::string::npos);
+  EXPECT_NE(json.find("\"tumble_over_bullet\": {\"mean_ms_per_step\": "), std::string::npos);
 
   // The CSV: a header and a row per step, tumble's figures the same bits as the run's.
   const std::vector<std::string> csv = lines_of(read_file(dir_ / "out" / "contact_bench.csv"));
