@@ -373,6 +373,11 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
       !settings.block && std::any_of(points.begin(), points.end(), may_bounce);
   const double energy_before = some_may_bounce ? total_kinetic_energy(bodies) : 0.0;
 
+  if (settings.block) {  // the impacts, from the velocities before the warm start's guess
+    std::vector<double> allowed(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) allowed[i] = points[i].speculative_speed;
+    resolve_impacts(bodies, points, patches, allowed, settings.restitution_threshold);
+  }
   if (settings.warm_start) {
     for (const ContactConstraint& c : points) {
       push(c.normal, bodies[c.a], second(bodies, c), c.normal_impulse);
@@ -384,11 +389,6 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
       for (int k = 0; k < 2; ++k) push(f.tangent[k], a, b, f.tangent_impulse[k]);
       push(f.twist, a, b, f.twist_impulse);
     }
-  }
-  if (settings.block) {
-    std::vector<double> allowed(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) allowed[i] = points[i].speculative_speed;
-    resolve_impacts(bodies, points, patches, allowed, settings.restitution_threshold);
   }
   std::optional<BlockRows> block;  // made only where it is used: a body alone pays nothing
   if (settings.block) {
