@@ -410,9 +410,8 @@ void add_bench_pipeline(CLI::App& bench, Commands& commands) {
   command->add_option("--out", options->out, "Folder for pipeline.md")
       ->check(not_empty())
       ->capture_default_str();
-  commands.push_back({command, [options] {
-                        return exit_code(bench::run_bench_pipeline(*options, stdout, stderr));
-                      }});
+  commands.push_back(
+      {command, [options] { return bench::run_bench_pipeline(*options, stdout, stderr); }});
 }
 
 void add_bench_accuracy(CLI::App& bench, Commands& commands) {
@@ -446,9 +445,8 @@ void add_bench_contact(CLI::App& bench, Commands& commands) {
                    "An existing folder for contact_bench.json and contact_bench.csv")
       ->check(not_empty());
   command->add_flag("-q,--quiet", options->quiet, "No progress");
-  commands.push_back({command, [options] {
-                        return exit_code(bench::run_bench_contact(*options, stdout, stderr));
-                      }});
+  commands.push_back(
+      {command, [options] { return bench::run_bench_contact(*options, stdout, stderr); }});
 }
 
 }  // namespace

@@ -31,9 +31,4 @@ using Commands = std::vector<Command>;
 // (`tumble check s.toml > /dev/full` must not succeed, nor `diff` report a mismatch nobody saw).
 CommandResult run_parsed(const Commands& commands);
 
-// An exit code from a function below cli that still returns one as an int.
-inline ExitCode exit_code(int code) {
-  return static_cast<ExitCode>(code);
-}
-
 }  // namespace tumble::cli

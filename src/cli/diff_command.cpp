@@ -23,7 +23,7 @@ CommandResult run_command_line(DiffCommandLine& line) {
     if (!line.diff.frames) return Error{frames_error(line.frames)};
   }
   line.comparison.apply_antialiasing(line.diff);
-  return exit_code(diff::run_diff(line.diff, stdout, stderr));
+  return diff::run_diff(line.diff, stdout);
 }
 
 }  // namespace

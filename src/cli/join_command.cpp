@@ -35,53 +35,54 @@ Result<std::vector<job::ChunkReport>> checked_chunks(const std::vector<std::stri
                    [](const job::ChunkReport& a, const job::ChunkReport& b) {
                      return a.frames.first < b.frames.first;
                    });
-  if (const std::string problem = mismatch(chunks); !problem.empty()) return Error{problem};
+  if (const Result<void> one = job::check_one_render(chunks); !one) return Error{one.error()};
   std::vector<job::FrameRange> ranges;
   std::vector<std::string> names;
   for (const job::ChunkReport& chunk : chunks) {
     ranges.push_back(chunk.frames);
     names.push_back(chunk.folder.string());
   }
-  if (const std::string problem = job::coverage_problem(ranges, names, chunks.front().scene_frames);
-      !problem.empty()) {
-    return Error{"the chunks do not hold every frame once: " + problem};
+  if (const Result<void> covered = job::check_coverage(ranges, names, chunks.front().scene_frames);
+      !covered) {
+    return Error{"the chunks do not hold every frame once: " + covered.error()};
   }
   return chunks;
 }
 
-// The folder to write, spelt one way, and why it may not be written, or "".
-std::string output_problem(const fs::path& out, const std::vector<job::ChunkReport>& chunks) {
+// Succeeds when the folder to write, spelt one way, may be written; else why not.
+Result<void> check_output(const fs::path& out, const std::vector<job::ChunkReport>& chunks) {
   if (out.empty() || out.filename() == "." || out.filename() == "..") {
-    return "the output folder must be named (got \"" + out.string() + "\")";
+    return Error{"the output folder must be named (got \"" + out.string() + "\")"};
   }
   std::error_code error;
   for (const job::ChunkReport& chunk : chunks) {
     if (fs::equivalent(out, chunk.folder, error)) {
-      return out.string() + " is one of the chunks; join into another folder";
+      return Error{out.string() + " is one of the chunks; join into another folder"};
     }
   }
   const fs::path root = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  return job::replace_problem(root, out.filename());
+  return job::check_replaceable(root, out.filename());
 }
 
 // Every chunk's frames/frame_NNNNN.png in `frames`: hard links where the file system allows
 // them (same bytes, no copy), else copies.
-std::string merge_frames(const std::vector<job::ChunkReport>& chunks, const fs::path& frames) {
+Result<void> merge_frames(const std::vector<job::ChunkReport>& chunks, const fs::path& frames) {
   std::error_code error;
   fs::create_directory(frames, error);
-  if (error) return "cannot create " + frames.string() + ": " + error.message();
+  if (error) return Error{"cannot create " + frames.string() + ": " + error.message()};
   for (const job::ChunkReport& chunk : chunks) {
     for (std::int64_t k = chunk.frames.first; k < chunk.frames.end; ++k) {
-      if (sys::interrupt_signal() != 0) return "stopped";
+      if (sys::interrupt_signal() != 0) return Error{"stopped"};
       const std::string name = pipeline::png_frame_name(k);
       const fs::path from = chunk.folder / "frames" / name;
       if (!fs::is_regular_file(from, error)) {
-        return chunk.folder.string() + ": frames/" + name + " is missing (its report.json says " +
-               "it holds frames " + job::range_text(chunk.frames) + ")";
+        return Error{chunk.folder.string() + ": frames/" + name +
+                     " is missing (its report.json says it holds frames " +
+                     job::range_text(chunk.frames) + ")"};
       }
       fs::create_hard_link(from, frames / name, error);
       if (error) fs::copy_file(from, frames / name, error);
-      if (error) return "cannot copy " + from.string() + ": " + error.message();
+      if (error) return Error{"cannot copy " + from.string() + ": " + error.message()};
     }
   }
   return {};
@@ -119,42 +120,39 @@ std::string joined_report(const std::vector<job::ChunkReport>& chunks, const fs:
   return text.str();
 }
 
-// Why the video segment at `path` does not hold exactly `frames`, the frames its chunk's report
-// says it holds (a WebM's index does not count its frames, so a copy cut short shows here), or "".
-std::string segment_problem(const std::string& path, const job::FrameRange& frames) {
+// Succeeds when the video segment at `path` holds exactly `frames`, the frames its chunk's report
+// says it holds (a WebM's index does not count its frames, so a copy cut short shows here).
+Result<void> check_segment(const std::string& path, const job::FrameRange& frames) {
   const Result<io::VideoSegmentInfo> read = io::read_segment_info(path);
-  if (!read) return read.error();
+  if (!read) return Error{read.error()};
   const io::VideoSegmentInfo& info = *read;
   if (info.first_frame != frames.first || info.first_frame + info.frames != frames.end) {
-    return path + ": holds frames " +
-           job::range_text({info.first_frame, info.first_frame + info.frames}) +
-           ", its report says " + job::range_text(frames) + " (a truncated or replaced copy?)";
+    return Error{path + ": holds frames " +
+                 job::range_text({info.first_frame, info.first_frame + info.frames}) +
+                 ", its report says " + job::range_text(frames) +
+                 " (a truncated or replaced copy?)"};
   }
   return {};
 }
 
 // The joined render written into `staging`.
-std::string write_joined(const std::vector<job::ChunkReport>& chunks, const fs::path& staging,
-                         const fs::path& out) {
+Result<void> write_joined(const std::vector<job::ChunkReport>& chunks, const fs::path& staging,
+                          const fs::path& out) {
   const job::ChunkReport& first = chunks.front();
   if (first.has_frames) {
-    if (std::string error = merge_frames(chunks, staging / "frames"); !error.empty()) return error;
+    if (Result<void> merged = merge_frames(chunks, staging / "frames"); !merged) return merged;
   }
   for (const std::string& name : first.video_names) {
     std::vector<std::string> segments;
     for (const job::ChunkReport& chunk : chunks) {
       segments.push_back((chunk.folder / name).string());
-      if (std::string error = segment_problem(segments.back(), chunk.frames); !error.empty()) {
-        return error;
-      }
+      if (Result<void> whole = check_segment(segments.back(), chunk.frames); !whole) return whole;
     }
     if (Result<void> joined = io::join_videos(segments, (staging / name).string()); !joined) {
-      return joined.error();
+      return joined;
     }
   }
-  const Result<void> written =
-      io::write_file_atomically((staging / "report.json").string(), joined_report(chunks, out));
-  return written ? "" : written.error();
+  return io::write_file_atomically((staging / "report.json").string(), joined_report(chunks, out));
 }
 
 }  // namespace
@@ -165,24 +163,22 @@ CommandResult run_join(const JoinOptions& options, std::FILE* err) {
   if (!chunks) return Error{"join: " + chunks.error()};
   const fs::path out = fs::path(options.out).lexically_normal();
   const fs::path folder = out.filename().empty() ? out.parent_path() : out;  // "a/b/" is "a/b"
-  if (const std::string problem = output_problem(folder, *chunks); !problem.empty()) {
-    return Error{"join: " + problem};
+  if (const Result<void> writable = check_output(folder, *chunks); !writable) {
+    return Error{"join: " + writable.error()};
   }
   Result<io::StagedDirectory> staged = io::StagedDirectory::create(folder.string());
   if (!staged) return Error{"join: " + staged.error()};
-  std::string error = write_joined(*chunks, staged->path(), folder);
+  Result<void> joined = write_joined(*chunks, staged->path(), folder);
   if (const int signal = sys::interrupt_signal()) {
     std::fprintf(err, "tumble: join stopped by %s; %s was left as it was\n",
                  sys::signal_name(signal), folder.c_str());
-    return exit_code(kExitInterrupted + signal);
+    return interrupted_by(signal);
   }
   // Checked again: the folder may have been made or filled while the chunks were copied.
-  if (error.empty()) error = output_problem(folder, *chunks);
-  if (error.empty()) {
-    if (const Result<void> committed = staged->commit(); !committed) error = committed.error();
-  }
-  if (!error.empty())
-    return Error{"join: " + error + "; " + folder.string() + " was left as it was"};
+  if (joined) joined = check_output(folder, *chunks);
+  if (joined) joined = staged->commit();
+  if (!joined)
+    return Error{"join: " + joined.error() + "; " + folder.string() + " was left as it was"};
   if (!staged->leftover().empty())
     std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
   if (!options.quiet) {

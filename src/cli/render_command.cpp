@@ -154,26 +154,28 @@ CommandResult run_render(const job::RenderOptions& options,
   made->scene_hash = job::scene_hash(*text, made->scene);
   const job::RenderJob& job = *made;
   if (golden) {
-    if (const std::string problem = job::golden_problem(*golden, job); !problem.empty()) {
-      return Error{problem};
+    if (const Result<void> usable = job::check_golden(*golden, job); !usable) {
+      return Error{usable.error()};
     }
   }
   if (!options.quiet) scene::print_stability_warnings(job.scene, err);
 
   // Everything is written into a hidden folder beside the final one and swapped in at the end:
   // a failed or interrupted render leaves the earlier output as it was.
-  if (const std::string problem = job::replace_problem(job.output_root, job.scene.output.directory);
-      !problem.empty()) {
-    return Error{problem};
+  if (const Result<void> replaceable =
+          job::check_replaceable(job.output_root, job.scene.output.directory);
+      !replaceable) {
+    return Error{replaceable.error()};
   }
   Result<io::StagedDirectory> staged = io::StagedDirectory::create(job.directory.string());
   if (!staged) return Error{staged.error()};
   const fs::path staging = staged->path();
   const std::int64_t count = job.end - job.first;
   pipeline::Progress progress(count, options.quiet, err);
-  const job::RenderResult result = job::render_scene(
+  job::RenderResult result;
+  const Result<void> rendered = job::render_scene(
       job, staging, [] { return sys::interrupt_signal() != 0; },
-      [&](std::int64_t done) { progress.update(done); });
+      [&](std::int64_t done) { progress.update(done); }, result);
   progress.finish();
   if (!options.quiet) {
     for (const std::string& line : result.warnings) {
@@ -191,21 +193,18 @@ CommandResult run_render(const job::RenderOptions& options,
   if (const int signal = sys::interrupt_signal()) {
     std::fprintf(err, "tumble: %s\n",
                  stopped(std::string("stopped by ") + sys::signal_name(signal)).c_str());
-    return exit_code(kExitInterrupted + signal);
+    return interrupted_by(signal);
   }
   // Two lines, each "tumble: ...": what failed, then what became of the output.
-  if (!result.error.empty()) return Error{result.error + "\ntumble: " + stopped("render failed")};
+  if (!rendered) return Error{rendered.error() + "\ntumble: " + stopped("render failed")};
 
   const double total_seconds = seconds_since(start);
-  const Result<void> written = io::write_file_atomically((staging / "report.json").string(),
-                                                         report_json(job, result, total_seconds));
-  std::string error = written ? "" : written.error();
+  Result<void> kept = io::write_file_atomically((staging / "report.json").string(),
+                                                report_json(job, result, total_seconds));
   // Checked again: the folder may have been made or filled while the frames were drawn.
-  if (error.empty()) error = job::replace_problem(job.output_root, job.scene.output.directory);
-  if (error.empty()) {
-    if (const Result<void> committed = staged->commit(); !committed) error = committed.error();
-  }
-  if (!error.empty()) return Error{error + "\ntumble: " + stopped("render failed")};
+  if (kept) kept = job::check_replaceable(job.output_root, job.scene.output.directory);
+  if (kept) kept = staged->commit();
+  if (!kept) return Error{kept.error() + "\ntumble: " + stopped("render failed")};
   if (!staged->leftover().empty())
     std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
   if (!options.quiet) {
@@ -218,7 +217,7 @@ CommandResult run_render(const job::RenderOptions& options,
                  static_cast<long long>(count), total_seconds,
                  static_cast<double>(count) / total_seconds, drawn_by.c_str(), shown.c_str());
   }
-  return golden ? exit_code(job::compare_with_golden(*golden, job, out, err)) : kExitOk;
+  return golden ? job::compare_with_golden(*golden, job, out) : kExitOk;
 }
 
 namespace {

@@ -64,7 +64,7 @@ CommandResult run_simulate(const SimulateOptions& options, std::FILE* err) {
     // Rows still buffered for standard output are dropped: flushing them at exit could block
     // on the very pipe the signal cut short.
     if (!to_file) __fpurge(stdout);
-    return exit_code(kExitInterrupted + signal);
+    return interrupted_by(signal);
   };
   std::FILE* out = stdout;
   if (options.out != "-") {

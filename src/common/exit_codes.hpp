@@ -9,4 +9,9 @@ namespace tumble {
 // shell reports a program killed by it.
 enum ExitCode : int { kExitOk = 0, kExitMismatch = 1, kExitBadInput = 2, kExitInterrupted = 128 };
 
+// The exit code of a command stopped cleanly by signal N.
+inline ExitCode interrupted_by(int signal) {
+  return static_cast<ExitCode>(kExitInterrupted + signal);
+}
+
 }  // namespace tumble

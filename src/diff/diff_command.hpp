@@ -35,8 +35,8 @@ struct DiffCommandOptions {
 Result<SequenceOptions> diff_settings(const DiffCommandOptions& options);
 
 // Prints figures to `out` (one line for two PNGs; for sequences a line per failing frame and a
-// summary) and messages to `err`. Returns kExitOk when everything matches, kExitMismatch when
-// not, kExitBadInput when the inputs cannot be compared or an output cannot be written.
-int run_diff(const DiffCommandOptions& options, std::FILE* out, std::FILE* err);
+// summary). Returns kExitOk when everything matches and kExitMismatch when not; fails when the
+// inputs cannot be compared or an output cannot be written.
+Result<ExitCode> run_diff(const DiffCommandOptions& options, std::FILE* out);
 
 }  // namespace tumble::diff

@@ -164,13 +164,14 @@ std::string judge(Job& job, const SequenceOptions& options, FrameOutcome& outcom
 // Runs `judge` over the jobs `produce` pushes, on `threads` workers, and collects the outcomes
 // in frame order. The first read error (in frame order) wins.
 template <typename Produce>
-SequenceDiff run_jobs(const SequenceOptions& options, Produce produce) {
+Result<SequenceDiff> run_jobs(const SequenceOptions& options, Produce produce) {
   const unsigned threads =
       options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   common::BoundedQueue<Job> jobs(2 * threads);  // enough to keep workers busy, few frames in memory
   WorstFrames worst(options.criteria.metric);
   std::mutex mutex;
   SequenceDiff diff;
+  std::string first_error;  // of the lowest frame index that failed
   std::int64_t error_index = INT64_MAX;
   const auto work = [&] {
     while (std::optional<Job> job = jobs.pop()) {
@@ -180,7 +181,7 @@ SequenceDiff run_jobs(const SequenceOptions& options, Produce produce) {
       if (!error.empty()) jobs.abort();  // the comparison cannot finish: stop producing
       if (!error.empty() && job->index < error_index) {
         error_index = job->index;
-        diff.error = std::move(error);
+        first_error = std::move(error);
       }
       diff.frames.push_back(std::move(outcome));
     }
@@ -190,7 +191,8 @@ SequenceDiff run_jobs(const SequenceOptions& options, Produce produce) {
   std::string produce_error = produce(jobs, diff);
   jobs.close();
   for (std::thread& worker : workers) worker.join();
-  if (!produce_error.empty()) diff.error = std::move(produce_error);
+  if (!produce_error.empty()) return Error{std::move(produce_error)};
+  if (!first_error.empty()) return Error{std::move(first_error)};
   std::sort(diff.frames.begin(), diff.frames.end(),
             [](const FrameOutcome& a, const FrameOutcome& b) { return a.index < b.index; });
   diff.worst = worst.take();
@@ -286,12 +288,12 @@ std::string produce_by_position(const DiffInput& first, const DiffInput& second,
 }  // namespace
 
 bool SequenceDiff::match() const {
-  return error.empty() && !frames.empty() && first_count == second_count &&
+  return !frames.empty() && first_count == second_count &&
          std::all_of(frames.begin(), frames.end(), [](const FrameOutcome& f) { return f.match; });
 }
 
-SequenceDiff compare_sequences(const DiffInput& first, const DiffInput& second,
-                               const SequenceOptions& options) {
+Result<SequenceDiff> compare_sequences(const DiffInput& first, const DiffInput& second,
+                                       const SequenceOptions& options) {
   const bool by_name = first.kind == DiffInputKind::folder && second.kind == DiffInputKind::folder;
   return run_jobs(options, [&](common::BoundedQueue<Job>& jobs, SequenceDiff& diff) {
     return by_name ? produce_by_name(first, second, options, jobs, diff)
@@ -299,8 +301,8 @@ SequenceDiff compare_sequences(const DiffInput& first, const DiffInput& second,
   });
 }
 
-SequenceDiff compare_pair(io::Image first, io::Image second, const std::string& name,
-                          const SequenceOptions& options) {
+Result<SequenceDiff> compare_pair(io::Image first, io::Image second, const std::string& name,
+                                  const SequenceOptions& options) {
   SequenceOptions one = options;
   one.threads = 1;
   return run_jobs(one, [&](common::BoundedQueue<Job>& jobs, SequenceDiff& diff) {

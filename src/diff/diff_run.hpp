@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/result.hpp"
 #include "diff/diff_inputs.hpp"
 #include "diff/image_diff.hpp"
 #include "io/image.hpp"
@@ -52,7 +53,6 @@ struct SequenceOptions {
 inline constexpr std::size_t kMaxKeptFrames = 10;
 
 struct SequenceDiff {
-  std::string error;                 // why the inputs could not be read (exit 2), else ""
   std::vector<FrameOutcome> frames;  // in frame order
   std::vector<KeptFrame> worst;      // failing compared frames, worst first, at most 10
   // Frames of each input: two folders', within the range; others', up to the range's end.
@@ -66,12 +66,12 @@ struct SequenceDiff {
 };
 
 // Compares two inputs of kind folder or video (two folders pair frames by file name; otherwise
-// frame k of one with frame k of the other).
-SequenceDiff compare_sequences(const DiffInput& first, const DiffInput& second,
-                               const SequenceOptions& options);
+// frame k of one with frame k of the other). Fails when an input cannot be read (exit 2).
+Result<SequenceDiff> compare_sequences(const DiffInput& first, const DiffInput& second,
+                                       const SequenceOptions& options);
 
 // The same for two images already read (one frame, named `name`); sizes must agree.
-SequenceDiff compare_pair(io::Image first, io::Image second, const std::string& name,
-                          const SequenceOptions& options);
+Result<SequenceDiff> compare_pair(io::Image first, io::Image second, const std::string& name,
+                                  const SequenceOptions& options);
 
 }  // namespace tumble::diff

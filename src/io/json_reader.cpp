@@ -75,13 +75,7 @@ class Parser {
 
   bool parse_object(JsonValue& value, int depth) {
     value.kind = JsonValue::Kind::object;
-    ++at_;  // '{'
-    skip_space();
-    if (at_ < text_.size() && text_[at_] == '}') {
-      ++at_;
-      return true;
-    }
-    for (;;) {
+    return parse_list('}', [&] {
       skip_space();
       std::string key;
       if (at_ >= text_.size() || text_[at_] != '"' || !parse_string(key)) return fail("a key");
@@ -91,38 +85,40 @@ class Parser {
       JsonValue member;
       if (!parse_value(member, depth + 1)) return false;
       value.members.push_back({std::move(key), std::move(member)});
-      skip_space();
-      if (at_ < text_.size() && text_[at_] == ',') {
-        ++at_;
-      } else if (at_ < text_.size() && text_[at_] == '}') {
-        ++at_;
-        return true;
-      } else {
-        return fail("',' or '}'");
-      }
-    }
+      return true;
+    });
   }
 
   bool parse_array(JsonValue& value, int depth) {
     value.kind = JsonValue::Kind::array;
-    ++at_;  // '['
+    return parse_list(']', [&] {
+      JsonValue item;
+      if (!parse_value(item, depth + 1)) return false;
+      value.items.push_back(std::move(item));
+      return true;
+    });
+  }
+
+  // An object's members or an array's items, from its opening bracket (at at_) to `close`: none,
+  // or each read by `parse_one` and followed by ',' or `close`.
+  template <typename ParseOne>
+  bool parse_list(char close, ParseOne parse_one) {
+    ++at_;  // '{' or '['
     skip_space();
-    if (at_ < text_.size() && text_[at_] == ']') {
+    if (at_ < text_.size() && text_[at_] == close) {
       ++at_;
       return true;
     }
     for (;;) {
-      JsonValue item;
-      if (!parse_value(item, depth + 1)) return false;
-      value.items.push_back(std::move(item));
+      if (!parse_one()) return false;
       skip_space();
       if (at_ < text_.size() && text_[at_] == ',') {
         ++at_;
-      } else if (at_ < text_.size() && text_[at_] == ']') {
+      } else if (at_ < text_.size() && text_[at_] == close) {
         ++at_;
         return true;
       } else {
-        return fail("',' or ']'");
+        return fail(std::string("',' or '") + close + "'");
       }
     }
   }

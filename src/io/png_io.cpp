@@ -63,44 +63,35 @@ void read_from_file(png_structp png, png_bytep data, std::size_t length) {
   png_error(png, message);
 }
 
-// Owns a write png_struct and its png_info.
-class PngWriteStructs {
+// Owns a png_struct, for reading or for writing, and its png_info.
+class PngStructs {
  public:
-  explicit PngWriteStructs(PngFailure* failure)
-      : png_(png_create_write_struct(PNG_LIBPNG_VER_STRING, failure, record_error_and_jump,
-                                     ignore_warning)) {
+  enum class Side { read, write };
+
+  PngStructs(Side side, PngFailure* failure)
+      : side_(side),
+        png_(side == Side::write ? png_create_write_struct(PNG_LIBPNG_VER_STRING, failure,
+                                                           record_error_and_jump, ignore_warning)
+                                 : png_create_read_struct(PNG_LIBPNG_VER_STRING, failure,
+                                                          record_error_and_jump, ignore_warning)) {
     if (png_) info_ = png_create_info_struct(png_);
   }
-  ~PngWriteStructs() { png_destroy_write_struct(&png_, &info_); }
-  PngWriteStructs(const PngWriteStructs&) = delete;
-  PngWriteStructs& operator=(const PngWriteStructs&) = delete;
+  ~PngStructs() {
+    if (side_ == Side::write) {
+      png_destroy_write_struct(&png_, &info_);
+    } else {
+      png_destroy_read_struct(&png_, &info_, nullptr);
+    }
+  }
+  PngStructs(const PngStructs&) = delete;
+  PngStructs& operator=(const PngStructs&) = delete;
 
   bool allocated() const { return info_ != nullptr; }
   png_structp png() const { return png_; }
   png_infop info() const { return info_; }
 
  private:
-  png_structp png_;
-  png_infop info_ = nullptr;
-};
-
-// Owns a read png_struct and its png_info.
-class PngReadStructs {
- public:
-  explicit PngReadStructs(PngFailure* failure)
-      : png_(png_create_read_struct(PNG_LIBPNG_VER_STRING, failure, record_error_and_jump,
-                                    ignore_warning)) {
-    if (png_) info_ = png_create_info_struct(png_);
-  }
-  ~PngReadStructs() { png_destroy_read_struct(&png_, &info_, nullptr); }
-  PngReadStructs(const PngReadStructs&) = delete;
-  PngReadStructs& operator=(const PngReadStructs&) = delete;
-
-  bool allocated() const { return info_ != nullptr; }
-  png_structp png() const { return png_; }
-  png_infop info() const { return info_; }
-
- private:
+  Side side_;
   png_structp png_;
   png_infop info_ = nullptr;
 };
@@ -212,7 +203,7 @@ Result<void> write_png(const std::string& path, const Image& image, const PngSet
   Result<AtomicFile> file = AtomicFile::open(path, AtomicFile::Durability::unsynced);
   if (!file) return Error{file.error()};
   PngFailure failure{};
-  PngWriteStructs structs(&failure);
+  PngStructs structs(PngStructs::Side::write, &failure);
   if (!structs.allocated())
     return Error{path + ": cannot write PNG: libpng could not allocate its state"};
   if (!encode_guarded(structs.png(), structs.info(), file->stream(), image, settings)) {
@@ -237,7 +228,7 @@ Result<Image> read_png(std::FILE* file, const std::string& path) {
   }
 
   PngFailure failure{};
-  PngReadStructs structs(&failure);
+  PngStructs structs(PngStructs::Side::read, &failure);
   if (!structs.allocated())
     return Error{path + ": cannot read PNG: libpng could not allocate its state"};
   const std::string cannot_decode = path + ": cannot decode PNG: ";

@@ -109,20 +109,20 @@ struct VideoDecoder::State {
   std::string fail(const std::string& call, int code) const {
     return path + ": cannot decode video: " + call + ": " + av::error_text(code);
   }
-  Image to_rgb(std::string& error);
+  Result<Image> to_rgb();
   void note_quantisers();
-  // Sends packets until the decoder has a frame: 0, AVERROR_EOF at the end, or an error.
-  int receive(std::string& error);
+  // Sends packets until the decoder has a frame: true, or false at the end.
+  Result<bool> receive();
 };
 
-Image VideoDecoder::State::to_rgb(std::string& error) {
+Result<Image> VideoDecoder::State::to_rgb() {
   const auto pixel_format = static_cast<AVPixelFormat>(frame->format);
   scaler =
       sws_getCachedContext(scaler, frame->width, frame->height, pixel_format, frame->width,
                            frame->height, AV_PIX_FMT_RGB24, kToRgbFlags, nullptr, nullptr, nullptr);
   if (!scaler) {
-    error = path + ": cannot convert " + av_get_pix_fmt_name(pixel_format) + " pictures to RGB";
-    return {};
+    return Error{path + ": cannot convert " + av_get_pix_fmt_name(pixel_format) +
+                 " pictures to RGB"};
   }
   picture_format = {};
   if (is_yuv(pixel_format)) {
@@ -155,19 +155,18 @@ void VideoDecoder::State::note_quantisers() {
   }
 }
 
-int VideoDecoder::State::receive(std::string& error) {
+Result<bool> VideoDecoder::State::receive() {
   for (;;) {
     const int received = avcodec_receive_frame(codec.get(), frame.get());
     if (received != AVERROR(EAGAIN)) {
-      if (received < 0 && received != AVERROR_EOF) error = fail("avcodec_receive_frame", received);
-      return received;
+      if (received < 0 && received != AVERROR_EOF) {
+        return Error{fail("avcodec_receive_frame", received)};
+      }
+      return received >= 0;
     }
-    if (input_ended) return AVERROR_EOF;
+    if (input_ended) return false;
     const int read = av_read_frame(format.get(), packet.get());
-    if (read < 0 && read != AVERROR_EOF) {
-      error = fail("av_read_frame", read);
-      return read;
-    }
+    if (read < 0 && read != AVERROR_EOF) return Error{fail("av_read_frame", read)};
     if (read == AVERROR_EOF) input_ended = true;
     if (read == 0 && packet->stream_index != stream_index) {
       av_packet_unref(packet.get());
@@ -175,10 +174,7 @@ int VideoDecoder::State::receive(std::string& error) {
     }
     const int sent = avcodec_send_packet(codec.get(), input_ended ? nullptr : packet.get());
     av_packet_unref(packet.get());
-    if (sent < 0 && sent != AVERROR_EOF) {
-      error = fail("avcodec_send_packet", sent);
-      return sent;
-    }
+    if (sent < 0 && sent != AVERROR_EOF) return Error{fail("avcodec_send_packet", sent)};
   }
 }
 
@@ -225,19 +221,18 @@ VideoDecoder::~VideoDecoder() = default;
 
 Result<std::optional<DecodedFrame>> VideoDecoder::next() {
   State& state = *state_;
-  std::string error;
-  if (state.receive(error) < 0) {
-    if (!error.empty()) return Error{error};
-    return std::optional<DecodedFrame>();  // the end
-  }
+  const Result<bool> received = state.receive();
+  if (!received) return Error{received.error()};
+  if (!*received) return std::optional<DecodedFrame>();  // the end
   DecodedFrame decoded;
   const std::int64_t timestamp = state.frame->best_effort_timestamp;
   decoded.time =
       timestamp == AV_NOPTS_VALUE ? 0.0 : static_cast<double>(timestamp) * av_q2d(state.time_base);
-  decoded.image = state.to_rgb(error);
+  Result<Image> image = state.to_rgb();
   state.note_quantisers();
   av_frame_unref(state.frame.get());
-  if (!error.empty()) return Error{error};
+  if (!image) return Error{image.error()};
+  decoded.image = std::move(*image);
   return std::optional<DecodedFrame>(std::move(decoded));
 }
 

@@ -99,38 +99,39 @@ Result<ChunkReport> read_chunk_report(const fs::path& folder) {
   return chunk;
 }
 
-std::string mismatch(const std::vector<ChunkReport>& chunks) {
+Result<void> check_one_render(const std::vector<ChunkReport>& chunks) {
   const ChunkReport& first = chunks.front();
   for (const ChunkReport& chunk : chunks) {
     const std::string pair =
         "chunks " + first.folder.string() + " and " + chunk.folder.string() + " differ in ";
     if (chunk.scene != first.scene) {
-      return pair + "scene name: " + first.scene + " and " + chunk.scene;
+      return Error{pair + "scene name: " + first.scene + " and " + chunk.scene};
     }
     for (const auto& [key, value] : first.settings.members) {
       const io::JsonValue* other = chunk.settings.find(key);
       if (!other || other->text != value.text) {
-        return pair + key + ": " + value.text + " and " + (other ? other->text : "none");
+        return Error{pair + key + ": " + value.text + " and " + (other ? other->text : "none")};
       }
     }
     if (chunk.settings.members.size() != first.settings.members.size()) {
-      return pair + "which settings their report.json records (rendered by different tumbles?)";
+      return Error{pair +
+                   "which settings their report.json records (rendered by different tumbles?)"};
     }
     if (chunk.scene_frames != first.scene_frames) {
-      return pair + "the scene's frame count: " + std::to_string(first.scene_frames) + " and " +
-             std::to_string(chunk.scene_frames);
+      return Error{pair + "the scene's frame count: " + std::to_string(first.scene_frames) +
+                   " and " + std::to_string(chunk.scene_frames)};
     }
     if (chunk.scene_hash != first.scene_hash) {
-      return pair + "the scene they rendered (scene_hash " + shown(first.scene_hash) + " and " +
-             shown(chunk.scene_hash) + "): the scene file (" + first.scene_file + ", " +
-             chunk.scene_file + ") or an override changed between them";
+      return Error{pair + "the scene they rendered (scene_hash " + shown(first.scene_hash) +
+                   " and " + shown(chunk.scene_hash) + "): the scene file (" + first.scene_file +
+                   ", " + chunk.scene_file + ") or an override changed between them"};
     }
   }
   return {};
 }
 
-std::string coverage_problem(const std::vector<FrameRange>& ranges,
-                             const std::vector<std::string>& folders, std::int64_t frame_count) {
+Result<void> check_coverage(const std::vector<FrameRange>& ranges,
+                            const std::vector<std::string>& folders, std::int64_t frame_count) {
   std::vector<std::string> problems;
   std::int64_t covered = 0;  // frames 0 .. covered-1 are in some chunk
   std::size_t last = 0;      // the chunk that reaches furthest so far
@@ -150,9 +151,10 @@ std::string coverage_problem(const std::vector<FrameRange>& ranges,
   if (covered < frame_count) {
     problems.push_back("frames " + range_text({covered, frame_count}) + " are missing");
   }
+  if (problems.empty()) return {};
   std::string text;
   for (const std::string& problem : problems) text += (text.empty() ? "" : "; ") + problem;
-  return text;
+  return Error{text};
 }
 
 }  // namespace tumble::job

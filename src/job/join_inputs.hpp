@@ -31,14 +31,14 @@ struct ChunkReport {
 // Reads `folder`/report.json; errors name the folder and what is missing or malformed.
 Result<ChunkReport> read_chunk_report(const std::filesystem::path& folder);
 
-// Why `chunks` cannot be joined, as a sentence naming the two folders and the setting that
-// differs; "" when every chunk is of the first one's scene and settings.
-std::string mismatch(const std::vector<ChunkReport>& chunks);
+// Succeeds when every chunk is of the first one's scene and settings; else why `chunks` cannot
+// be joined, as a sentence naming the two folders and the setting that differs.
+Result<void> check_one_render(const std::vector<ChunkReport>& chunks);
 
-// The frames that `ranges` (sorted by their first frame; `folders` names each) leave out of
-// 0 .. frame_count-1 or hold more than once, as "frames 40:60 are missing" and "frames 10:12
-// are in both A and B", joined by "; "; "" when they cover every frame once.
-std::string coverage_problem(const std::vector<FrameRange>& ranges,
-                             const std::vector<std::string>& folders, std::int64_t frame_count);
+// Succeeds when `ranges` (sorted by their first frame; `folders` names each) cover every frame of
+// 0 .. frame_count-1 once; else the frames they leave out or hold more than once, as "frames
+// 40:60 are missing" and "frames 10:12 are in both A and B", joined by "; ".
+Result<void> check_coverage(const std::vector<FrameRange>& ranges,
+                            const std::vector<std::string>& folders, std::int64_t frame_count);
 
 }  // namespace tumble::job

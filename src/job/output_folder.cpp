@@ -1,6 +1,7 @@
 #include "job/output_folder.hpp"
 
 #include <fstream>
+#include <string>
 #include <string_view>
 
 #include "common/video_format.hpp"
@@ -53,7 +54,7 @@ std::string foreign_entry(const fs::path& directory) {
 
 }  // namespace
 
-std::string replace_problem(const fs::path& root, const fs::path& relative) {
+Result<void> check_replaceable(const fs::path& root, const fs::path& relative) {
   const std::string advice =
       "; a render replaces its folder as a whole, so choose another -o or [output] directory";
   const auto inside_render = [&](const fs::path& folder) {
@@ -66,25 +67,25 @@ std::string replace_problem(const fs::path& root, const fs::path& relative) {
   fs::path real_root = fs::weakly_canonical(root, error);
   if (error) real_root = fs::absolute(root, error);
   for (fs::path above = real_root; !above.empty(); above = above.parent_path()) {
-    if (is_render_folder(above)) return inside_render(above);
+    if (is_render_folder(above)) return Error{inside_render(above)};
     if (above == above.root_path()) break;
   }
   fs::path directory = root;
   for (const fs::path& part : relative) {
-    if (directory != root && is_render_folder(directory)) return inside_render(directory);
+    if (directory != root && is_render_folder(directory)) return Error{inside_render(directory)};
     directory /= part;
     const fs::file_status status = fs::symlink_status(directory, error);
     if (!fs::exists(status)) return {};
-    if (fs::is_symlink(status)) return directory.string() + " is a symbolic link" + advice;
-    if (!fs::is_directory(status)) return directory.string() + " exists and is not a folder";
+    if (fs::is_symlink(status)) return Error{directory.string() + " is a symbolic link" + advice};
+    if (!fs::is_directory(status)) return Error{directory.string() + " exists and is not a folder"};
   }
   if (!is_render_folder(directory) && !fs::is_empty(directory, error)) {
-    return "output folder " + directory.string() + " exists and is not a tumble render (it has " +
-           "no report.json of tumble's)" + advice + ", or remove it";
+    return Error{"output folder " + directory.string() + " exists and is not a tumble render (it " +
+                 "has no report.json of tumble's)" + advice + ", or remove it"};
   }
   if (const std::string foreign = foreign_entry(directory); !foreign.empty()) {
-    return "output folder " + directory.string() + " holds " + foreign +
-           ", which a render does not write" + advice + ", or move it";
+    return Error{"output folder " + directory.string() + " holds " + foreign +
+                 ", which a render does not write" + advice + ", or move it"};
   }
   return {};
 }

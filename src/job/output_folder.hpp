@@ -6,13 +6,14 @@
 #pragma once
 
 #include <filesystem>
-#include <string>
+
+#include "common/result.hpp"
 
 namespace tumble::job {
 
-// Why the scene's folder `relative` below the output folder `root` must not be replaced by a
-// render, as a sentence for people; "" when it may (also when it does not exist yet).
-std::string replace_problem(const std::filesystem::path& root,
-                            const std::filesystem::path& relative);
+// Succeeds when a render may replace the scene's folder `relative` below the output folder `root`
+// (also when it does not exist yet); else why not, as a sentence for people.
+Result<void> check_replaceable(const std::filesystem::path& root,
+                               const std::filesystem::path& relative);
 
 }  // namespace tumble::job

@@ -23,32 +23,32 @@ bool inside(const fs::path& path, const fs::path& folder) {
 
 }  // namespace
 
-std::string golden_problem(const diff::DiffCommandOptions& golden, const RenderJob& job) {
+Result<void> check_golden(const diff::DiffCommandOptions& golden, const RenderJob& job) {
   if (const Result<diff::SequenceOptions> settings = diff::diff_settings(golden); !settings) {
-    return settings.error();
+    return Error{settings.error()};
   }
   const Result<diff::DiffInput> resolved = diff::resolve_diff_input(golden.first_path);
-  if (!resolved) return "--golden " + resolved.error();
+  if (!resolved) return Error{"--golden " + resolved.error()};
   const diff::DiffInput& input = *resolved;
   if (input.kind == diff::DiffInputKind::png) {
-    return "--golden " + golden.first_path +
-           ": expected a render's folder, a folder of frames or a video, not one PNG";
+    return Error{"--golden " + golden.first_path +
+                 ": expected a render's folder, a folder of frames or a video, not one PNG"};
   }
   if (inside(golden.first_path, job.directory)) {
-    return "--golden " + golden.first_path + " lies in " + job.directory.string() +
-           ", the folder this render replaces: keep goldens elsewhere or render with -o";
+    return Error{"--golden " + golden.first_path + " lies in " + job.directory.string() +
+                 ", the folder this render replaces: keep goldens elsewhere or render with -o"};
   }
   return {};
 }
 
-int compare_with_golden(diff::DiffCommandOptions golden, const RenderJob& job, std::FILE* out,
-                        std::FILE* err) {
+Result<ExitCode> compare_with_golden(diff::DiffCommandOptions golden, const RenderJob& job,
+                                     std::FILE* out) {
   golden.second_path =
       job.scene.output.frames ? job.directory.string() : job.video_path(job.directory);
   // A whole render is compared whole, so that a golden with more frames is a mismatch; a range
   // is compared over the range it rendered.
   if (job.first != 0 || job.end != job.frame_count) golden.frames = {{job.first, job.end}};
-  return diff::run_diff(golden, out, err);
+  return diff::run_diff(golden, out);
 }
 
 }  // namespace tumble::job

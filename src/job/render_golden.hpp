@@ -4,8 +4,9 @@
 #pragma once
 
 #include <cstdio>
-#include <string>
 
+#include "common/exit_codes.hpp"
+#include "common/result.hpp"
 #include "diff/diff_command.hpp"  // DiffCommandOptions
 #include "job/render_job.hpp"
 
@@ -13,13 +14,13 @@ namespace tumble::job {
 
 // Checked before rendering, so that a mistake costs no render: the golden (`golden.first_path`)
 // is a folder of frames, a render's folder or a video; the comparison options are sound; and the
-// golden lies outside the folder the render replaces. "" or the reason, naming the path.
-std::string golden_problem(const diff::DiffCommandOptions& golden, const RenderJob& job);
+// golden lies outside the folder the render replaces. The error names the path.
+Result<void> check_golden(const diff::DiffCommandOptions& golden, const RenderJob& job);
 
 // After a successful render: compares the golden (A, the expected) with what the job wrote into
 // its folder (B): its frames, or its video when it wrote no frames. A render of a frame range is
-// compared over that range only. Returns run_diff's exit code.
-int compare_with_golden(diff::DiffCommandOptions golden, const RenderJob& job, std::FILE* out,
-                        std::FILE* err);
+// compared over that range only. Returns what run_diff returns.
+Result<ExitCode> compare_with_golden(diff::DiffCommandOptions golden, const RenderJob& job,
+                                     std::FILE* out);
 
 }  // namespace tumble::job

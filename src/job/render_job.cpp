@@ -120,9 +120,10 @@ Result<FrameRange> frame_range(const RenderOptions& options, std::int64_t total)
 }
 
 // The renderer of the job's frames on this thread (its context, its shaders compiled), timed and
-// described in `result`; null, with result.error set, when this OpenGL cannot draw the scene.
-std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const view::Framing& framing,
-                                                RenderResult& result) {
+// described in `result`; an error when this OpenGL cannot draw the scene.
+Result<std::unique_ptr<render::Renderer>> make_renderer(const RenderJob& job,
+                                                        const view::Framing& framing,
+                                                        RenderResult& result) {
   const double start = pipeline::process_cpu_seconds();
   const scene::Scene& scene = job.scene;
   const render::RenderSettings settings = view::renderer_settings(scene, framing);
@@ -130,8 +131,7 @@ std::unique_ptr<render::Renderer> make_renderer(const RenderJob& job, const view
       render::Renderer::create(settings, job.shader_directory);
   if (!made) {
     // Mostly what the scene asks of this OpenGL ([render] msaa beyond its samples): name it.
-    result.error = job.scene.source_path + ": " + made.error();
-    return nullptr;
+    return Error{job.scene.source_path + ": " + made.error()};
   }
   std::unique_ptr<render::Renderer> renderer = std::move(made).value();
   result.renderer = renderer->description();
@@ -252,27 +252,23 @@ Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& opti
                    .shader_directory = std::move(shader_directory)};
 }
 
-RenderResult render_scene(const RenderJob& job, const fs::path& folder,
+Result<void> render_scene(const RenderJob& job, const fs::path& folder,
                           const std::function<bool()>& stop_requested,
-                          const std::function<void(std::int64_t done)>& on_frame_done) {
-  RenderResult result;
+                          const std::function<void(std::int64_t done)>& on_frame_done,
+                          RenderResult& result) {
+  result = RenderResult();
   const scene::Scene& scene = job.scene;
   const auto setup_start = std::chrono::steady_clock::now();
   Result<std::vector<std::unique_ptr<pipeline::FrameSink>>> sinks = open_sinks(job, folder);
-  if (!sinks) {
-    result.error = sinks.error();
-    return result;
-  }
+  if (!sinks) return Error{sinks.error()};
   double start = pipeline::process_cpu_seconds();
   const Result<view::Framing> framing = view::frame_scene(scene, job.frame_count, stop_requested);
-  if (!framing) {
-    result.error = framing.error();
-    return result;
-  }
+  if (!framing) return Error{framing.error()};
   result.framing_steps = framing->physics_steps;
   result.framing_seconds = pipeline::process_cpu_seconds() - start;
-  const std::unique_ptr<render::Renderer> renderer = make_renderer(job, *framing, result);
-  if (!renderer) return result;
+  const Result<std::unique_ptr<render::Renderer>> made = make_renderer(job, *framing, result);
+  if (!made) return Error{made.error()};
+  const std::unique_ptr<render::Renderer>& renderer = *made;
   view::SimulatedFrames source(scene, *framing, stop_requested);
   for (const physics::BodyState& state : source.simulation().current()) {
     result.bodies.push_back({.energy_start = physics::kinetic_energy(state),
@@ -280,10 +276,7 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
   }
   start = pipeline::process_cpu_seconds();
   const Result<std::int64_t> seek_steps = source.seek(job.first);
-  if (!seek_steps) {
-    result.error = seek_steps.error();
-    return result;
-  }
+  if (!seek_steps) return Error{seek_steps.error()};
   result.seek_steps = *seek_steps;
   result.seek_seconds = pipeline::process_cpu_seconds() - start;
   std::vector<pipeline::FrameSink*> sink_list;
@@ -296,14 +289,12 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
   const Result<void> ran = pipeline::run_frames(job.first, job.end, source, *renderer, sink_list,
                                                 job.serial, on_frame_done, result.pipeline);
   result.frame_steps = source.simulation().step_count();
-  if (!ran) {
-    result.error = ran.error();
-    return result;  // each sink's destructor removes its partial file
-  }
+  if (!ran) return ran;  // each sink's destructor removes its partial file
   const auto finish_start = std::chrono::steady_clock::now();
+  Result<void> finished = Result<void>::success();
   for (pipeline::FrameSink* sink : sink_list) {
-    if (!result.error.empty()) break;
-    if (const Result<void> finished = sink->finish(); !finished) result.error = finished.error();
+    finished = sink->finish();
+    if (!finished) break;
   }
   result.finish_seconds = seconds_since(finish_start);
   for (std::size_t i = 0; i < result.bodies.size(); ++i) {
@@ -311,7 +302,7 @@ RenderResult render_scene(const RenderJob& job, const fs::path& folder,
     result.bodies[i].energy_end = physics::kinetic_energy(state);
     result.bodies[i].angular_momentum_end = state.angular_momentum().norm();
   }
-  return result;
+  return finished;
 }
 
 }  // namespace tumble::job

@@ -83,8 +83,9 @@ struct BodyDiagnostics {
   double angular_momentum_start = 0.0, angular_momentum_end = 0.0;  // |L| (kg m²/s)
 };
 
+// What a render did, as far as it got: also when it failed (the frames done, the renderer and the
+// warnings are still told).
 struct RenderResult {
-  std::string error;                  // "" on success; then every output is complete
   pipeline::PipelineReport pipeline;  // the frames
   double setup_seconds = 0.0;         // framing, renderer and sinks' set-up (s, wall)
   double finish_seconds = 0.0;  // finishing the sinks: draining the encoder, closing the MP4 (s)
@@ -104,11 +105,13 @@ struct RenderResult {
   std::vector<std::string> warnings;  // for the user (characters the font lacks)
 };
 
-// Renders the job's frames into `folder` (which must exist). Asks `stop_requested` before each
-// frame and calls `on_frame_done` as each one finishes.
-RenderResult render_scene(const RenderJob& job, const std::filesystem::path& folder,
+// Renders the job's frames into `folder` (which must exist), describing the run in `result`.
+// Asks `stop_requested` before each frame and calls `on_frame_done` as each one finishes. On
+// success every output is complete.
+Result<void> render_scene(const RenderJob& job, const std::filesystem::path& folder,
                           const std::function<bool()>& stop_requested,
-                          const std::function<void(std::int64_t done)>& on_frame_done);
+                          const std::function<void(std::int64_t done)>& on_frame_done,
+                          RenderResult& result);
 
 // shaders/ beside an installed binary, else in the source tree this binary was built from;
 // TUMBLE_SHADER_DIR overrides both. "" if none is found.

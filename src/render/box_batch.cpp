@@ -1,7 +1,6 @@
 #include "render/box_batch.hpp"
 
 #include <cstddef>
-#include <utility>
 
 #include "render/box_instances.hpp"
 #include "render/geometry.hpp"
@@ -41,14 +40,14 @@ BoxBatch BoxBatch::create() {
     const GLushort base = face * 4;
     for (const GLushort corner : {0, 1, 2, 0, 2, 3}) indices.push_back(base + corner);
   }
-  glGenVertexArrays(1, &out.vao_);
-  glBindVertexArray(out.vao_);
-  glGenBuffers(1, &out.cube_vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, out.cube_vbo_);
+  glGenVertexArrays(1, out.vao_.out());
+  glBindVertexArray(out.vao_.get());
+  glGenBuffers(1, out.cube_vbo_.out());
+  glBindBuffer(GL_ARRAY_BUFFER, out.cube_vbo_.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(CubeVertex)),
                vertices.data(), GL_STATIC_DRAW);
-  glGenBuffers(1, &out.cube_ebo_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, out.cube_ebo_);
+  glGenBuffers(1, out.cube_ebo_.out());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, out.cube_ebo_.get());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLushort)),
                indices.data(), GL_STATIC_DRAW);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex), nullptr);
@@ -56,40 +55,25 @@ BoxBatch BoxBatch::create() {
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex),
                         reinterpret_cast<const void*>(offsetof(CubeVertex, normal)));
   glEnableVertexAttribArray(1);
-  glGenBuffers(1, &out.instance_vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, out.instance_vbo_);
+  glGenBuffers(1, out.instance_vbo_.out());
+  glBindBuffer(GL_ARRAY_BUFFER, out.instance_vbo_.get());
   point_instance_attributes();
   glBindVertexArray(0);
   return out;
 }
 
 BoxBatch::~BoxBatch() {
-  if (vao_ == 0) return;
-  glDeleteVertexArrays(1, &vao_);
-  const GLuint buffers[] = {cube_vbo_, cube_ebo_, instance_vbo_};
+  const GLuint vao = vao_.get();
+  if (vao == 0) return;
+  glDeleteVertexArrays(1, &vao);
+  const GLuint buffers[] = {cube_vbo_.get(), cube_ebo_.get(), instance_vbo_.get()};
   glDeleteBuffers(3, buffers);
-}
-
-BoxBatch::BoxBatch(BoxBatch&& other) noexcept
-    : vao_(std::exchange(other.vao_, 0)),
-      cube_vbo_(std::exchange(other.cube_vbo_, 0)),
-      cube_ebo_(std::exchange(other.cube_ebo_, 0)),
-      instance_vbo_(std::exchange(other.instance_vbo_, 0)),
-      count_(std::exchange(other.count_, 0)) {}
-
-BoxBatch& BoxBatch::operator=(BoxBatch&& other) noexcept {
-  std::swap(vao_, other.vao_);
-  std::swap(cube_vbo_, other.cube_vbo_);
-  std::swap(cube_ebo_, other.cube_ebo_);
-  std::swap(instance_vbo_, other.instance_vbo_);
-  std::swap(count_, other.count_);
-  return *this;
 }
 
 void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye) {
   const std::vector<BoxInstance> instances = box_instances(boxes, eye);
   count_ = static_cast<GLsizei>(instances.size());
-  glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_.get());
   // A fresh store each frame, so the driver need not wait for the last frame's draws.
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(BoxInstance)),
                instances.data(), GL_STREAM_DRAW);
@@ -97,7 +81,7 @@ void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye) {
 
 void BoxBatch::draw() const {
   if (count_ == 0) return;
-  glBindVertexArray(vao_);
+  glBindVertexArray(vao_.get());
   glDrawElementsInstanced(GL_TRIANGLES, kCubeIndices, GL_UNSIGNED_SHORT, nullptr, count_);
 }
 

@@ -8,6 +8,7 @@
 
 #include "render/frame.hpp"
 #include "render/gl.hpp"
+#include "render/gl_name.hpp"
 
 namespace tumble::render {
 
@@ -16,8 +17,8 @@ class BoxBatch {
   BoxBatch() = default;  // no GL objects: for a renderer whose set-up failed
   static BoxBatch create();
   ~BoxBatch();
-  BoxBatch(BoxBatch&& other) noexcept;
-  BoxBatch& operator=(BoxBatch&& other) noexcept;
+  BoxBatch(BoxBatch&& other) noexcept = default;
+  BoxBatch& operator=(BoxBatch&& other) noexcept = default;
   BoxBatch(const BoxBatch&) = delete;
   BoxBatch& operator=(const BoxBatch&) = delete;
 
@@ -28,7 +29,7 @@ class BoxBatch {
   void draw() const;
 
  private:
-  GLuint vao_ = 0, cube_vbo_ = 0, cube_ebo_ = 0, instance_vbo_ = 0;
+  GlName vao_, cube_vbo_, cube_ebo_, instance_vbo_;
   GLsizei count_ = 0;  // boxes uploaded
 };
 

@@ -1,6 +1,6 @@
 #include "render/framebuffer.hpp"
 
-#include <utility>
+#include <string>
 
 namespace tumble::render {
 
@@ -8,17 +8,17 @@ Result<Framebuffer> Framebuffer::create(int width, int height, int samples) {
   Framebuffer out;
   out.width_ = width;
   out.height_ = height;
-  glGenFramebuffers(1, &out.framebuffer_);
-  glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer_);
-  const auto attach = [&](GLuint& renderbuffer, GLenum format, GLenum attachment) {
-    glGenRenderbuffers(1, &renderbuffer);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
+  glGenFramebuffers(1, out.framebuffer_.out());
+  glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer_.get());
+  const auto attach = [&](GlName& renderbuffer, GLenum format, GLenum attachment) {
+    glGenRenderbuffers(1, renderbuffer.out());
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer.get());
     if (samples > 1) {
       glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
     } else {
       glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
     }
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, renderbuffer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, renderbuffer.get());
   };
   attach(out.color_, GL_RGBA8, GL_COLOR_ATTACHMENT0);
   attach(out.depth_, GL_DEPTH_COMPONENT24, GL_DEPTH_ATTACHMENT);
@@ -33,30 +33,15 @@ Result<Framebuffer> Framebuffer::create(int width, int height, int samples) {
 }
 
 Framebuffer::~Framebuffer() {
-  if (framebuffer_ == 0) return;
-  glDeleteFramebuffers(1, &framebuffer_);
-  const GLuint renderbuffers[] = {color_, depth_};
+  const GLuint framebuffer = framebuffer_.get();
+  if (framebuffer == 0) return;
+  glDeleteFramebuffers(1, &framebuffer);
+  const GLuint renderbuffers[] = {color_.get(), depth_.get()};
   glDeleteRenderbuffers(2, renderbuffers);
 }
 
-Framebuffer::Framebuffer(Framebuffer&& other) noexcept
-    : framebuffer_(std::exchange(other.framebuffer_, 0)),
-      color_(std::exchange(other.color_, 0)),
-      depth_(std::exchange(other.depth_, 0)),
-      width_(other.width_),
-      height_(other.height_) {}
-
-Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
-  std::swap(framebuffer_, other.framebuffer_);
-  std::swap(color_, other.color_);
-  std::swap(depth_, other.depth_);
-  std::swap(width_, other.width_);
-  std::swap(height_, other.height_);
-  return *this;
-}
-
 void Framebuffer::copy_to(GLuint target, GLbitfield buffers) const {
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.get());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, buffers, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, target);

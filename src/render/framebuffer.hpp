@@ -9,6 +9,7 @@
 
 #include "common/result.hpp"
 #include "render/gl.hpp"
+#include "render/gl_name.hpp"
 
 namespace tumble::render {
 
@@ -18,19 +19,19 @@ class Framebuffer {
   // width × height pixels, `samples` per pixel (1 = no multisampling).
   static Result<Framebuffer> create(int width, int height, int samples);
   ~Framebuffer();
-  Framebuffer(Framebuffer&& other) noexcept;
-  Framebuffer& operator=(Framebuffer&& other) noexcept;
+  Framebuffer(Framebuffer&& other) noexcept = default;
+  Framebuffer& operator=(Framebuffer&& other) noexcept = default;
   Framebuffer(const Framebuffer&) = delete;
   Framebuffer& operator=(const Framebuffer&) = delete;
 
-  GLuint id() const { return framebuffer_; }
+  GLuint id() const { return framebuffer_.get(); }
   // Copies `buffers` (GL_COLOR_BUFFER_BIT, GL_DEPTH_BUFFER_BIT) into the framebuffer `target`
   // of the same size, resolving samples when `target` has one per pixel, and leaves `target`
   // bound.
   void copy_to(GLuint target, GLbitfield buffers) const;
 
  private:
-  GLuint framebuffer_ = 0, color_ = 0, depth_ = 0;
+  GlName framebuffer_, color_, depth_;
   int width_ = 0, height_ = 0;
 };
 

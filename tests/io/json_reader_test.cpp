@@ -46,6 +46,7 @@ TEST(JsonReader, RefusesWhatIsNotJsonNamingTheByte) {
   EXPECT_EQ(parse_json(R"({"a": 1,})").error(), "at byte 8: expected a key");
   EXPECT_EQ(parse_json(R"({"a" 1})").error(), "at byte 5: expected ':'");
   EXPECT_EQ(parse_json("[1, 2").error(), "at byte 5: expected ',' or ']'");
+  EXPECT_EQ(parse_json(R"({"a": 1 "b": 2})").error(), "at byte 8: expected ',' or '}'");
   EXPECT_EQ(parse_json("\"abc").error(), "at byte 4: expected '\"' to end the string");
   EXPECT_EQ(parse_json("{} x").error(), "at byte 3: expected the end of the text");
   EXPECT_EQ(parse_json("tru").error(), "at byte 0: expected true");

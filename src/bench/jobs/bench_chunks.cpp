@@ -41,15 +41,16 @@ double seconds(const timeval& time) {
   RunFigures figures;
   std::error_code ignored;
   fs::create_directories(folder, ignored);
-  const job::RenderResult result = job::render_scene(
-      job, folder, [] { return sys::interrupt_signal() != 0; }, [](std::int64_t) {});
+  job::RenderResult result;
+  const Result<void> rendered = job::render_scene(
+      job, folder, [] { return sys::interrupt_signal() != 0; }, [](std::int64_t) {}, result);
   figures.framing = result.framing_seconds;
   figures.renderer = result.renderer_seconds;
   figures.seek = result.seek_seconds;
   figures.seek_steps = result.seek_steps;
-  std::strncpy(figures.error, result.error.c_str(), sizeof figures.error - 1);
+  if (!rendered) std::strncpy(figures.error, rendered.error().c_str(), sizeof figures.error - 1);
   const bool sent = ::write(pipe_out, &figures, sizeof figures) == sizeof figures;
-  ::_exit(sent && result.error.empty() ? 0 : 1);
+  ::_exit(sent && rendered ? 0 : 1);
 }
 
 // One render of `job` in a process of its own, timed.

@@ -24,17 +24,21 @@ namespace fs = std::filesystem;
 using bench::Pile;
 using bench::PileRun;
 
-// The folder of --out, checked before a run that may take minutes: "" when it can be written.
-std::string folder_problem(const fs::path& folder) {
+// The folder of --out, checked before a run that may take minutes: an error unless it can be
+// written.
+Result<void> check_folder(const fs::path& folder) {
   std::error_code error;
   if (!fs::exists(folder, error)) {
-    return "--out: no folder " + folder.string() + " (create it first)";
+    return Error{"--out: no folder " + folder.string() + " (create it first)"};
   }
-  if (!fs::is_directory(folder, error)) return "--out: " + folder.string() + " is not a folder";
+  if (!fs::is_directory(folder, error)) {
+    return Error{"--out: " + folder.string() + " is not a folder"};
+  }
   // A file opened and dropped unrenamed: AtomicFile removes it again.
   const Result<io::AtomicFile> probe =
       io::AtomicFile::open((folder / ".tumble-write-test").string());
-  return probe ? "" : probe.error();
+  if (!probe) return Error{probe.error()};
+  return {};
 }
 
 // "0.5" for 0.5 s: 17 digits, so that contact_bench parses the double tumble has.
@@ -44,14 +48,9 @@ std::string exact(double value) {
   return text;
 }
 
-// Bullet's column, from contact_bench: "" in `error` when it ran whole.
-struct PeerColumn {
-  PileRun run;
-  std::string error;
-};
-
-PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, const Pile& pile,
-                    pipeline::Progress& progress) {
+// Bullet's column, from contact_bench; an error unless it ran whole.
+Result<PileRun> run_peer(const fs::path& peer, const BenchContactOptions& options, const Pile& pile,
+                         pipeline::Progress& progress) {
   bench::PileRunReader reader(pile);
   const Result<void> ended = sys::run_reading_lines(
       peer.string(),
@@ -62,15 +61,12 @@ PeerColumn run_peer(const fs::path& peer, const BenchContactOptions& options, co
         progress.update(pile.steps + static_cast<std::int64_t>(reader.run().step_ms.size()));
         return true;
       });
-  PeerColumn column{reader.run(), ""};
   if (!reader.error().empty()) {
-    column.error = peer.string() + " wrote what tumble cannot read: " + reader.error();
-  } else if (!ended) {
-    column.error = ended.error();
-  } else if (!reader.complete()) {
-    column.error = peer.string() + " ended before its run was whole";
+    return Error{peer.string() + " wrote what tumble cannot read: " + reader.error()};
   }
-  return column;
+  if (!ended) return Error{ended.error()};
+  if (!reader.complete()) return Error{peer.string() + " ended before its run was whole"};
+  return reader.run();
 }
 
 std::string engine_json(const PileRun& run, double dt) {
@@ -134,9 +130,11 @@ void write_csv(std::FILE* file, const Pile& pile, const PileRun& tumble, const P
   }
 }
 
-// Writes the JSON and the CSV, each whole or not at all, and lists them on `out`.
-bool write_files(const fs::path& folder, const BenchContactOptions& options, const Pile& pile,
-                 const PileRun& tumble, const PileRun& bullet, std::FILE* out, std::FILE* err) {
+// Writes the JSON and the CSV, each whole or not at all, and lists them on `out`. The error says
+// what failed of each, a line each ("tumble: " before the second, as main prints the first).
+Result<void> write_files(const fs::path& folder, const BenchContactOptions& options,
+                         const Pile& pile, const PileRun& tumble, const PileRun& bullet,
+                         std::FILE* out) {
   const fs::path json = folder / "contact_bench.json";
   const fs::path csv = folder / "contact_bench.csv";
   Result<io::AtomicFile> json_file = io::AtomicFile::open(json.string());
@@ -145,16 +143,14 @@ bool write_files(const fs::path& folder, const BenchContactOptions& options, con
   }
   Result<io::AtomicFile> csv_file = io::AtomicFile::open(csv.string());
   if (csv_file) write_csv(csv_file->stream(), pile, tumble, bullet);
-  bool ok = true;
+  std::string errors;
   for (Result<io::AtomicFile>* file : {&json_file, &csv_file}) {
     const Result<void> written = *file ? (*file)->commit() : Result<void>(Error{file->error()});
-    if (!written) {
-      std::fprintf(err, "tumble: %s\n", written.error().c_str());
-      ok = false;
-    }
+    if (!written) errors += (errors.empty() ? "" : "\ntumble: ") + written.error();
   }
-  if (ok) std::fprintf(out, "%s\n%s\n", json.c_str(), csv.c_str());
-  return ok;
+  if (!errors.empty()) return Error{errors};
+  std::fprintf(out, "%s\n%s\n", json.c_str(), csv.c_str());
+  return {};
 }
 
 }  // namespace
@@ -164,13 +160,11 @@ fs::path contact_bench_path() {
   return fs::read_symlink("/proc/self/exe", ignored).parent_path() / "contact_bench";
 }
 
-int run_bench_contact(const BenchContactOptions& options, std::FILE* out, std::FILE* err) {
+Result<ExitCode> run_bench_contact(const BenchContactOptions& options, std::FILE* out,
+                                   std::FILE* err) {
   const fs::path folder = options.out;
   if (!options.out.empty()) {
-    if (const std::string problem = folder_problem(folder); !problem.empty()) {
-      std::fprintf(err, "tumble: %s\n", problem.c_str());
-      return kExitBadInput;
-    }
+    if (const Result<void> usable = check_folder(folder); !usable) return Error{usable.error()};
   }
   const fs::path peer = contact_bench_path();
   const bool have_peer = ::access(peer.c_str(), X_OK) == 0;
@@ -192,25 +186,28 @@ int run_bench_contact(const BenchContactOptions& options, std::FILE* out, std::F
   runs.push_back(bench::run_pile_in_tumble(pile, [&](const PileRun& so_far) {
     progress.update(static_cast<std::int64_t>(so_far.step_ms.size()));
   }));
-  std::string peer_error;
+  Result<void> peer_ran = Result<void>::success();
   if (have_peer) {
-    PeerColumn bullet = run_peer(peer, options, pile, progress);
-    peer_error = bullet.error;
-    if (peer_error.empty()) runs.push_back(std::move(bullet.run));
+    Result<PileRun> bullet = run_peer(peer, options, pile, progress);
+    if (bullet) {
+      runs.push_back(std::move(bullet).value());
+    } else {
+      peer_ran = Error{bullet.error()};
+    }
   }
   progress.finish();
 
   bench::print_pile_table(out, runs, pile.dt);
-  if (!have_peer) return kExitBadInput;
-  if (!peer_error.empty()) {
-    std::fprintf(err,
-                 "tumble: bench contact: Bullet's column: %s; tumble's column is printed above, "
-                 "no files are written\n",
-                 peer_error.c_str());
-    return kExitBadInput;
+  if (!have_peer) return kExitBadInput;  // said before the run
+  if (!peer_ran) {
+    return Error{"bench contact: Bullet's column: " + peer_ran.error() +
+                 "; tumble's column is printed above, no files are written"};
   }
-  if (!options.out.empty() && !write_files(folder, options, pile, runs[0], runs[1], out, err)) {
-    return kExitBadInput;
+  if (!options.out.empty()) {
+    if (const Result<void> written = write_files(folder, options, pile, runs[0], runs[1], out);
+        !written) {
+      return Error{written.error()};
+    }
   }
   return kExitOk;
 }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/exit_codes.hpp"
+#include "common/result.hpp"
 
 namespace tumble::bench {
 
@@ -26,10 +27,12 @@ struct BenchContactOptions {
 // Where tumble looks for contact_bench: beside its own executable (/proc/self/exe).
 std::filesystem::path contact_bench_path();
 
-// Prints the table on `out`, progress and errors on `err`. Returns kExitOk with both columns (and
-// the files, if asked for), kExitBadInput when the folder of --out is missing or unwritable
-// (before running), when contact_bench is missing or fails (tumble's column is still printed;
-// no files are written), or when a file cannot be written.
-int run_bench_contact(const BenchContactOptions& options, std::FILE* out, std::FILE* err);
+// Prints the table on `out`, progress on `err`. Returns kExitOk with both columns (and the files,
+// if asked for), and kExitBadInput, having said so on `err` before the run, when contact_bench
+// is missing (tumble's column is still printed; no files are written). Fails when the folder of
+// --out is missing or unwritable (before running), when contact_bench fails (tumble's column is
+// still printed; no files are written), or when a file cannot be written.
+Result<ExitCode> run_bench_contact(const BenchContactOptions& options, std::FILE* out,
+                                   std::FILE* err);
 
 }  // namespace tumble::bench

@@ -50,28 +50,23 @@ std::string shell_quote(const std::string& text) {
 }
 
 // The table on `out` and in OUT/pipeline.md.
-int publish(const std::string& table, const BenchPipelineOptions& options, std::FILE* out,
-            std::FILE* err) {
+Result<ExitCode> publish(const std::string& table, const BenchPipelineOptions& options,
+                         std::FILE* out) {
   std::fputs(table.c_str(), out);
   const Result<void> written =
       io::write_file_atomically((fs::path(options.out) / "pipeline.md").string(), table);
-  if (!written) {
-    std::fprintf(err, "tumble: %s\n", written.error().c_str());
-    return kExitBadInput;
-  }
+  if (!written) return Error{written.error()};
   return kExitOk;
 }
 
 }  // namespace
 
-int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std::FILE* err) {
+Result<ExitCode> run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out,
+                                    std::FILE* err) {
   const Result<scene::Scene> loaded = options.scene_path.empty()
                                           ? scene::parse_scene(kBenchScene, "bench_pipeline.toml")
                                           : scene::load_scene_file(options.scene_path);
-  if (!loaded) {
-    std::fprintf(err, "tumble: %s\n", loaded.error().c_str());
-    return kExitBadInput;
-  }
+  if (!loaded) return Error{loaded.error()};
   // The benchmark's sizes, rate and length override the scene's, as `tumble render`'s do, and
   // are held to the same rules (render_job.hpp).
   job::RenderOptions overrides;
@@ -80,10 +75,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   overrides.duration = static_cast<double>(options.frames) / loaded->fps;
   if (options.msaa != 0) overrides.msaa = options.msaa;
   const Result<job::RenderJob> job = job::make_render_job(*loaded, overrides);
-  if (!job) {
-    std::fprintf(err, "tumble: %s\n", job.error().c_str());
-    return kExitBadInput;
-  }
+  if (!job) return Error{job.error()};
   const scene::Scene& scene = job->scene;
 
   // The frames and videos, written only to be timed, go to a hidden scratch folder beside the
@@ -92,22 +84,16 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
   sys::install_interrupt_handlers();
   const Result<io::StagedDirectory> scratch =
       io::StagedDirectory::create((fs::path(options.out) / "pipeline").string());
-  if (!scratch) {
-    std::fprintf(err, "tumble: %s\n", scratch.error().c_str());
-    return kExitBadInput;
-  }
+  if (!scratch) return Error{scratch.error()};
   const fs::path root = scratch->path();
   if (options.chunks > 0) {
     const Result<std::string> chunk_table = bench_chunks(*job, options.chunks, root, err);
     if (const int signal = sys::interrupt_signal()) {
       std::fprintf(err, "tumble: bench pipeline stopped by %s\n", sys::signal_name(signal));
-      return kExitInterrupted + signal;
+      return interrupted_by(signal);
     }
-    if (!chunk_table) {
-      std::fprintf(err, "tumble: %s\n", chunk_table.error().c_str());
-      return kExitBadInput;
-    }
-    return publish(*chunk_table, options, out, err);
+    if (!chunk_table) return Error{chunk_table.error()};
+    return publish(*chunk_table, options, out);
   }
   std::error_code error_code;
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -127,33 +113,30 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
     variant.serial = serial;
     variant.stills = false;  // the paths compared write frames and an MP4, nothing else
     std::fprintf(err, "bench: %s ...\n", name.c_str());
-    const job::RenderResult rendered = job::render_scene(
-        variant, directory, [] { return sys::interrupt_signal() != 0; }, [](std::int64_t) {});
+    job::RenderResult rendered;
+    const Result<void> ran = job::render_scene(
+        variant, directory, [] { return sys::interrupt_signal() != 0; }, [](std::int64_t) {},
+        rendered);
     result.name = name;
     result.seconds = rendered.pipeline.wall + rendered.finish_seconds;
     result.efficiency = rendered.pipeline.process_cpu / cores / rendered.pipeline.wall;
-    return rendered.error;
+    return ran;
   };
 
   std::vector<PathResult> results(4);
-  std::string error;
-  error = run("render_only", false, false, false, "fast", "veryfast", results[0]);
+  Result<void> ran = run("render_only", false, false, false, "fast", "veryfast", results[0]);
   results[0].how = "draw every frame, write nothing: the ceiling";
-  if (error.empty()) error = run("pipelined", false, true, true, "fast", "veryfast", results[1]);
+  if (ran) ran = run("pipelined", false, true, true, "fast", "veryfast", results[1]);
   results[1].how = "tumble render: PNG (zlib 1, no filter) and x264 veryfast on worker threads";
-  if (error.empty()) error = run("naive", true, true, true, "default", "medium", results[2]);
+  if (ran) ran = run("naive", true, true, true, "default", "medium", results[2]);
   results[2].how = "one thread: draw, libpng defaults, x264 medium in process, frame after frame";
-  if (error.empty())
-    error = run("png_then_ffmpeg", true, true, false, "default", "medium", results[3]);
+  if (ran) ran = run("png_then_ffmpeg", true, true, false, "default", "medium", results[3]);
   results[3].how = "one thread: draw, libpng defaults; then the ffmpeg program encodes the PNGs";
   if (const int signal = sys::interrupt_signal()) {
     std::fprintf(err, "tumble: bench pipeline stopped by %s\n", sys::signal_name(signal));
-    return kExitInterrupted + signal;
+    return interrupted_by(signal);
   }
-  if (!error.empty()) {
-    std::fprintf(err, "tumble: %s\n", error.c_str());
-    return kExitBadInput;
-  }
+  if (!ran) return Error{ran.error()};
 
   // The second half of the script most people write: ffmpeg stitching the PNG files.
   const fs::path stitched = root / "png_then_ffmpeg";
@@ -188,7 +171,7 @@ int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std:
                   r.how.c_str(), r.note.empty() ? "" : "; ", r.note.c_str());
     table << line;
   }
-  return publish(table.str(), options, out, err);
+  return publish(table.str(), options, out);
 }
 
 }  // namespace tumble::bench

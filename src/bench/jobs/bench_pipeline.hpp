@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <string>
 
+#include "common/exit_codes.hpp"
+#include "common/result.hpp"
+
 namespace tumble::bench {
 
 struct BenchPipelineOptions {
@@ -20,7 +23,9 @@ struct BenchPipelineOptions {
 };
 
 // Prints a table of frames/s per path and their ratios (or, with `chunks`, of the chunks' costs
-// against the whole render's) and writes it to OUT/pipeline.md; returns the process exit code.
-int run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out, std::FILE* err);
+// against the whole render's) and writes it to OUT/pipeline.md, with progress on `err`. Returns
+// kExitOk, or kExitInterrupted + N after saying it was stopped by signal N.
+Result<ExitCode> run_bench_pipeline(const BenchPipelineOptions& options, std::FILE* out,
+                                    std::FILE* err);
 
 }  // namespace tumble::bench
