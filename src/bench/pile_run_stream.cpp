@@ -105,7 +105,12 @@ bool PileRunReader::read_position(std::string_view values) {
   return true;
 }
 
-bool PileRunReader::read(std::string_view line) {
+Result<void> PileRunReader::read(std::string_view line) {
+  if (take(line)) return {};
+  return Error{error_};
+}
+
+bool PileRunReader::take(std::string_view line) {
   if (!error_.empty()) return false;
   ++line_number_;
   const auto [keyword, rest] = split_keyword(line);

@@ -22,6 +22,7 @@
 
 #include "bench/pile.hpp"
 #include "bench/pile_run.hpp"
+#include "common/result.hpp"
 
 namespace tumble::bench {
 
@@ -38,12 +39,11 @@ class PileRunReader {
  public:
   explicit PileRunReader(const Pile& pile) : pile_(pile) {}
 
-  // Takes one line without its '\n'. False, with error() saying why, when the line is not what
-  // the format allows next; every later call is then false too.
-  bool read(std::string_view line);
+  // Takes one line without its '\n': an error saying why ("line N: ...") when the line is not
+  // what the format allows next; every later call is then that error too.
+  Result<void> read(std::string_view line);
   // Whether the "end" line has been read, after all the rest, without an error.
   bool complete() const { return part_ == Part::done && error_.empty(); }
-  const std::string& error() const { return error_; }
   const PileRun& run() const { return run_; }  // what has been read so far
 
  private:
@@ -60,6 +60,7 @@ class PileRunReader {
     done
   };
 
+  bool take(std::string_view line);
   bool fail(const std::string& why);
   bool read_step(std::string_view values);
   bool read_position(std::string_view values);

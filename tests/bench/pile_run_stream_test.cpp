@@ -58,13 +58,13 @@ ReadBack read_back(const std::vector<std::string>& lines, const Pile& pile) {
   PileRunReader reader(pile);
   ReadBack out;
   for (const std::string& line : lines) {
-    if (!reader.read(line)) {
+    if (const Result<void> read = reader.read(line); !read) {
       out.all_read = false;
+      out.error = read.error();
       break;
     }
   }
   out.complete = reader.complete();
-  out.error = reader.error();
   out.run = reader.run();
   return out;
 }

@@ -52,17 +52,21 @@ std::string exact(double value) {
 Result<PileRun> run_peer(const fs::path& peer, const BenchContactOptions& options, const Pile& pile,
                          pipeline::Progress& progress) {
   bench::PileRunReader reader(pile);
+  std::string unreadable;  // why a line could not be read
   const Result<void> ended = sys::run_reading_lines(
       peer.string(),
       {"--engine", "bullet", "--stream", "--bodies", std::to_string(options.bodies), "--seconds",
        exact(options.seconds), "--seed", std::to_string(options.seed)},
       [&](std::string_view line) {
-        if (!reader.read(line)) return false;
+        if (const Result<void> read = reader.read(line); !read) {
+          unreadable = read.error();
+          return false;
+        }
         progress.update(pile.steps + static_cast<std::int64_t>(reader.run().step_ms.size()));
         return true;
       });
-  if (!reader.error().empty()) {
-    return Error{peer.string() + " wrote what tumble cannot read: " + reader.error()};
+  if (!unreadable.empty()) {
+    return Error{peer.string() + " wrote what tumble cannot read: " + unreadable};
   }
   if (!ended) return Error{ended.error()};
   if (!reader.complete()) return Error{peer.string() + " ended before its run was whole"};
