@@ -45,7 +45,7 @@ struct Box {
 struct World {
   std::vector<Box> boxes;
   std::vector<Plane> planes;
-  double dt = kDt;  // s
+  double dt = kDt;                                                                  // s
   double restitution_threshold = physics::ContactSettings{}.restitution_threshold;  // m/s
 };
 

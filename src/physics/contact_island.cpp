@@ -84,7 +84,8 @@ double project_block(std::span<ProjectedPose> poses, std::span<const PositionPoi
   BlockLcp lcp;
   lcp.set_matrix(matrix);
   Eigen::VectorXd push = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-  if (!lcp.solve(separations, 1e-3 * std::abs(deepest), push)) return project_pass(poses, positions);
+  if (!lcp.solve(separations, 1e-3 * std::abs(deepest), push))
+    return project_pass(poses, positions);
   std::vector<Vec3> moves(poses.size(), Vec3::Zero()), turns(poses.size(), Vec3::Zero());
   for (std::size_t i = 0; i < n; ++i) {
     const double p = push(static_cast<Eigen::Index>(i));  // position-level impulse (kg m)
@@ -191,11 +192,17 @@ int solver_passes(std::size_t points) {
   return static_cast<int>(std::clamp<std::size_t>(budget, kFewestPasses, kMostPasses));
 }
 
+Vec3 mean_arm(std::span<const Vec3> arms) {
+  Vec3 centre = Vec3::Zero();
+  if (arms.empty()) return centre;
+  for (const Vec3& arm : arms) centre += arm;
+  return centre / static_cast<double>(arms.size());
+}
+
 PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
   PatchShape out;
   if (arms.empty()) return out;
-  for (const Vec3& arm : arms) out.centre_arm += arm;
-  out.centre_arm /= static_cast<double>(arms.size());
+  out.centre_arm = mean_arm(arms);
   out.twist_arm = patch_twist_arm(arms, normal, out.centre_arm);
   return out;
 }

@@ -137,6 +137,8 @@ struct PatchShape {
   double twist_arm = 0.0;          // m
 };
 PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal);
+// The centre alone (m): patch_shape's centre_arm, to the bit.
+Vec3 mean_arm(std::span<const Vec3> arms);
 
 // Rotates q by the rotation vector `angle` (rad, world frame): exp(angle / 2) q.
 Quat rotated(const Quat& q, const Vec3& angle);

@@ -156,8 +156,9 @@ void write(const View& view, const RowSlots& at, ContactRows& rows) {
                       .normal = normal,
                       .base = point.base});
   }
+  // The twist arm once, from a's arms: the patch has one shape, whichever body it is seen from.
   const PatchShape shape_a = patch_shape({arms_a, count}, normal);
-  const PatchShape shape_b = body_b ? patch_shape({arms_b, count}, normal) : PatchShape{};
+  const PatchShape shape_b = {.centre_arm = body_b ? mean_arm({arms_b, count}) : Vec3::Zero()};
   Vec3 tangents[2];
   tangent_basis(normal, tangents);
   FrictionPatch patch{.a = a,

@@ -29,7 +29,8 @@ SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
 }
 
 // The normal row of one point; returns the change of its impulse (N s).
-double solve_normal(std::span<SolverBody> bodies, ContactConstraint& c) {
+[[gnu::always_inline]] inline double solve_normal(std::span<SolverBody> bodies,
+                                                  ContactConstraint& c) {
   SolverBody& a = bodies[c.a];
   SolverBody* b = second(bodies, c);
   const double accumulated =
@@ -129,7 +130,8 @@ double block_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> poi
   k = 0;
   for (const FrictionPatch& f : patches) {
     for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
-      largest_change = std::max(largest_change, std::abs(rows.impulses[k] - points[i].normal_impulse));
+      largest_change =
+          std::max(largest_change, std::abs(rows.impulses[k] - points[i].normal_impulse));
       points[i].normal_impulse = rows.impulses[k];
     }
   }

@@ -120,9 +120,11 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
   }
   // The contact points of each group (by its root): whether the block solve takes it.
   std::vector<std::size_t> points(count, 0);
-  for (const auto& [i, j] : pairs) points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
+  for (const auto& [i, j] : pairs)
+    points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
   for (std::size_t i = 0; i < count; ++i) {
-    if (on_plane[i]) points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
+    if (on_plane[i])
+      points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
   }
   const auto by_rows = [&](std::size_t i) {
     return points[root_of(parent, i)] > physics::kMostBlockRows;
@@ -136,14 +138,14 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
     const double heavy = std::max(models[i].constants.mass, models[j].constants.mass);
     const double light = std::min(models[i].constants.mass, models[j].constants.mass);
     if (heavy > kMostMassRatio * light) {
-      out.push_back({{i, j},
-                     formatted("touch with a mass ratio of %.3g (%.3g kg on %.3g kg) %s, beyond "
-                               "the %.0f it holds there: the lighter body is pressed into what "
-                               "holds it or squeezed out (a column of 14 cubes with a top 50 "
-                               "times as heavy collapses); bring the masses within %.0fx of each "
-                               "other or split the group",
-                               heavy / light, heavy, light, why.c_str(), kMostMassRatio,
-                               kMostMassRatio)});
+      out.push_back(
+          {{i, j},
+           formatted("touch with a mass ratio of %.3g (%.3g kg on %.3g kg) %s, beyond "
+                     "the %.0f it holds there: the lighter body is pressed into what "
+                     "holds it or squeezed out (a column of 14 cubes with a top 50 "
+                     "times as heavy collapses); bring the masses within %.0fx of each "
+                     "other or split the group",
+                     heavy / light, heavy, light, why.c_str(), kMostMassRatio, kMostMassRatio)});
     }
   }
   for (std::size_t i = 0; i < count; ++i) {
@@ -152,14 +154,13 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
     const double edge = 2.0 * models[i].half_size.minCoeff();             // m
     const double per_step = 0.5 * acceleration * dt * dt;                 // m
     if (per_step > edge) {
-      out.push_back(
-          {{i},
-           formatted("its constant load (%.3g m/s²) moves it %.3g m in one step of "
-                     "%.3g s, more than its smallest edge (%.3g m), %s: one step's "
-                     "contact cannot carry it and it ends its steps inside what holds "
-                     "it; use dt <= %.3g s",
-                     acceleration, per_step, dt, edge, why.c_str(),
-                     std::sqrt(2.0 * edge / acceleration))});
+      out.push_back({{i},
+                     formatted("its constant load (%.3g m/s²) moves it %.3g m in one step of "
+                               "%.3g s, more than its smallest edge (%.3g m), %s: one step's "
+                               "contact cannot carry it and it ends its steps inside what holds "
+                               "it; use dt <= %.3g s",
+                               acceleration, per_step, dt, edge, why.c_str(),
+                               std::sqrt(2.0 * edge / acceleration))});
     }
   }
   for (std::size_t i = 0; i < count; ++i) {

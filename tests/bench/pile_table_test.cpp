@@ -53,10 +53,9 @@ TEST(PileTable, OneColumnPerEngineAndTheRatiosOfTwo) {
   EXPECT_NE(table.find("boxes out of the bin            2                     2"),
             std::string::npos)
       << table;
-  EXPECT_NE(
-      table.find("tumble / bullet, mean ms/step: 0.50 (cpu 0.50); median ms/step: 0.50 (cpu "
-                 "0.50), at peak contacts: 0.50\n"),
-      std::string::npos)
+  EXPECT_NE(table.find("tumble / bullet, mean ms/step: 0.50 (cpu 0.50); median ms/step: 0.50 (cpu "
+                       "0.50), at peak contacts: 0.50\n"),
+            std::string::npos)
       << table;
 }
 

@@ -60,7 +60,8 @@ TEST_F(CheckCommand, PrintsTheWarningsOfAValidSceneAndExitsZero) {
 // Two cubes alone are one block and hold it: no warning.
 TEST_F(CheckCommand, NamesTheBodiesOfAMassRatioTheContactCannotHold) {
   const auto scene_of = [](int light_cubes) {
-    std::string text = "duration = 1.0\n[[planes]]\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, 0.0]\n";
+    std::string text =
+        "duration = 1.0\n[[planes]]\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, 0.0]\n";
     for (int i = 0; i <= light_cubes; ++i) {
       const bool top = i == light_cubes;
       text += "[[bodies]]\nname = \"" + (top ? std::string("heavy") : "cube" + std::to_string(i)) +

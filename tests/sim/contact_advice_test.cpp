@@ -69,11 +69,14 @@ TEST(ContactAdvice, IsQuietWhenTheStepsAreHeldToTheirEnergyAndThatCubeRests) {
 
 TEST(ContactAdvice, IsQuietWithoutBounceOrForPenaltyContact) {
   const std::vector<physics::Plane> floor = {physics::Plane{}};
-  EXPECT_TRUE(check_contact(cube(0.0), floor, {.restitution_threshold = 0.01}, physics::Integrator::rk4, kStep).empty());
-  EXPECT_TRUE(check_contact(
-                  cube(0.5), floor,
-                  {.method = physics::ContactMethod::penalty, .restitution_threshold = 0.01}, physics::Integrator::rk4, kStep)
+  EXPECT_TRUE(check_contact(cube(0.0), floor, {.restitution_threshold = 0.01},
+                            physics::Integrator::rk4, kStep)
                   .empty());
+  EXPECT_TRUE(
+      check_contact(cube(0.5), floor,
+                    {.method = physics::ContactMethod::penalty, .restitution_threshold = 0.01},
+                    physics::Integrator::rk4, kStep)
+          .empty());
 }
 
 // A column of unit cubes of these masses (kg) on the floor, the first at the bottom; `push` (N)
@@ -154,11 +157,15 @@ TEST(ContactAdvice, TellsABouncingBodyWithNoGravityToBounceAtAnySpeed) {
   physics::BodyModel weightless = cube(1.0);
   weightless.forces.clear();
   const std::vector<physics::Plane> floor = {physics::Plane{}};
-  const std::vector<std::string> advice = check_contact(weightless, floor, {}, physics::Integrator::rk4, kStep);
+  const std::vector<std::string> advice =
+      check_contact(weightless, floor, {}, physics::Integrator::rk4, kStep);
   ASSERT_EQ(advice.size(), 1u);
   EXPECT_NE(advice[0].find("restitution_threshold = 0"), std::string::npos) << advice[0];
-  EXPECT_TRUE(check_contact(weightless, floor, {.restitution_threshold = 0.0}, physics::Integrator::rk4, kStep).empty());
-  EXPECT_TRUE(check_contact(cube(1.0), floor, {}, physics::Integrator::rk4, kStep).empty());  // under gravity: quiet
+  EXPECT_TRUE(check_contact(weightless, floor, {.restitution_threshold = 0.0},
+                            physics::Integrator::rk4, kStep)
+                  .empty());
+  EXPECT_TRUE(check_contact(cube(1.0), floor, {}, physics::Integrator::rk4, kStep)
+                  .empty());  // under gravity: quiet
 }
 
 TEST(ContactWorldAdvice, SaysNothingForPenaltyContact) {

@@ -107,8 +107,7 @@ std::string report_json(const BenchContactOptions& options, const Pile& pile, co
          ", \"dt\": " + io::json_number(pile.dt) + ", \"steps\": " + std::to_string(pile.steps) +
          "},\n  \"tumble\": " + engine_json(tumble, pile.dt) +
          ",\n  \"bullet\": " + engine_json(bullet, pile.dt) +
-         ",\n  \"tumble_over_bullet\": {\"mean_ms_per_step\": " +
-         io::json_number(ratios.mean_ms) +
+         ",\n  \"tumble_over_bullet\": {\"mean_ms_per_step\": " + io::json_number(ratios.mean_ms) +
          ", \"mean_cpu_ms_per_step\": " + io::json_number(ratios.mean_cpu_ms) +
          ", \"median_ms_per_step\": " + io::json_number(ratios.median_ms) +
          ", \"median_cpu_ms_per_step\": " + io::json_number(ratios.median_cpu_ms) +
