@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 namespace tumble::bench {
 namespace {
@@ -95,28 +94,40 @@ AccuracySettings quick_accuracy_settings() {
           .timing = {.samples = 1, .min_sample_seconds = 0.0}};
 }
 
-// The cases named in `names`, in that order, or all of `all` when none are named.
+namespace {
+
+// The cases named in `names`, in that order, or all of `all` when none are named; false, with
+// the unknown name in `unknown`, for a name that is no case.
 template <typename Case, typename Find>
-std::vector<const Case*> select_cases(const std::vector<std::string>& names,
-                                      const std::vector<Case>& all, Find find, const char* kind) {
-  std::vector<const Case*> out;
+bool select_cases(const std::vector<std::string>& names, const std::vector<Case>& all, Find find,
+                  std::vector<const Case*>& out, std::string& unknown) {
   if (names.empty()) {
     for (const Case& c : all) out.push_back(&c);
   }
   for (const std::string& name : names) {
     const Case* c = find(name);
-    if (!c) throw std::invalid_argument(std::string("no ") + kind + " named " + name);
+    if (!c) {
+      unknown = name;
+      return false;
+    }
     out.push_back(c);
   }
+  return true;
+}
+
+}  // namespace
+
+Result<AccuracySelection> select_accuracy_cases(const AccuracySettings& settings) {
+  AccuracySelection out;
+  std::string unknown;
+  if (!select_cases(settings.cases, hard_cases(), find_hard_case, out.hard, unknown)) {
+    return Error{"no hard case named " + unknown};
+  }
+  if (!select_cases(settings.contact_cases, contact_cases(), find_contact_case, out.contact,
+                    unknown)) {
+    return Error{"no contact case named " + unknown};
+  }
   return out;
-}
-
-std::vector<const HardCase*> selected_hard_cases(const AccuracySettings& settings) {
-  return select_cases(settings.cases, hard_cases(), find_hard_case, "hard case");
-}
-
-std::vector<const ContactCase*> selected_contact_cases(const AccuracySettings& settings) {
-  return select_cases(settings.contact_cases, contact_cases(), find_contact_case, "contact case");
 }
 
 AccuracyRow measure_accuracy(const HardCase& c, physics::Integrator integrator, double dt,
@@ -214,14 +225,14 @@ AccuracyRow measure_contact_accuracy(const ContactCase& c, physics::ContactMetho
   return row;
 }
 
-std::vector<AccuracyRow> measure_accuracy(
+Result<std::vector<AccuracyRow>> measure_accuracy(
     const AccuracySettings& settings,
     const std::function<void(const std::string&, physics::Integrator)>& on_start) {
   // Both lists first, so that an unknown name fails before anything runs.
-  const std::vector<const HardCase*> hard = selected_hard_cases(settings);
-  const std::vector<const ContactCase*> contact = selected_contact_cases(settings);
+  const Result<AccuracySelection> selection = select_accuracy_cases(settings);
+  if (!selection) return Error{selection.error()};
   std::vector<AccuracyRow> rows;
-  for (const HardCase* c : hard) {
+  for (const HardCase* c : selection->hard) {
     for (const physics::Integrator integrator : physics::kAllIntegrators) {
       if (on_start) on_start(c->name, integrator);
       for (const double dt : settings.steps) {
@@ -229,7 +240,7 @@ std::vector<AccuracyRow> measure_accuracy(
       }
     }
   }
-  for (const ContactCase* c : contact) {
+  for (const ContactCase* c : selection->contact) {
     for (const physics::ContactMethod method :
          {physics::ContactMethod::impulse, physics::ContactMethod::penalty}) {
       for (const physics::Integrator integrator : physics::kAllIntegrators) {

@@ -11,6 +11,7 @@
 
 #include "bench/contact_cases.hpp"
 #include "bench/hard_cases.hpp"
+#include "common/result.hpp"
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
 
@@ -41,9 +42,13 @@ struct AccuracySettings {
 // coarsest steps, one sample.
 AccuracySettings quick_accuracy_settings();
 
-// The cases a sweep runs, in sweep order; throws std::invalid_argument for an unknown name.
-std::vector<const HardCase*> selected_hard_cases(const AccuracySettings& settings);
-std::vector<const ContactCase*> selected_contact_cases(const AccuracySettings& settings);
+// The cases a sweep runs, in sweep order: those the settings name, or every one when they name
+// none; an error naming a case that does not exist.
+struct AccuracySelection {
+  std::vector<const HardCase*> hard;
+  std::vector<const ContactCase*> contact;
+};
+Result<AccuracySelection> select_accuracy_cases(const AccuracySettings& settings);
 
 // One integrator on one case at one step.
 struct AccuracyRow {
@@ -91,8 +96,8 @@ AccuracyRow measure_contact_accuracy(const ContactCase& contact_case, physics::C
 // The whole sweep: the hard cases, then the contact cases with impulse and then penalty contact,
 // each integrator by integrator (in kAllIntegrators order), step by step. `on_start` (optional)
 // is called before each run of the steps, with its name ("article_cube", "bounce (penalty
-// contact") and integrator, for progress.
-std::vector<AccuracyRow> measure_accuracy(
+// contact") and integrator, for progress. An unknown case name is an error before anything runs.
+Result<std::vector<AccuracyRow>> measure_accuracy(
     const AccuracySettings& settings,
     const std::function<void(const std::string& run, physics::Integrator)>& on_start = {});
 

@@ -121,9 +121,9 @@ std::string error_cell(const AccuracyRow& row, double value) {
   return row.blew_up ? "blew up" : printed("%.2e", value);
 }
 
-void write_hard_case_tables(std::FILE* out, const bench::AccuracySettings& settings,
+void write_hard_case_tables(std::FILE* out, const bench::AccuracySelection& selection,
                             const std::vector<AccuracyRow>& rows) {
-  for (const HardCase* c : bench::selected_hard_cases(settings)) {
+  for (const HardCase* c : selection.hard) {
     const bench::Reference& reference = c->reference();
     std::fprintf(out, "\n## %s\n\n%s.\n\nReference: %s.\n\n", c->name.c_str(), c->summary.c_str(),
                  reference_note(reference).c_str());
@@ -145,9 +145,9 @@ void write_hard_case_tables(std::FILE* out, const bench::AccuracySettings& setti
   }
 }
 
-void write_contact_case_tables(std::FILE* out, const bench::AccuracySettings& settings,
+void write_contact_case_tables(std::FILE* out, const bench::AccuracySelection& selection,
                                const std::vector<AccuracyRow>& rows) {
-  for (const bench::ContactCase* c : bench::selected_contact_cases(settings)) {
+  for (const bench::ContactCase* c : selection.contact) {
     std::fprintf(out,
                  "\n## %s\n\n%s.\n\nError: %s. Penalty contact: k = %.3g N/m and "
                  "c = %.4g N s/m per corner, the damping for the case's restitution on a flat "
@@ -173,7 +173,8 @@ void write_contact_case_tables(std::FILE* out, const bench::AccuracySettings& se
   }
 }
 
-void write_markdown(std::FILE* out, const bench::AccuracySettings& settings, bool quick,
+void write_markdown(std::FILE* out, const bench::AccuracySettings& settings,
+                    const bench::AccuracySelection& selection, bool quick,
                     const std::vector<AccuracyRow>& rows) {
   std::fprintf(out,
                "# Speed against error\n\n"
@@ -193,8 +194,8 @@ void write_markdown(std::FILE* out, const bench::AccuracySettings& settings, boo
                ", in a build with assertions (timings are not representative)",
 #endif
                quick ? " --quick" : "");
-  write_hard_case_tables(out, settings, rows);
-  write_contact_case_tables(out, settings, rows);
+  write_hard_case_tables(out, selection, rows);
+  write_contact_case_tables(out, selection, rows);
 }
 
 // gnuplot's single-quoted strings double a quote to escape it.
@@ -212,12 +213,12 @@ struct Panel {
   std::vector<std::string> contacts;
 };
 
-std::vector<Panel> panels(const bench::AccuracySettings& settings) {
+std::vector<Panel> panels(const bench::AccuracySelection& selection) {
   std::vector<Panel> out;
-  for (const HardCase* c : bench::selected_hard_cases(settings)) {
+  for (const HardCase* c : selection.hard) {
     out.push_back({c->name, headline_label(*c), {"none"}});
   }
-  for (const bench::ContactCase* c : bench::selected_contact_cases(settings)) {
+  for (const bench::ContactCase* c : selection.contact) {
     out.push_back({c->name, c->measures.front().label, {"impulse", "penalty"}});
   }
   return out;
@@ -254,10 +255,10 @@ std::vector<std::string> panel_series(const Panel& panel, const std::vector<Accu
   return series;
 }
 
-Plot make_plot(const bench::AccuracySettings& settings, const std::vector<AccuracyRow>& rows,
-               const std::string& png_name) {
+Plot make_plot(const bench::AccuracySettings& settings, const bench::AccuracySelection& selection,
+               const std::vector<AccuracyRow>& rows, const std::string& png_name) {
   Plot plot;
-  const std::vector<Panel> all = panels(settings);
+  const std::vector<Panel> all = panels(selection);
   const int columns = all.size() >= 5 ? 3 : 2;
   const int panel_rows = static_cast<int>((all.size() + columns - 1) / columns);
   plot.script = printed(
@@ -334,11 +335,12 @@ CommandResult run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE*
 
   const bench::AccuracySettings settings =
       options.quick ? bench::quick_accuracy_settings() : bench::AccuracySettings{};
-  const std::size_t runs = (bench::selected_hard_cases(settings).size() +
-                            2 * bench::selected_contact_cases(settings).size()) *
+  const Result<bench::AccuracySelection> selection = bench::select_accuracy_cases(settings);
+  if (!selection) return Error{selection.error()};
+  const std::size_t runs = (selection->hard.size() + 2 * selection->contact.size()) *
                            std::size(physics::kAllIntegrators);
   std::size_t started = 0;
-  const std::vector<AccuracyRow> rows = bench::measure_accuracy(
+  const Result<std::vector<AccuracyRow>> measured = bench::measure_accuracy(
       settings, [&](const std::string& run, physics::Integrator integrator) {
         std::fprintf(
             err, "tumble: bench accuracy: [%zu/%zu] %s with %s at dt = %s ... %s s\n", ++started,
@@ -346,15 +348,18 @@ CommandResult run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE*
             step_label(settings.steps.front()).c_str(), step_label(settings.steps.back()).c_str());
         std::fflush(err);
       });
+  if (!measured) return Error{measured.error()};
+  const std::vector<AccuracyRow>& rows = *measured;
 
   bool ok = write_file(
       directory / "accuracy.csv", [&](std::FILE* f) { write_csv(f, rows); }, err);
   ok = write_file(
            directory / "accuracy.md",
-           [&](std::FILE* f) { write_markdown(f, settings, options.quick, rows); }, err) &&
+           [&](std::FILE* f) { write_markdown(f, settings, *selection, options.quick, rows); },
+           err) &&
        ok;
   const std::string png_temporary = printed("accuracy.png.tmp-%d", static_cast<int>(::getpid()));
-  const Plot plot = make_plot(settings, rows, png_temporary);
+  const Plot plot = make_plot(settings, *selection, rows, png_temporary);
   ok = write_file(
            directory / "accuracy.dat", [&](std::FILE* f) { std::fputs(plot.data.c_str(), f); },
            err) &&

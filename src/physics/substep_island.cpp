@@ -102,12 +102,7 @@ void substep_island(const StepContext& context, int substeps,
   // An island of two bodies or more has its normal rows solved as one block where it is small
   // (physics/normal_block.hpp): mass ratios and symmetric impacts.
   const bool by_block = n > 1;
-  scratch.rotations.resize(n);
-  scratch.free_velocity.resize(n);
-  scratch.free_angular_velocity.resize(n);
-  scratch.free_angular_momentum.resize(n);
-  scratch.gravity.resize(n);
-  scratch.falls_freely.resize(n);
+  scratch.size_for(n);
   for (std::size_t i = 0; i < n; ++i) {
     scratch.falls_freely[i] = gravity_only(*bodies[i].model, scratch.gravity[i]);
   }

@@ -64,6 +64,16 @@ struct SubstepScratch {
   std::vector<Vec3> free_velocity, free_angular_velocity, free_angular_momentum;  // per body
   std::vector<Vec3> gravity;       // per body: its gravity, when that is all that acts on it
   std::vector<char> falls_freely;  // per body: whether gravity is all that acts on it
+
+  // Every per-body list sized to `bodies`.
+  void size_for(std::size_t bodies) {
+    rotations.resize(bodies);
+    free_velocity.resize(bodies);
+    free_angular_velocity.resize(bodies);
+    free_angular_momentum.resize(bodies);
+    gravity.resize(bodies);
+    falls_freely.resize(bodies);
+  }
 };
 
 struct StepContext;

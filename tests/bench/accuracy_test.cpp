@@ -67,8 +67,10 @@ TEST(Accuracy, Rk4OnTheArticleCube) {
 TEST(Accuracy, TheQuickSweepCoversItsCasesIntegratorsAndStepsInOrder) {
   const AccuracySettings quick = quick_accuracy_settings();
   std::vector<std::string> started;
-  const std::vector<AccuracyRow> rows =
+  const Result<std::vector<AccuracyRow>> measured =
       measure_accuracy(quick, [&](const std::string& run, Integrator) { started.push_back(run); });
+  ASSERT_TRUE(measured) << measured.error();
+  const std::vector<AccuracyRow>& rows = *measured;
   const std::size_t integrators = std::size(physics::kAllIntegrators);
   const std::size_t runs = (quick.cases.size() + 2 * quick.contact_cases.size()) * integrators;
   ASSERT_EQ(rows.size(), runs * quick.steps.size());
@@ -93,8 +95,13 @@ TEST(Accuracy, TheQuickSweepCoversItsCasesIntegratorsAndStepsInOrder) {
     expect_rows(name, "impulse");
     expect_rows(name, "penalty");
   }
-  EXPECT_THROW(measure_accuracy({.cases = {"no_such_case"}}), std::invalid_argument);
-  EXPECT_THROW(measure_accuracy({.contact_cases = {"no_such_case"}}), std::invalid_argument);
+  const Result<std::vector<AccuracyRow>> unknown = measure_accuracy({.cases = {"no_such_case"}});
+  ASSERT_FALSE(unknown);
+  EXPECT_EQ(unknown.error(), "no hard case named no_such_case");
+  const Result<std::vector<AccuracyRow>> unknown_contact =
+      measure_accuracy({.contact_cases = {"no_such_case"}});
+  ASSERT_FALSE(unknown_contact);
+  EXPECT_EQ(unknown_contact.error(), "no contact case named no_such_case");
 }
 
 // A hard case's headline error is named and repeated in `error`.
