@@ -108,6 +108,31 @@ struct BlockRows {
     impulses.resize(rows.size());
     return true;
   }
+
+  // Solves the rows, point i's normal speed at least least_of(i) (m/s), and writes the impulses
+  // back to the points; returns the largest change of one (N s), or -1 when the block did not
+  // solve (and nothing changed).
+  template <class Least>
+  double solve(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
+               std::span<const FrictionPatch> patches, Least least_of) {
+    std::size_t k = 0;
+    for (const FrictionPatch& f : patches) {
+      for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
+        least[k] = least_of(i);
+        impulses[k] = points[i].normal_impulse;
+      }
+    }
+    if (!block.solve(bodies, points, least, impulses)) return -1.0;
+    double largest_change = 0.0;
+    k = 0;
+    for (const FrictionPatch& f : patches) {
+      for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
+        largest_change = std::max(largest_change, std::abs(impulses[k] - points[i].normal_impulse));
+        points[i].normal_impulse = impulses[k];
+      }
+    }
+    return largest_change;
+  }
 };
 
 // One pass of the inelastic solve with the normal rows as one block (each point's speed at
@@ -116,25 +141,9 @@ struct BlockRows {
 // accumulated impulse.
 double block_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
                   std::span<FrictionPatch> patches, BlockRows& rows) {
-  std::size_t k = 0;
-  for (const FrictionPatch& f : patches) {
-    for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
-      rows.least[k] = -points[i].speculative_speed;
-      rows.impulses[k] = points[i].normal_impulse;
-    }
-  }
-  if (!rows.block.solve(bodies, points, rows.least, rows.impulses)) {
-    return inelastic_pass(bodies, points, patches);
-  }
-  double largest_change = 0.0;
-  k = 0;
-  for (const FrictionPatch& f : patches) {
-    for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
-      largest_change =
-          std::max(largest_change, std::abs(rows.impulses[k] - points[i].normal_impulse));
-      points[i].normal_impulse = rows.impulses[k];
-    }
-  }
+  double largest_change = rows.solve(bodies, points, patches,
+                                     [&](std::uint32_t i) { return -points[i].speculative_speed; });
+  if (largest_change < 0.0) return inelastic_pass(bodies, points, patches);
   for (FrictionPatch& f : patches) {
     largest_change = std::max(largest_change, solve_friction(bodies, points, f));
   }
@@ -265,24 +274,12 @@ void substep_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> poi
                   std::span<const double> separations, std::span<FrictionPatch> patches, double h,
                   bool by_block) {
   BlockRows block;
-  if (by_block && block.build(bodies, points, patches)) {
-    std::size_t k = 0;
-    for (const FrictionPatch& f : patches) {
-      for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
-        block.least[k] = separations[i] > 0.0 ? -separations[i] / h : 0.0;
-        block.impulses[k] = points[i].normal_impulse;
-      }
-    }
-    if (block.block.solve(bodies, points, block.least, block.impulses)) {
-      k = 0;
-      for (const FrictionPatch& f : patches) {
-        for (std::uint32_t i = f.first; i < f.first + f.count; ++i, ++k) {
-          points[i].normal_impulse = block.impulses[k];
-        }
-      }
-      for (FrictionPatch& f : patches) solve_friction(bodies, points, f);
-      return;
-    }
+  if (by_block && block.build(bodies, points, patches) &&
+      block.solve(bodies, points, patches, [&](std::uint32_t i) {
+        return separations[i] > 0.0 ? -separations[i] / h : 0.0;
+      }) >= 0.0) {
+    for (FrictionPatch& f : patches) solve_friction(bodies, points, f);
+    return;
   }
   for (FrictionPatch& f : patches) {
     for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {

@@ -5,7 +5,8 @@
 // every integrator would, without running one), warm-starts and solves the contacts
 // once, moves the poses with the solved velocities, projects them out of what is still inside
 // (one non-linear Gauss-Seidel pass: it moves no momentum), and solves once more at the moved
-// poses (the relax pass). The bounce comes once, after the sub-steps.
+// poses (the relax pass). Impacts are resolved at once before each sub-step's solve
+// (resolve_impacts, contact_solver.hpp), from the velocities before its warm start.
 //
 // Why sub-steps rather than passes: a pile is a long chain of contacts, and a pass of the solver
 // moves an impulse one contact along it. Passes converge within a step but leave what they
