@@ -295,10 +295,15 @@ void resolve_impacts(std::span<SolverBody> bodies, std::span<ContactConstraint> 
   NormalBlock block;
   std::vector<std::uint32_t> rows;
   std::vector<double> least, impulses;
-  for (int round = 0; round < kImpactRounds; ++round) {
+  // The bodies an impact moved in the last round (every body before the first): only their
+  // manifolds can approach anew.
+  std::vector<char> moved(bodies.size(), 1), moving(bodies.size(), 0);
+  const int most_rounds = kImpactRounds + 2 * static_cast<int>(patches.size());
+  for (int round = 0; round < most_rounds; ++round) {
     bool any = false;
     for (const FrictionPatch& f : patches) {
       if (f.count == 0 || points[f.first].restitution <= 0.0) continue;
+      if (!moved[f.a] && (f.b == kStatic || !moved[f.b])) continue;
       rows.clear();
       least.clear();
       bool impact = false;
@@ -315,9 +320,13 @@ void resolve_impacts(std::span<SolverBody> bodies, std::span<ContactConstraint> 
       impulses.assign(rows.size(), 0.0);
       if (!block.solve(bodies, points, least, impulses)) continue;
       for (std::size_t k = 0; k < rows.size(); ++k) points[rows[k]].impact_impulse += impulses[k];
+      moving[f.a] = 1;
+      if (f.b != kStatic) moving[f.b] = 1;
       any = true;
     }
     if (!any) return;
+    moved.swap(moving);
+    std::fill(moving.begin(), moving.end(), 0);
   }
 }
 

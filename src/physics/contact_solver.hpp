@@ -179,8 +179,9 @@ void substep_pass(std::span<SolverBody> bodies, std::span<ContactConstraint> poi
 // `threshold` (m/s) and closes within the (sub-)step (its speed below -allowed[i], the approach it
 // may have while still apart: speculative_speed, or a sub-step's separation over its length) is
 // solved alone, its closing points as one block (physics/normal_block.hpp) to leave each at
-// -e × the speed it approached at, now. Manifolds are taken in turn, in rounds, until none
-// approaches so (up to kImpactRounds): an impact passes on along a row of touching bodies as a
+// -e × the speed it approached at, now. Manifolds are taken in turn, in rounds, each round after
+// the first taking only the manifolds of bodies the last one moved, until none approaches so (up
+// to kImpactRounds + 2 × the manifolds): an impact passes on along a row of touching bodies as a
 // momentum pulse, pair by pair (Newton's cradle: the struck end leaves with the striker's speed,
 // where one solve of every contact at once gives the three cubes -v/3, 2v/3, 2v/3; edyn's
 // restitution pass, xissburg/edyn#49, walks the contact graph so). Each impact's impulse and

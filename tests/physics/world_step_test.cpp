@@ -63,6 +63,36 @@ TEST(WorldStep, ElasticHeadOnCollisionOfEqualCubesExchangesTheirVelocities) {
   EXPECT_GE(b.position().x() - a.position().x(), 1.0 - 1e-9);
 }
 
+// Newton's cradle of ten touching cubes (e = 1, μ = 0, no gravity), struck at either end: the
+// impact passes on pair by pair, so the far cube leaves with the striker's speed and every other
+// cube stays still, whichever way the bodies' order runs against the pulse (impacts are taken
+// again only where the last ones moved bodies, as often as the row needs).
+TEST(WorldStep, ACradleOfTenCubesPassesTheImpactToTheFarEndFromEitherEnd) {
+  const BodyModel cube = box_model(Vec3::Ones(), 1.0, {.restitution = 1.0, .friction = 0.0}, false);
+  for (const double way : {1.0, -1.0}) {
+    std::vector<BodyModel> models(11, cube);
+    std::vector<BodyState> start;
+    for (int k = 0; k < 10; ++k) start.push_back(at_rest(cube, Vec3(k, 0.0, 0.0)));
+    const double from = way > 0.0 ? -1.5 : 10.5;  // m
+    const BodyState striker = at_rest(cube, Vec3(from, 0.0, 0.0), Vec3(2.0 * way, 0.0, 0.0));
+    if (way > 0.0) {
+      start.insert(start.begin(), striker);
+    } else {
+      start.push_back(striker);
+    }
+    sim::Simulation world(models, start, Integrator::rk4, kStep);
+    while (world.time() < 3.0) world.step();
+    const std::vector<BodyState>& end = world.current();
+    const std::size_t far = way > 0.0 ? 10 : 0;
+    EXPECT_NEAR(end[far].velocity().x(), 2.0 * way, 1e-8) << way;
+    for (std::size_t k = 0; k < end.size(); ++k) {
+      if (k != far) {
+        EXPECT_LT(end[k].velocity().norm(), 1e-8) << way << " cube " << k;
+      }
+    }
+  }
+}
+
 // The stacks below measure the solver itself: they run awake, for a sleeping stack holds still
 // whatever the solver would do.
 constexpr ContactSettings kAwake{.sleep = false};
