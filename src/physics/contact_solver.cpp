@@ -13,17 +13,6 @@ namespace {
 constexpr int kBounceIterations = 100;
 constexpr double kBounceTolerance = 1e-13;
 
-// An impulse (N s) along the direction on a, and its opposite on b.
-[[gnu::always_inline]] inline void push(const ImpulseDirection& d, SolverBody& a, SolverBody* b,
-                                        double impulse) {
-  const Vec3 linear = impulse * d.linear;
-  a.velocity += a.inverse_mass * linear;
-  a.angular_velocity += impulse * d.turn_a;
-  if (!b) return;
-  b->velocity -= b->inverse_mass * linear;
-  b->angular_velocity -= impulse * d.turn_b;
-}
-
 SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
   return c.b == kStatic ? nullptr : &bodies[c.b];
 }

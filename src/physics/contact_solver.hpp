@@ -132,6 +132,17 @@ void tangent_basis(const Vec3& normal, Vec3 (&out)[2]);
   return out;
 }
 
+// An impulse (N s) along the direction on a, and its opposite on b (none for a static shape).
+[[gnu::always_inline]] inline void push(const ImpulseDirection& d, SolverBody& a, SolverBody* b,
+                                        double impulse) {
+  const Vec3 linear = impulse * d.linear;
+  a.velocity += a.inverse_mass * linear;
+  a.angular_velocity += impulse * d.turn_a;
+  if (!b) return;
+  b->velocity -= b->inverse_mass * linear;
+  b->angular_velocity -= impulse * d.turn_b;
+}
+
 // What a solve is asked for.
 struct SolveSettings {
   int iterations = 10;  // the most passes over all points

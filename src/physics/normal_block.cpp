@@ -40,17 +40,6 @@ double coupling(const BlockRow& i, const BlockRow& j, std::span<const double> in
   return out;
 }
 
-// An impulse (N s) along the point's normal on a, and its opposite on b.
-void push(std::span<SolverBody> bodies, const ContactConstraint& c, double impulse) {
-  SolverBody& a = bodies[c.a];
-  a.velocity += (impulse * a.inverse_mass) * c.normal.linear;
-  a.angular_velocity += impulse * c.normal.turn_a;
-  if (c.b == kStatic) return;
-  SolverBody& b = bodies[c.b];
-  b.velocity -= (impulse * b.inverse_mass) * c.normal.linear;
-  b.angular_velocity -= impulse * c.normal.turn_b;
-}
-
 // Changes of the guess allowed per row before a solve gives up.
 constexpr int kPivotsPerRow = 8;
 
@@ -158,7 +147,8 @@ bool NormalBlock::solve(std::span<SolverBody> bodies, std::span<const ContactCon
   if (!lcp_.solve(offset_, 1e-10 * scale + 1e-14, solved_)) return false;
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    push(bodies, points[rows_[k]], solved_(i) - impulses[k]);
+    const ContactConstraint& c = points[rows_[k]];
+    push(c.normal, bodies[c.a], c.b == kStatic ? nullptr : &bodies[c.b], solved_(i) - impulses[k]);
     impulses[k] = solved_(i);
   }
   return true;
