@@ -22,6 +22,7 @@
 #include "bench/jobs/bench_contact.hpp"
 #include "bench/jobs/bench_pipeline.hpp"
 #include "cli/options.hpp"
+#include "common/printed.hpp"
 #include "io/atomic_file.hpp"
 #include "scene/limits.hpp"
 
@@ -33,13 +34,6 @@ namespace {
 namespace fs = std::filesystem;
 using bench::AccuracyRow;
 using bench::HardCase;
-
-std::string printed(const char* format, auto... values) {
-  const int size = std::snprintf(nullptr, 0, format, values...);
-  std::string text(static_cast<std::size_t>(std::max(size, 0)), '\0');
-  std::snprintf(text.data(), text.size() + 1, format, values...);
-  return text;
-}
 
 // "1/60" for the benchmarked steps, the plain number otherwise.
 std::string step_label(double dt) {

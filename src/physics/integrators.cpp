@@ -1,8 +1,11 @@
 #include "physics/integrators.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <variant>
+#include <vector>
 
 #include "physics/free_rigid_body.hpp"
 
@@ -17,6 +20,11 @@ struct Derivative {
   Vec3 torque = Vec3::Zero();    // N m
 };
 
+void add_to(Wrench& sum, const Wrench& more) {
+  sum.force += more.force;
+  sum.torque += more.torque;
+}
+
 // primary + derivative * h, as a raw (not yet normalised) primary state.
 PrimaryState advanced(const PrimaryState& in, const Derivative& rate, double h) {
   PrimaryState out = in;
@@ -27,8 +35,11 @@ PrimaryState advanced(const PrimaryState& in, const Derivative& rate, double h) 
   return out;
 }
 
-Derivative derivative_at(const BodyModel& model, const BodyState& state, double t) {
-  const Wrench wrench = total_wrench(model.forces, model.constants, state, t);
+// `extra`, when given, is a wrench from outside the body's own laws (Coupling) added to theirs.
+Derivative derivative_at(const BodyModel& model, const BodyState& state, double t,
+                         const Wrench* extra = nullptr) {
+  Wrench wrench = total_wrench(model.forces, model.constants, state, t);
+  if (extra) add_to(wrench, *extra);
   return {.velocity = state.velocity(),
           .force = wrench.force,
           .spin = state.spin(),
@@ -41,14 +52,28 @@ BodyState euler_step(const BodyModel& model, const BodyState& in, double t, doub
 
 // Kick the momenta with forces from the start of the step, then drift the pose with the new
 // velocities (semi-implicit Euler).
-BodyState symplectic_euler_step(const BodyModel& model, const BodyState& in, double t, double dt) {
-  const Wrench wrench = total_wrench(model.forces, model.constants, in, t);
+BodyState symplectic_euler_step(const BodyModel& model, const BodyState& in, double t, double dt,
+                                const Wrench* extra = nullptr) {
+  Wrench wrench = total_wrench(model.forces, model.constants, in, t);
+  if (extra) add_to(wrench, *extra);
   PrimaryState kicked = in.primary();
   kicked.momentum += dt * wrench.force;
   kicked.angular_momentum += dt * wrench.torque;
   const BodyState mid(kicked, model.constants);
   return BodyState(advanced(kicked, {.velocity = mid.velocity(), .spin = mid.spin()}, dt),
                    model.constants);
+}
+
+// RK4's weighted mean of its four stages' derivatives.
+Derivative rk4_combined(const Derivative& a, const Derivative& b, const Derivative& c,
+                        const Derivative& d) {
+  Derivative out;
+  out.velocity = (a.velocity + 2.0 * (b.velocity + c.velocity) + d.velocity) / 6.0;
+  out.force = (a.force + 2.0 * (b.force + c.force) + d.force) / 6.0;
+  out.spin.coeffs() =
+      (a.spin.coeffs() + 2.0 * (b.spin.coeffs() + c.spin.coeffs()) + d.spin.coeffs()) / 6.0;
+  out.torque = (a.torque + 2.0 * (b.torque + c.torque) + d.torque) / 6.0;
+  return out;
 }
 
 // Fiedler's RK4: each stage state is recalculated (and so its quaternion normalised) before
@@ -62,13 +87,7 @@ BodyState rk4_step(const BodyModel& model, const BodyState& in, double t, double
   const Derivative b = stage(a, 0.5 * dt);
   const Derivative c = stage(b, 0.5 * dt);
   const Derivative d = stage(c, dt);
-  Derivative combined;
-  combined.velocity = (a.velocity + 2.0 * (b.velocity + c.velocity) + d.velocity) / 6.0;
-  combined.force = (a.force + 2.0 * (b.force + c.force) + d.force) / 6.0;
-  combined.spin.coeffs() =
-      (a.spin.coeffs() + 2.0 * (b.spin.coeffs() + c.spin.coeffs()) + d.spin.coeffs()) / 6.0;
-  combined.torque = (a.torque + 2.0 * (b.torque + c.torque) + d.torque) / 6.0;
-  return BodyState(advanced(in.primary(), combined, dt), model.constants);
+  return BodyState(advanced(in.primary(), rk4_combined(a, b, c, d), dt), model.constants);
 }
 
 // ---- Splitting: symmetric compositions of exact sub-flows ----------------------------------
@@ -125,7 +144,8 @@ Vector6 phi1_times(const Matrix6& z, const Vector6& w) {
 // of dy/dt = W(y), y = (p, L), W affine with pose and time frozen, is
 // y(h) = y₀ + ∫₀ʰ e^{J s} ds W(y₀) = y₀ + φ₁(J h) W(y₀) h. J is read off the laws themselves by
 // six probes: their differences are exact for an affine W.
-PrimaryState coupled_kick(const BodyModel& model, const BodyState& in, double t, double h) {
+PrimaryState coupled_kick(const BodyModel& model, const BodyState& in, double t, double h,
+                          const Wrench* extra) {
   const auto wrench_vector = [&](const BodyState& state) {
     const Wrench w = total_wrench(model.forces, model.constants, state, t);
     return as_vector(w.force, w.torque);
@@ -146,7 +166,9 @@ PrimaryState coupled_kick(const BodyModel& model, const BodyState& in, double t,
     jacobian_step.col(i) =
         (wrench_vector(BodyState(shifted, model.constants)) - base) * (h / probe);
   }
-  const Vector6 change = phi1_times(jacobian_step, base * h);
+  // A wrench from outside (Coupling) is held over the kick: it adds to W(y₀), not to J.
+  const Vector6 held = extra ? base + as_vector(extra->force, extra->torque) : base;
+  const Vector6 change = phi1_times(jacobian_step, held * h);
   PrimaryState out = in.primary();
   out.momentum += change.head<3>();
   out.angular_momentum += change.tail<3>();
@@ -166,9 +188,12 @@ PrimaryState coupled_kick(const BodyModel& model, const BodyState& in, double t,
 // the method is first order on penalty contact (measured 1.0 for splitting and splitting4 on a
 // resting cube's bounce, against 4.0 for rk4); sim/penalty_modes models that kick for the stability
 // advisor.
-PrimaryState kick(const BodyModel& model, const BodyState& in, double t, double h) {
+// A wrench from outside the body's laws (`extra`, Coupling) is held over the kick likewise.
+PrimaryState kick(const BodyModel& model, const BodyState& in, double t, double h,
+                  const Wrench* extra = nullptr) {
   const BodyConstants& constants = model.constants;
-  Wrench fixed;                  // the laws that ignore the momenta (N, N m)
+  Wrench fixed;  // the laws that ignore the momenta (N, N m)
+  if (extra) fixed = *extra;
   double linear_damping = 0.0;   // Σ c over LinearDamping (N s/m)
   double angular_damping = 0.0;  // Σ c over AngularDamping (N m s)
   for (const ForceLaw& law : model.forces) {
@@ -178,7 +203,7 @@ PrimaryState kick(const BodyModel& model, const BodyState& in, double t, double 
       angular_damping += damping->coefficient;
     } else if (const auto* spring = std::get_if<Spring>(&law);
                spring && spring->damping != 0.0 && acts_at(*spring, t)) {
-      return coupled_kick(model, in, t, h);
+      return coupled_kick(model, in, t, h, extra);
     } else {
       const Wrench w = evaluate(law, constants, in, t);
       fixed.force += w.force;
@@ -213,34 +238,55 @@ PrimaryState drift(const BodyModel& model, PrimaryState state, double h) {
   return state;
 }
 
-// kick(k₀ dt) drift(d₀ dt) kick(k₁ dt) … drift(d_{n−1} dt) kick(k_n dt); forces are evaluated at
-// the time the drifts have reached.
-template <std::size_t Drifts>
-BodyState compose(const BodyModel& model, const BodyState& in, double t, double dt,
-                  const std::array<double, Drifts + 1>& kicks,
-                  const std::array<double, Drifts>& drifts) {
-  BodyState state = in;
-  double elapsed = 0.0;  // fraction of dt
-  for (std::size_t i = 0; i < Drifts; ++i) {
-    const PrimaryState kicked = kick(model, state, t + elapsed * dt, kicks[i] * dt);
-    state = BodyState(drift(model, kicked, drifts[i] * dt), model.constants);
-    elapsed += drifts[i];
-  }
-  return BodyState(kick(model, state, t + dt, kicks[Drifts] * dt), model.constants);
-}
+// A symmetric composition kick(k₀ dt) drift(d₀ dt) kick(k₁ dt) … drift(d_{n−1} dt) kick(k_n dt).
+struct Composition {
+  int drifts = 1;
+  std::array<double, 4> kicks = {};
+  std::array<double, 3> drifts_by = {};
+};
 
-BodyState splitting_step(const BodyModel& model, const BodyState& in, double t, double dt) {
-  return compose<1>(model, in, t, dt, {0.5, 0.5}, {1.0});
-}
-
-// Yoshida 1990's triple jump S(γ₁h) S(γ₂h) S(γ₁h) with 2γ₁³ + γ₂³ = 0, 2γ₁ + γ₂ = 1; the kicks
-// that meet between two Strang steps are merged (both are exact flows of the same frozen field).
-BodyState splitting4_step(const BodyModel& model, const BodyState& in, double t, double dt) {
+// Strang's kick(dt/2) drift(dt) kick(dt/2) for splitting; for splitting4, Yoshida 1990's triple
+// jump S(γ₁h) S(γ₂h) S(γ₁h) with 2γ₁³ + γ₂³ = 0, 2γ₁ + γ₂ = 1, the kicks that meet between two
+// Strang steps merged (both are exact flows of the same frozen field).
+Composition composition(Integrator integrator) {
+  if (integrator == Integrator::splitting)
+    return {.drifts = 1, .kicks = {0.5, 0.5}, .drifts_by = {1.0}};
   const double outer = 1.0 / (2.0 - std::cbrt(2.0));
   const double inner = 1.0 - 2.0 * outer;
-  return compose<3>(model, in, t, dt,
-                    {0.5 * outer, 0.5 * (outer + inner), 0.5 * (outer + inner), 0.5 * outer},
-                    {outer, inner, outer});
+  return {.drifts = 3,
+          .kicks = {0.5 * outer, 0.5 * (outer + inner), 0.5 * (outer + inner), 0.5 * outer},
+          .drifts_by = {outer, inner, outer}};
+}
+
+// The composition over every body of `states` together, in place; forces are evaluated at the
+// time the drifts have reached. `outside(states, time)` gives each body's wrench from outside
+// its laws at the start of each kick (held over it), or nullptr for none.
+template <typename Outside>
+void compose(const Composition& c, std::span<const BodyModel> models, std::span<BodyState> states,
+             double t, double dt, const Outside& outside) {
+  double elapsed = 0.0;  // fraction of dt
+  for (int i = 0; i <= c.drifts; ++i) {
+    const double time = i == c.drifts ? t + dt : t + elapsed * dt;
+    const Wrench* extra = outside(std::span<const BodyState>(states), time);
+    for (std::size_t j = 0; j < states.size(); ++j) {
+      const BodyModel& model = models[j];
+      const PrimaryState kicked =
+          kick(model, states[j], time, c.kicks[i] * dt, extra ? &extra[j] : nullptr);
+      states[j] = i == c.drifts
+                      ? BodyState(kicked, model.constants)
+                      : BodyState(drift(model, kicked, c.drifts_by[i] * dt), model.constants);
+    }
+    if (i < c.drifts) elapsed += c.drifts_by[i];
+  }
+}
+
+BodyState splitting_step(Integrator integrator, const BodyModel& model, const BodyState& in,
+                         double t, double dt) {
+  BodyState state = in;
+  compose(composition(integrator), std::span<const BodyModel>(&model, 1),
+          std::span<BodyState>(&state, 1), t, dt,
+          [](std::span<const BodyState>, double) -> const Wrench* { return nullptr; });
+  return state;
 }
 
 }  // namespace
@@ -278,11 +324,70 @@ BodyState step(Integrator integrator, const BodyModel& model, const BodyState& s
     case Integrator::rk4:
       return rk4_step(model, state, t, dt);
     case Integrator::splitting:
-      return splitting_step(model, state, t, dt);
     case Integrator::splitting4:
-      return splitting4_step(model, state, t, dt);
+      return splitting_step(integrator, model, state, t, dt);
   }
   return state;
+}
+
+void step_coupled(Integrator integrator, std::span<const BodyModel> models,
+                  std::span<const BodyState> in, double t, double dt, const Coupling& coupling,
+                  std::span<BodyState> out) {
+  const std::size_t count = models.size();
+  std::vector<Wrench> extra(count);
+  const auto outside = [&](std::span<const BodyState> states, double time) -> const Wrench* {
+    std::fill(extra.begin(), extra.end(), Wrench{});
+    coupling.add(states, time, extra);
+    return extra.data();
+  };
+  switch (integrator) {
+    case Integrator::euler:
+      outside(in, t);
+      for (std::size_t i = 0; i < count; ++i) {
+        out[i] =
+            BodyState(advanced(in[i].primary(), derivative_at(models[i], in[i], t, &extra[i]), dt),
+                      models[i].constants);
+      }
+      return;
+    case Integrator::symplectic_euler:
+      outside(in, t);
+      for (std::size_t i = 0; i < count; ++i) {
+        out[i] = symplectic_euler_step(models[i], in[i], t, dt, &extra[i]);
+      }
+      return;
+    case Integrator::rk4: {
+      // Each stage over every body before the next, the outside wrenches from the stage's states.
+      std::array<std::vector<Derivative>, 4> rates;
+      const auto rates_at = [&](std::span<const BodyState> states, double time,
+                                std::vector<Derivative>& into) {
+        outside(states, time);
+        into.resize(count);
+        for (std::size_t i = 0; i < count; ++i) {
+          into[i] = derivative_at(models[i], states[i], time, &extra[i]);
+        }
+      };
+      rates_at(in, t, rates[0]);
+      for (int stage = 1; stage < 4; ++stage) {
+        const double h = stage == 3 ? dt : 0.5 * dt;
+        for (std::size_t i = 0; i < count; ++i) {
+          out[i] =
+              BodyState(advanced(in[i].primary(), rates[stage - 1][i], h), models[i].constants);
+        }
+        rates_at(out, t + h, rates[stage]);
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        const Derivative combined =
+            rk4_combined(rates[0][i], rates[1][i], rates[2][i], rates[3][i]);
+        out[i] = BodyState(advanced(in[i].primary(), combined, dt), models[i].constants);
+      }
+      return;
+    }
+    case Integrator::splitting:
+    case Integrator::splitting4:
+      std::copy(in.begin(), in.end(), out.begin());
+      compose(composition(integrator), models, out, t, dt, outside);
+      return;
+  }
 }
 
 }  // namespace tumble::physics

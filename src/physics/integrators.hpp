@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -58,5 +59,24 @@ std::optional<Integrator> integrator_from_name(std::string_view name);
 // Advances `state` from time t to t + dt (s).
 BodyState step(Integrator integrator, const BodyModel& model, const BodyState& state, double t,
                double dt);
+
+// Forces that act between bodies, so that one body's depends on others' states (penalty contact
+// between bodies, physics/penalty_pairs.hpp).
+class Coupling {
+ public:
+  virtual ~Coupling() = default;
+  // Adds to wrenches[i] the force and torque on body i when the bodies are in `states` at time t.
+  virtual void add(std::span<const BodyState> states, double t,
+                   std::span<Wrench> wrenches) const = 0;
+};
+
+// Advances every body together from t to t + dt (s) into `out` (as many as `models` and `in`):
+// each as `step` would alone, with `coupling`'s wrenches added to its laws' wherever the
+// integrator evaluates them: at the start (euler, symplectic_euler), at every stage from that
+// stage's states of all bodies (rk4), or at the start of every kick and held over it as a
+// PenaltyContact is (splitting, splitting4).
+void step_coupled(Integrator integrator, std::span<const BodyModel> models,
+                  std::span<const BodyState> in, double t, double dt, const Coupling& coupling,
+                  std::span<BodyState> out);
 
 }  // namespace tumble::physics

@@ -133,11 +133,9 @@ physics::ContactSettings read_contact_settings(TableReader& in) {
 }
 
 void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
-  // Only impulse contact acts between bodies (penalty contact is planes only, so far).
-  if (!scene.physics.contact.collide_bodies ||
-      scene.physics.contact.method != physics::ContactMethod::impulse) {
-    return;
-  }
+  // Both methods act between bodies: impulse contact would throw overlapping bodies apart, and
+  // penalty contact's springs would start compressed by the overlap.
+  if (!scene.physics.contact.collide_bodies) return;
   const toml::array& bodies = *root.table().get("bodies")->as_array();
   // Sorted along x by the lower end of each bounding sphere, so that only neighbours are tested:
   // a scene of a thousand boxes is checked in milliseconds.

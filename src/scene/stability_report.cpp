@@ -48,7 +48,8 @@ std::vector<std::string> stability_warnings(const scene::Scene& scene) {
     initial.push_back(scene::initial_state(body));
   }
   for (const sim::BodiesAdvice& advice :
-       sim::check_contact_world(models, initial, planes, scene.physics.contact, scene.physics.dt)) {
+       sim::check_contact_world(models, initial, planes, scene.physics.contact,
+                                scene.physics.integrator, scene.physics.dt)) {
     lines.push_back(names_of(scene, advice.bodies) + ": " + advice.message);
   }
   return lines;

@@ -3,11 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <variant>
 
+#include "common/printed.hpp"
 #include "physics/box_box.hpp"
 #include "physics/contact_island.hpp"
 #include "physics/normal_block.hpp"
+#include "physics/world_step.hpp"
+#include "sim/stability.hpp"
 
 namespace tumble::sim {
 
@@ -67,12 +72,16 @@ physics::Vec3 constant_acceleration(const physics::BodyModel& model) {
   return total;
 }
 
-double gravity_of(const physics::BodyModel& model) {
-  physics::Vec3 total = physics::Vec3::Zero();
+physics::Vec3 constant_gravity(const physics::BodyModel& model) {
+  physics::Vec3 total = physics::Vec3::Zero();  // m/s²
   for (const physics::ForceLaw& law : model.forces) {
     if (const auto* g = std::get_if<physics::Gravity>(&law)) total += g->acceleration;
   }
-  return total.norm();
+  return total;
+}
+
+double gravity_of(const physics::BodyModel& model) {
+  return constant_gravity(model).norm();
 }
 
 // The root of `i` in a union-find forest, with path halving.
@@ -81,55 +90,64 @@ std::size_t root_of(std::vector<std::size_t>& parent, std::size_t i) {
   return i;
 }
 
-std::string formatted(const char* format, auto... values) {
-  char text[400];
-  std::snprintf(text, sizeof text, format, values...);
-  return text;
-}
-
 }  // namespace
 
-std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyModel>& models,
-                                              const std::vector<physics::BodyState>& initial,
-                                              const std::vector<physics::Plane>& planes,
-                                              const physics::ContactSettings& settings, double dt) {
-  std::vector<BodiesAdvice> out;
-  if (settings.method != physics::ContactMethod::impulse) return out;
+TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
+                                  const std::vector<physics::BodyState>& initial,
+                                  const std::vector<physics::Plane>& planes,
+                                  const physics::ContactSettings& settings) {
   const std::size_t count = models.size();
-  std::vector<bool> on_plane(count, false), touches(count, false);
-  std::vector<std::size_t> parent(count);
+  TouchingAtStart out;
+  out.on_plane.assign(count, false);
+  out.touches.assign(count, false);
+  out.group.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
-    parent[i] = i;
+    out.group[i] = i;
     for (const physics::Plane& plane : planes) {
       if (physics::closest_corner_separation(initial[i], models[i].half_size, plane) < kTouching) {
-        on_plane[i] = touches[i] = true;
+        out.on_plane[i] = out.touches[i] = true;
       }
     }
   }
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // touching at the start
   for (std::size_t i = 0; i < count; ++i) {
     for (std::size_t j = i + 1; j < count && settings.collide_bodies; ++j) {
       if (!models[i].collides || !models[j].collides) continue;
       const physics::BoxPose a{initial[i].position(), initial[i].rotation(), models[i].half_size};
       const physics::BoxPose b{initial[j].position(), initial[j].rotation(), models[j].half_size};
       if (physics::box_box_axis(a, b).separation >= kTouching) continue;
-      touches[i] = touches[j] = true;
-      parent[root_of(parent, i)] = root_of(parent, j);
-      pairs.emplace_back(i, j);
+      out.touches[i] = out.touches[j] = true;
+      out.group[root_of(out.group, i)] = root_of(out.group, j);
+      out.pairs.emplace_back(i, j);
     }
   }
+  for (std::size_t i = 0; i < count; ++i) out.group[i] = root_of(out.group, i);
+  return out;
+}
+
+std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyModel>& models,
+                                              const std::vector<physics::BodyState>& initial,
+                                              const std::vector<physics::Plane>& planes,
+                                              const physics::ContactSettings& settings,
+                                              physics::Integrator integrator, double dt) {
+  if (settings.method == physics::ContactMethod::penalty) {
+    return check_penalty_pairs(models, initial, planes, settings, integrator, dt);
+  }
+  std::vector<BodiesAdvice> out;
+  const std::size_t count = models.size();
+  const TouchingAtStart touching = touching_at_start(models, initial, planes, settings);
+  const std::vector<bool>& on_plane = touching.on_plane;
+  const std::vector<bool>& touches = touching.touches;
+  const std::vector<std::pair<std::size_t, std::size_t>>& pairs = touching.pairs;
+  const std::vector<std::size_t>& group = touching.group;
   // The contact points of each group (by its root): whether the block solve takes it.
   std::vector<std::size_t> points(count, 0);
   for (const auto& [i, j] : pairs)
-    points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
+    points[group[i]] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
   for (std::size_t i = 0; i < count; ++i) {
-    if (on_plane[i])
-      points[root_of(parent, i)] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
+    if (on_plane[i]) points[group[i]] += static_cast<std::size_t>(physics::kMaxManifoldPoints);
   }
-  const auto by_rows = [&](std::size_t i) {
-    return points[root_of(parent, i)] > physics::kMostBlockRows;
-  };
-  const std::string why = formatted(
+  const auto by_rows = [&](std::size_t i) { return points[group[i]] > physics::kMostBlockRows; };
+  const std::string why = printed(
       "in a group of touching bodies with more than %zu contact points, which the contact solver "
       "solves one point at a time",
       physics::kMostBlockRows);
@@ -140,12 +158,12 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
     if (heavy > kMostMassRatio * light) {
       out.push_back(
           {{i, j},
-           formatted("touch with a mass ratio of %.3g (%.3g kg on %.3g kg) %s, beyond "
-                     "the %.0f it holds there: the lighter body is pressed into what "
-                     "holds it or squeezed out (a column of 14 cubes with a top 50 "
-                     "times as heavy collapses); bring the masses within %.0fx of each "
-                     "other or split the group",
-                     heavy / light, heavy, light, why.c_str(), kMostMassRatio, kMostMassRatio)});
+           printed("touch with a mass ratio of %.3g (%.3g kg on %.3g kg) %s, beyond "
+                   "the %.0f it holds there: the lighter body is pressed into what "
+                   "holds it or squeezed out (a column of 14 cubes with a top 50 "
+                   "times as heavy collapses); bring the masses within %.0fx of each "
+                   "other or split the group",
+                   heavy / light, heavy, light, why.c_str(), kMostMassRatio, kMostMassRatio)});
     }
   }
   for (std::size_t i = 0; i < count; ++i) {
@@ -155,35 +173,169 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
     const double per_step = 0.5 * acceleration * dt * dt;                 // m
     if (per_step > edge) {
       out.push_back({{i},
-                     formatted("its constant load (%.3g m/s²) moves it %.3g m in one step of "
-                               "%.3g s, more than its smallest edge (%.3g m), %s: one step's "
-                               "contact cannot carry it and it ends its steps inside what holds "
-                               "it; use dt <= %.3g s",
-                               acceleration, per_step, dt, edge, why.c_str(),
-                               std::sqrt(2.0 * edge / acceleration))});
+                     printed("its constant load (%.3g m/s²) moves it %.3g m in one step of "
+                             "%.3g s, more than its smallest edge (%.3g m), %s: one step's "
+                             "contact cannot carry it and it ends its steps inside what holds "
+                             "it; use dt <= %.3g s",
+                             acceleration, per_step, dt, edge, why.c_str(),
+                             std::sqrt(2.0 * edge / acceleration))});
     }
   }
   for (std::size_t i = 0; i < count; ++i) {
-    if (root_of(parent, i) != i || !by_rows(i)) continue;
+    if (group[i] != i || !by_rows(i)) continue;
     std::vector<std::size_t> stack;
     bool grounded = false;
     double gravity = 0.0;  // m/s²
     for (std::size_t j = 0; j < count; ++j) {
-      if (root_of(parent, j) != i) continue;
+      if (group[j] != i) continue;
       stack.push_back(j);
       grounded = grounded || on_plane[j];
       gravity = std::max(gravity, gravity_of(models[j]));
     }
     const double sink = gravity * dt * dt;  // m
     if (stack.size() < 3 || !grounded || sink <= kMostStackSink) continue;
-    out.push_back({stack, formatted("a stack of %zu bodies with %zu contact points stepped at "
-                                    "dt = %.3g s sinks |g| dt² = %.3g m a step under gravity, "
-                                    "beyond the %.0f mm at which the contact solver settles a "
-                                    "stack it solves one point at a time (a column of 14 cubes "
-                                    "at dt = 1/30 s collapses); use dt <= %.3g s",
-                                    stack.size(), points[i], dt, sink, kMostStackSink * 1e3,
-                                    std::sqrt(kMostStackSink / gravity))});
+    out.push_back({stack, printed("a stack of %zu bodies with %zu contact points stepped at "
+                                  "dt = %.3g s sinks |g| dt² = %.3g m a step under gravity, "
+                                  "beyond the %.0f mm at which the contact solver settles a "
+                                  "stack it solves one point at a time (a column of 14 cubes "
+                                  "at dt = 1/30 s collapses); use dt <= %.3g s",
+                                  stack.size(), points[i], dt, sink, kMostStackSink * 1e3,
+                                  std::sqrt(kMostStackSink / gravity))});
   }
+  return out;
+}
+
+std::vector<BodiesAdvice> check_penalty_pairs(const std::vector<physics::BodyModel>& models,
+                                              const std::vector<physics::BodyState>& initial,
+                                              const std::vector<physics::Plane>& planes,
+                                              const physics::ContactSettings& settings,
+                                              physics::Integrator integrator, double dt) {
+  std::vector<BodiesAdvice> out;
+  if (!physics::pairs_possible(models, settings) || settings.stiffness <= 0.0) return out;
+  const std::size_t count = models.size();
+  const TouchingAtStart touching = touching_at_start(models, initial, planes, settings);
+  const double face = settings.stiffness * physics::kMaxManifoldPoints;  // 4k (N/m)
+  const auto mass = [&](std::size_t i) { return models[i].constants.mass; };
+  // Gershgorin's bound on M⁻¹K by body, and each group's largest.
+  std::vector<double> bound(count, 0.0), group_bound(count, 0.0);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (touching.on_plane[i]) bound[i] += face / mass(i);
+  }
+  for (const auto& [i, j] : touching.pairs) {
+    const double across = face / std::sqrt(mass(i) * mass(j));
+    bound[i] += face / mass(i) + across;
+    bound[j] += face / mass(j) + across;
+  }
+  for (const auto& [i, j] : touching.pairs) {
+    for (const std::size_t b : {i, j}) {
+      group_bound[touching.group[b]] = std::max(group_bound[touching.group[b]], bound[b]);
+    }
+  }
+  const double ratio = settings.damping / settings.stiffness;  // c/k (s)
+  const auto mode_of = [&](double lambda) {
+    return LinearMode{.damping_rate = ratio * lambda,
+                      .frequency = std::sqrt(lambda),
+                      .kick_damping = KickDamping::frozen};
+  };
+  // Each group's bodies, and how far a grounded one sinks under its weight (m).
+  const auto members = [&](std::size_t root) {
+    std::vector<std::size_t> in_group;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (touching.group[i] == root) in_group.push_back(i);
+    }
+    return in_group;
+  };
+  const auto sink_of = [&](const std::vector<std::size_t>& group) {
+    bool grounded = false;
+    physics::Vec3 gravity = physics::Vec3::Zero();
+    for (const std::size_t i : group) {
+      grounded = grounded || touching.on_plane[i];
+      if (gravity_of(models[i]) > gravity.norm()) gravity = constant_gravity(models[i]);
+    }
+    if (!grounded || gravity.isZero()) return 0.0;
+    const physics::Vec3 up = -gravity.normalized();
+    double sink = 0.0;
+    for (const std::size_t i : group) {
+      double above = 0.0;  // the weight at or above body i (N)
+      for (const std::size_t j : group) {
+        if (up.dot(initial[j].position()) >= up.dot(initial[i].position())) {
+          above += mass(j) * gravity.norm();
+        }
+      }
+      sink += above / face;
+    }
+    return sink;
+  };
+  const auto tolerance_of = [&](const std::vector<std::size_t>& group) {
+    double edge = std::numeric_limits<double>::infinity();
+    for (const std::size_t i : group) edge = std::min(edge, 2.0 * models[i].half_size.minCoeff());
+    return kMostPenaltySink * edge;  // m
+  };
+  const std::string springs = printed(
+      "penalty contact between bodies (k = %.4g N/m, c = %.4g N s/m per point, four points to a "
+      "face)",
+      settings.stiffness, settings.damping);
+  // The warning on one bound, with the stiffness that is stable at this dt when it holds.
+  const auto warn = [&](std::vector<std::size_t> bodies, double lambda, const std::string& what,
+                        double sink, double tolerance) {
+    NamedMode named{
+        .mode = mode_of(lambda),
+        .cause = printed("%s makes %s at up to ω_n = %.4g rad/s, damped at %.4g /s",
+                         springs.c_str(), what.c_str(), std::sqrt(lambda), ratio * lambda),
+        .penalty_contact = true};
+    std::optional<StepWarning> warning = check_mode(integrator, named, dt);
+    if (!warning) return false;
+    BodiesAdvice advice{.bodies = std::move(bodies), .suggested_dt = warning->suggested_dt};
+    // k → α k with c → √α c keeps ζ and scales every rate of the mode by √α.
+    const std::optional<double> limit = stability_limit(integrator, named.mode);
+    if (limit && *limit > 0.0) {
+      const double alpha = std::pow(kSuggestedFractionOfLimit * *limit / dt, 2.0);
+      const double softer_sink = sink / alpha;
+      if (softer_sink <= tolerance) {
+        advice.suggested_stiffness = alpha * settings.stiffness;
+        advice.suggested_damping = std::sqrt(alpha) * settings.damping;
+        warning->message += printed(
+            "; at this dt, contact_stiffness = %.3g and contact_damping = %.3g hold (ζ kept%s)",
+            *advice.suggested_stiffness, *advice.suggested_damping,
+            sink > 0.0 ? printed(", the stack sinking %.3g mm", softer_sink * 1e3).c_str() : "");
+      }
+    }
+    advice.message = std::move(warning->message);
+    out.push_back(std::move(advice));
+    return true;
+  };
+  bool warned = false;
+  for (std::size_t root = 0; root < count; ++root) {
+    if (group_bound[root] <= 0.0) continue;
+    const std::vector<std::size_t> group = members(root);
+    const double sink = sink_of(group), tolerance = tolerance_of(group);
+    warned = warn(group, group_bound[root], "them bounce on each other", sink, tolerance) || warned;
+    if (sink > tolerance) {
+      out.push_back({.bodies = group,
+                     .message = printed(
+                         "%s makes the stack of %zu bodies sink about %.3g mm into its springs "
+                         "under its weight (more than %.3g mm, %.0f%% of its smallest edge); "
+                         "use contact_stiffness >= %.3g (and a dt that is stable with it: "
+                         "tumble check tells)",
+                         springs.c_str(), group.size(), sink * 1e3, tolerance * 1e3,
+                         kMostPenaltySink * 100.0, settings.stiffness * sink / tolerance),
+                     .suggested_stiffness = settings.stiffness * sink / tolerance});
+    }
+  }
+  if (warned) return out;
+  // Bodies that do not touch at the start may meet: the two lightest colliding ones.
+  std::vector<std::size_t> colliders;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (models[i].collides) colliders.push_back(i);
+  }
+  std::partial_sort(colliders.begin(), colliders.begin() + 2, colliders.end(),
+                    [&](std::size_t a, std::size_t b) {
+                      return mass(a) < mass(b) || (mass(a) == mass(b) && a < b);
+                    });
+  const std::size_t first = std::min(colliders[0], colliders[1]);
+  const std::size_t second = std::max(colliders[0], colliders[1]);
+  warn({first, second}, face * (1.0 / mass(first) + 1.0 / mass(second)),
+       "them bounce off each other where they meet face to face", 0.0, 0.0);
   return out;
 }
 

@@ -2,6 +2,7 @@
 // may not expect. Pure computation: the commands print it.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,19 +42,59 @@ inline constexpr double kMostStackSink = 0.008;  // m: |g| dt²
 
 // A problem of some bodies together, for the command to word with their names.
 struct BodiesAdvice {
-  std::vector<std::size_t> bodies;  // indices into the models, in order
-  std::string message;              // one sentence, naming none of them
+  std::vector<std::size_t> bodies = {};  // indices into the models, in order
+  std::string message = {};              // one sentence, naming none of them
+  // What the message suggests, where it suggests it: a step (s), or penalty springs per point.
+  std::optional<double> suggested_dt = {};
+  std::optional<double> suggested_stiffness = {};  // N/m
+  std::optional<double> suggested_damping = {};    // N s/m
 };
+
+// Which bodies touch at the start (closer than a millimetre): each other (pairs of colliding
+// bodies, when settings.collide_bodies) and planes, and the groups the pairs join.
+struct TouchingAtStart {
+  std::vector<bool> on_plane;                              // by body
+  std::vector<bool> touches;                               // a plane or another body
+  std::vector<std::size_t> group;                          // by body: one body's index per group
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (i, j), i < j, in order
+};
+TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
+                                  const std::vector<physics::BodyState>& initial,
+                                  const std::vector<physics::Plane>& planes,
+                                  const physics::ContactSettings& settings);
+
+// With penalty contact between bodies, a stack may sink into its springs by no more than this
+// fraction of the smallest edge among its bodies (1 cm for unit cubes).
+inline constexpr double kMostPenaltySink = 0.01;
+
+// Penalty contact between bodies (physics/penalty_pairs.hpp), for bodies that can touch each
+// other (physics::pairs_possible), from the springs' linearised bounce: with four points to a
+// face and the damping proportional to the stiffness, each mode has ω² = λ and a damping rate of
+// (c/k) λ, λ an eigenvalue of M⁻¹K, bounded by Gershgorin's circles: for body i,
+// (4k/m_i)(its plane contacts + its pairs) + Σ over its pairs 4k/sqrt(m_i m_j) (a column of
+// three unit cubes: 16k/m, against 13k/m exactly). For each group touching at the start, and for
+// the two lightest colliding bodies meeting (4k (1/m₁ + 1/m₂)) when no group is warned of: a
+// warning when `integrator` at `dt` is unstable on that bound (a dt to use, or the stiffness and
+// damping, ζ kept, that are stable at this dt, when the stack still sinks less than
+// kMostPenaltySink with them); and for a group on a plane, a warning when its static sink
+// (bodies in order of height along gravity, each contact below carrying the weight above it:
+// Σ W_above / 4k) passes kMostPenaltySink, with the stiffness that holds it.
+std::vector<BodiesAdvice> check_penalty_pairs(const std::vector<physics::BodyModel>& models,
+                                              const std::vector<physics::BodyState>& initial,
+                                              const std::vector<physics::Plane>& planes,
+                                              const physics::ContactSettings& settings,
+                                              physics::Integrator integrator, double dt);
 
 // The hard cases the impulse solver cannot fix, for bodies (`models`, starting at `initial`)
 // among `planes` stepped at `dt` (s), in groups too large for the block solve (above): touching
 // bodies of a mass ratio beyond kMostMassRatio, a body whose constant load moves it further than
 // its smallest edge in one step, and a stack (three or more bodies touching each other and a
-// plane) for which |g| dt² passes kMostStackSink. Each says what to change. Nothing for penalty
-// contact.
+// plane) for which |g| dt² passes kMostStackSink. Each says what to change. For penalty
+// contact, check_penalty_pairs's advice instead.
 std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyModel>& models,
                                               const std::vector<physics::BodyState>& initial,
                                               const std::vector<physics::Plane>& planes,
-                                              const physics::ContactSettings& settings, double dt);
+                                              const physics::ContactSettings& settings,
+                                              physics::Integrator integrator, double dt);
 
 }  // namespace tumble::sim

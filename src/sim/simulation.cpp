@@ -21,8 +21,12 @@ Simulation::Simulation(std::vector<physics::BodyModel> models,
       contact_(contact) {
   assert(models_.size() == current_.size());
   assert(dt_ > 0.0);
-  world_step_ = contact_.method == physics::ContactMethod::impulse &&
-                (!planes_.empty() || physics::pairs_possible(models_, contact_));
+  const bool pairs = physics::pairs_possible(models_, contact_);
+  if (contact_.method == physics::ContactMethod::impulse) {
+    if (!planes_.empty() || pairs) stepping_ = Stepping::impulse_world;
+  } else if (pairs) {
+    stepping_ = Stepping::penalty_world;
+  }
 }
 
 namespace {
@@ -64,13 +68,20 @@ void Simulation::step() {
   if (blow_up_) return;
   const double t = time();
   previous_.swap(current_);
-  if (world_step_) {
-    physics::step_world(integrator_, models_, previous_, t, dt_, planes_, contact_, contacts_,
-                        current_);
-  } else {
-    for (std::size_t i = 0; i < models_.size(); ++i) {
-      current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
-    }
+  switch (stepping_) {
+    case Stepping::impulse_world:
+      physics::step_world(integrator_, models_, previous_, t, dt_, planes_, contact_, contacts_,
+                          current_);
+      break;
+    case Stepping::penalty_world:
+      physics::step_penalty_world(integrator_, models_, previous_, t, dt_, contact_, penalty_,
+                                  current_);
+      break;
+    case Stepping::alone:
+      for (std::size_t i = 0; i < models_.size(); ++i) {
+        current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
+      }
+      break;
   }
   ++step_count_;
   for (std::size_t i = 0; i < models_.size(); ++i) {

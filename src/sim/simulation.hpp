@@ -10,6 +10,7 @@
 #include "common/result.hpp"
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
+#include "physics/penalty_pairs.hpp"
 #include "physics/rigid_body.hpp"
 #include "physics/world_step.hpp"
 
@@ -74,9 +75,14 @@ class Simulation {
   double dt_;
   std::vector<physics::Plane> planes_;
   physics::ContactSettings contact_;
-  bool world_step_ = false;  // whether anything can touch: planes, or bodies that collide
+  // How a step goes: each body alone (with penalty contact, its planes are its own force law);
+  // the world step of impulse contact, whenever anything can touch; or penalty contact between
+  // bodies that can touch each other.
+  enum class Stepping { alone, impulse_world, penalty_world };
+  Stepping stepping_ = Stepping::alone;
   // The manifolds from step to step (warm starting the contact solve).
   physics::WorldContacts contacts_;
+  physics::PenaltyWorld penalty_;  // its scratch
   std::int64_t step_count_ = 0;
   std::optional<BlowUp> blow_up_;
 };

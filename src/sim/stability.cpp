@@ -8,6 +8,7 @@
 #include <string_view>
 #include <variant>
 
+#include "common/printed.hpp"
 #include "sim/penalty_modes.hpp"
 
 namespace tumble::sim {
@@ -158,13 +159,6 @@ bool stable(Method method, const LinearMode& mode, double h) {
   return bounded(larger, kRounding) && bounded(determinant / larger, kRounding);
 }
 
-std::string printed(const char* format, auto... values) {
-  const int size = std::snprintf(nullptr, 0, format, values...);
-  std::string text(static_cast<std::size_t>(std::max(size, 0)), '\0');
-  std::snprintf(text.data(), text.size() + 1, format, values...);
-  return text;
-}
-
 struct BodyRates {
   double linear_damping = 0.0;                    // Σ c (N s/m)
   double angular_damping = 0.0;                   // Σ c (N m s)
@@ -226,15 +220,6 @@ std::optional<Integrator> alternative(Integrator current, const auto& ok) {
   return std::nullopt;
 }
 
-// A mode with the words a warning gives it.
-struct NamedMode {
-  LinearMode mode;
-  std::string cause;  // what makes the mode, with its numbers: the warning's first clause
-  std::string outcome = "the motion will blow up";  // what a step beyond the limit does
-  // The mode is penalty contact's: contact = "impulse" has no such limit.
-  bool penalty_contact = false;
-};
-
 std::string advice(const StepWarning& warning) {
   std::string out;
   if (warning.suggested_dt) out += printed("use dt <= %.3g s", *warning.suggested_dt);
@@ -249,7 +234,8 @@ std::string advice(const StepWarning& warning) {
   return out.empty() ? out : "; " + out;
 }
 
-// A warning when `dt` is beyond the stability limit of `integrator` on the mode.
+}  // namespace
+
 std::optional<StepWarning> check_mode(Integrator integrator, const NamedMode& named, double dt) {
   const LinearMode& mode = named.mode;
   const std::optional<double> limit = stability_limit(integrator, mode);
@@ -277,6 +263,8 @@ std::optional<StepWarning> check_mode(Integrator integrator, const NamedMode& na
   warning.message += advice(warning);
   return warning;
 }
+
+namespace {
 
 // Of several modes of one kind (a box rocking about each of its axes), the one `integrator`
 // is least stable on: the smallest limit.

@@ -52,6 +52,21 @@ struct StepWarning {
   bool suggests_impulse_contact = false;
 };
 
+// A mode with the words a warning gives it.
+struct NamedMode {
+  LinearMode mode;
+  std::string cause;  // what makes the mode, with its numbers: the warning's first clause
+  std::string outcome = "the motion will blow up";  // what a step beyond the limit does
+  // The mode is penalty contact's: contact = "impulse" has no such limit.
+  bool penalty_contact = false;
+};
+
+// A warning when `dt` (s) is beyond the stability limit of `integrator` on the mode: its cause,
+// ω_n dt (or k dt) against the limit, the outcome, and what to use instead (a dt, another
+// integrator, impulse contact).
+std::optional<StepWarning> check_mode(physics::Integrator integrator, const NamedMode& named,
+                                      double dt);
+
 // The warnings for one body stepped by `integrator` at `dt` (s) for `duration` (s): one per
 // stiff law beyond its stability limit (linear damping: k = c/m; angular damping: k = c/I_min;
 // a spring at attachment r: ω_n² = stiffness μ and k = damping μ + c_linear/m with

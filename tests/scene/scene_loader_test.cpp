@@ -459,6 +459,12 @@ position = [0.5, 0.0, 0.0]
   EXPECT_TRUE(one.bodies[0].collide);
   EXPECT_FALSE(one.bodies[1].collide);
   EXPECT_FALSE(parse_scene("duration = 1.0\n" + two_cubes, "t.toml").ok());
+  // Penalty contact acts between bodies too: overlapping bodies are refused there as well.
+  const Result<Scene> penalty =
+      parse_scene("duration = 1.0\n[physics]\ncontact = \"penalty\"\n" + two_cubes, "t.toml");
+  ASSERT_FALSE(penalty.ok());
+  EXPECT_NE(penalty.error().find("start overlapping by 0.5 m"), std::string::npos)
+      << penalty.error();
 }
 
 // Still islands sleep unless the scene says sleep = false.

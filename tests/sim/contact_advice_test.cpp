@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
+#include <string>
 
 #include "sim/simulation.hpp"
+#include "sim/stability.hpp"
 
 namespace tumble::sim {
 namespace {
@@ -106,7 +109,8 @@ Column column(const std::vector<double>& masses, double push = 0.0) {
 
 std::vector<BodiesAdvice> advice_for(const Column& c, double dt,
                                      physics::ContactSettings settings = {}) {
-  return check_contact_world(c.models, c.initial, {physics::Plane{}}, settings, dt);
+  return check_contact_world(c.models, c.initial, {physics::Plane{}}, settings,
+                             physics::Integrator::rk4, dt);
 }
 
 // Thirteen 1 kg cubes under one of `top` kg: 14 bodies on a floor, 56 contact points, beyond the
@@ -168,10 +172,117 @@ TEST(ContactAdvice, TellsABouncingBodyWithNoGravityToBounceAtAnySpeed) {
                   .empty());  // under gravity: quiet
 }
 
-TEST(ContactWorldAdvice, SaysNothingForPenaltyContact) {
-  EXPECT_TRUE(advice_for(column({1.0, 100.0, 1.0}, 1e4), 1.0 / 30.0,
-                         {.method = physics::ContactMethod::penalty})
-                  .empty());
+// ---- Penalty contact between bodies (check_penalty_pairs) ----------------------------------
+
+const physics::ContactSettings kPenalty = {.method = physics::ContactMethod::penalty};
+
+// The column with penalty contact on the floor as well, as the scene builder gives it.
+Column penalty_column(const std::vector<double>& masses, const physics::ContactSettings& springs) {
+  Column out = column(masses);
+  for (physics::BodyModel& model : out.models) {
+    model = physics::with_penalty_contact(std::move(model), {physics::Plane{}}, springs.stiffness,
+                                          springs.damping);
+  }
+  return out;
+}
+
+std::vector<BodiesAdvice> pair_advice(const Column& c, physics::Integrator integrator, double dt,
+                                      const physics::ContactSettings& springs = kPenalty) {
+  return check_contact_world(c.models, c.initial, {physics::Plane{}}, springs, integrator, dt);
+}
+
+// The smallest step any warning on the column suggests: each body's (check_step: its springs on
+// the floor) and the pairs' (s).
+double advised_step(const Column& c, physics::Integrator integrator, double dt) {
+  double out = dt;
+  for (std::size_t i = 0; i < c.models.size(); ++i) {
+    for (const StepWarning& w : check_step(c.models[i], c.initial[i], integrator, dt, 10.0)) {
+      if (w.suggested_dt) out = std::min(out, *w.suggested_dt);
+    }
+  }
+  for (const BodiesAdvice& advice : pair_advice(c, integrator, dt)) {
+    if (advice.suggested_dt) out = std::min(out, *advice.suggested_dt);
+  }
+  return out;
+}
+
+// The farthest the top body gets from where it started over 10 s (m).
+double top_drift(const Column& c, physics::Integrator integrator, double dt,
+                 const physics::ContactSettings& springs) {
+  Simulation world(c.models, c.initial, integrator, dt, {}, springs);
+  double farthest = 0.0;
+  while (world.time() < 10.0 && !world.blow_up()) {
+    world.step();
+    farthest = std::max(farthest,
+                        (world.current().back().position() - c.initial.back().position()).norm());
+  }
+  return world.blow_up() ? std::numeric_limits<double>::infinity() : farthest;
+}
+
+// At 1/60 s every integrator is far beyond the springs' limit (k = 1e5 N/m: ω_n up to 1265
+// rad/s by Gershgorin's bound, 1140 exactly); at the step tumble check suggests, a column of
+// three unit cubes stands 10 s with its top within 1 cm (it sinks 1.5 m g / k = 0.15 mm).
+TEST(PenaltyPairAdvice, AColumnOfThreeStandsTenSecondsAtTheStepCheckSuggests) {
+  const Column c = penalty_column({1.0, 1.0, 1.0}, kPenalty);
+  for (const physics::Integrator integrator : physics::kAllIntegrators) {
+    SCOPED_TRACE(std::string(physics::integrator_name(integrator)));
+    const std::vector<BodiesAdvice> coarse = pair_advice(c, integrator, kStep);
+    ASSERT_EQ(coarse.size(), 1u);
+    EXPECT_EQ(coarse[0].bodies, (std::vector<std::size_t>{0, 1, 2}));
+    ASSERT_TRUE(coarse[0].suggested_dt.has_value()) << coarse[0].message;
+    const double dt = advised_step(c, integrator, kStep);
+    EXPECT_TRUE(pair_advice(c, integrator, dt).empty());
+    EXPECT_LT(top_drift(c, integrator, dt, kPenalty), 0.01);
+  }
+  // Beyond the limit the column does not stand: the warning is not idle.
+  EXPECT_GT(top_drift(c, physics::Integrator::rk4, 1.0 / 240.0, kPenalty), 0.01);
+}
+
+// At 1/120 s, rk4: the stiffness and damping check suggests for this step (ζ kept) hold the
+// column within 1 cm (it sinks 3.2 mm into the softer springs).
+TEST(PenaltyPairAdvice, AColumnOfThreeStandsAtTheStiffnessCheckSuggestsForItsStep) {
+  const double dt = 1.0 / 120.0;
+  const std::vector<BodiesAdvice> advice =
+      pair_advice(penalty_column({1.0, 1.0, 1.0}, kPenalty), physics::Integrator::rk4, dt);
+  ASSERT_EQ(advice.size(), 1u);
+  ASSERT_TRUE(advice[0].suggested_stiffness && advice[0].suggested_damping) << advice[0].message;
+  const physics::ContactSettings softer = {.method = physics::ContactMethod::penalty,
+                                           .stiffness = *advice[0].suggested_stiffness,
+                                           .damping = *advice[0].suggested_damping};
+  const Column c = penalty_column({1.0, 1.0, 1.0}, softer);
+  EXPECT_TRUE(pair_advice(c, physics::Integrator::rk4, dt, softer).empty());
+  EXPECT_LT(top_drift(c, physics::Integrator::rk4, dt, softer), 0.01);
+}
+
+// Soft springs hold a column stable but deep: 500 N/m per point sinks a column of three unit
+// cubes 1.5 m g / k = 29 mm; the advice gives the stiffness that sinks it 1 cm.
+TEST(PenaltyPairAdvice, NamesAColumnThatSinksIntoSoftSprings) {
+  const physics::ContactSettings soft = {
+      .method = physics::ContactMethod::penalty, .stiffness = 500.0, .damping = 10.0};
+  const std::vector<BodiesAdvice> advice = pair_advice(
+      penalty_column({1.0, 1.0, 1.0}, soft), physics::Integrator::rk4, 1.0 / 1000.0, soft);
+  ASSERT_EQ(advice.size(), 1u);
+  EXPECT_NE(advice[0].message.find("sink about 29.4 mm"), std::string::npos) << advice[0].message;
+  ASSERT_TRUE(advice[0].suggested_stiffness.has_value());
+  EXPECT_NEAR(*advice[0].suggested_stiffness, 1.5 * 9.81 / 0.01, 1e-9);
+}
+
+// Bodies apart at the start may meet: the two lightest are named, at 4k (1/m₁ + 1/m₂).
+TEST(PenaltyPairAdvice, NamesTheTwoLightestBodiesThatMayMeet) {
+  Column c = penalty_column({3.0, 1.0, 2.0}, kPenalty);
+  for (std::size_t i = 0; i < c.initial.size(); ++i) {
+    c.initial[i].set({.position = physics::Vec3(3.0 * static_cast<double>(i), 5.0, 0.0)},
+                     c.models[i].constants);
+  }
+  const std::vector<BodiesAdvice> advice = pair_advice(c, physics::Integrator::rk4, kStep);
+  ASSERT_EQ(advice.size(), 1u);
+  EXPECT_EQ(advice[0].bodies, (std::vector<std::size_t>{1, 2}));
+  EXPECT_NE(advice[0].message.find("ω_n = 774.6 rad/s"), std::string::npos) << advice[0].message;
+  // Bodies that do not collide, or a step within the limit: nothing.
+  physics::ContactSettings apart = kPenalty;
+  apart.collide_bodies = false;
+  EXPECT_TRUE(pair_advice(c, physics::Integrator::rk4, kStep, apart).empty());
+  EXPECT_TRUE(pair_advice(c, physics::Integrator::rk4, 1e-4).empty());
 }
 
 }  // namespace
