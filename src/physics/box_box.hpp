@@ -44,6 +44,7 @@ struct PairManifold {
   int count = 0;
   std::array<PairPoint, kMaxManifoldPoints> points;
   PatchImpulses friction;  // of the manifold as a whole (physics/contact_solver.hpp)
+  PatchMemo patch;
 };
 
 // Which of the 15 axes the separating-axis test chose.

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "physics/rigid_body.hpp"
 #include "physics/shapes.hpp"
@@ -70,6 +71,16 @@ struct ContactPoint {
   Impulses impulses;
 };
 
+// A manifold's twist arm as last computed (physics/contact_rows.cpp), kept with the manifold from
+// step to step: a patch of the same points, spread as far about their centre, does not compute
+// it again (its exact form takes a sort, eight asinh and as many square roots: a quarter of a
+// resting box's step).
+struct PatchMemo {
+  std::uint64_t points = 0;  // the points' count and features (0: nothing remembered)
+  double spread = 0.0;       // Σ |r − c|² over the points' arms r about their centre c (m²)
+  double twist_arm = 0.0;    // m
+};
+
 // At most four points: the four lowest corners are enough to hold a box still on a face.
 inline constexpr int kMaxManifoldPoints = 4;
 
@@ -78,6 +89,7 @@ struct Manifold {
   int count = 0;
   std::array<ContactPoint, kMaxManifoldPoints> points;
   PatchImpulses friction;
+  PatchMemo patch;
 };
 
 // The separation from a plane (m, negative inside) of each corner of a box, indexed by corner

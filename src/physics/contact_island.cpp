@@ -5,7 +5,6 @@
 #include <variant>
 
 #include "physics/normal_block.hpp"
-#include "physics/patch_friction.hpp"
 
 namespace tumble::physics {
 namespace {
@@ -197,14 +196,6 @@ Vec3 mean_arm(std::span<const Vec3> arms) {
   if (arms.empty()) return centre;
   for (const Vec3& arm : arms) centre += arm;
   return centre / static_cast<double>(arms.size());
-}
-
-PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal) {
-  PatchShape out;
-  if (arms.empty()) return out;
-  out.centre_arm = mean_arm(arms);
-  out.twist_arm = patch_twist_arm(arms, normal, out.centre_arm);
-  return out;
 }
 
 void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,

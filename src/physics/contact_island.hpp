@@ -130,14 +130,8 @@ void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
 bool constant_force(const BodyModel& model, Vec3& force);
 bool passive(const BodyModel& model);
 
-// The centre of the points at `arms` (m, world, from one body's centre) and their mean distance
-// from it across `normal` (unit): what a friction patch needs.
-struct PatchShape {
-  Vec3 centre_arm = Vec3::Zero();  // m
-  double twist_arm = 0.0;          // m
-};
-PatchShape patch_shape(std::span<const Vec3> arms, const Vec3& normal);
-// The centre alone (m): patch_shape's centre_arm, to the bit.
+// The centre of the points at `arms` (m, world, from one body's centre): where a friction patch
+// acts.
 Vec3 mean_arm(std::span<const Vec3> arms);
 
 // Rotates q by the rotation vector `angle` (rad, world frame): exp(angle / 2) q.

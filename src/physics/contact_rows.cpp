@@ -1,7 +1,12 @@
 #include "physics/contact_rows.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <limits>
+
+#include "physics/patch_friction.hpp"
 
 namespace tumble::physics {
 namespace {
@@ -118,6 +123,35 @@ void clear_slot(std::uint32_t a, std::uint32_t b, std::uint32_t i, ContactRows& 
       PositionPoint{.a = a, .b = b, .base = std::numeric_limits<double>::infinity()});
 }
 
+// A patch whose points keep their features and their spread about their centre within this
+// fraction keeps its twist arm: rigid motion keeps the spread to round-off (a resting box, a
+// settled pile), while a patch that changes (a box sliding off another) has its arm anew, the
+// remembered one at most 0.05 % off (the arm scales as the spread's square root).
+constexpr double kSpreadKept = 1e-3;
+
+// The patch shape of the manifold's points (their arms about their centre, from body A): the
+// manifold's memo when it still holds, else the twist arm computed anew.
+template <class ManifoldType>
+PatchMemo remembered(const ManifoldType& manifold, std::span<const Vec3> arms, const Vec3& centre,
+                     const Vec3& normal) {
+  // The features in increasing order (a manifold lists its points deepest first, an order that
+  // round-off can change); each takes at most 14 bits, so four, shifted past the count, fit.
+  std::array<std::uint64_t, kMaxManifoldPoints> features{};
+  double spread = 0.0;  // m²
+  for (std::size_t k = 0; k < arms.size(); ++k) {
+    features[k] = static_cast<std::uint64_t>(manifold.points[k].feature) + 1;
+    spread += (arms[k] - centre).squaredNorm();
+  }
+  std::sort(features.begin(), features.begin() + static_cast<std::ptrdiff_t>(arms.size()));
+  std::uint64_t points = arms.size();
+  for (std::size_t k = 0; k < arms.size(); ++k) points |= features[k] << (4 + 15 * k);
+  const PatchMemo& before = manifold.patch;
+  if (before.points == points && std::abs(spread - before.spread) <= kSpreadKept * before.spread) {
+    return before;
+  }
+  return {.points = points, .spread = spread, .twist_arm = patch_twist_arm(arms, normal, centre)};
+}
+
 // Writes the manifold's normal rows, position points and friction patch into `at`.
 template <class View>
 void write(const View& view, const RowSlots& at, ContactRows& rows) {
@@ -157,23 +191,23 @@ void write(const View& view, const RowSlots& at, ContactRows& rows) {
                       .base = point.base});
   }
   // The twist arm once, from a's arms: the patch has one shape, whichever body it is seen from.
-  const PatchShape shape_a = patch_shape({arms_a, count}, normal);
-  const PatchShape shape_b = {.centre_arm = body_b ? mean_arm({arms_b, count}) : Vec3::Zero()};
+  const Vec3 centre_a = mean_arm({arms_a, count});
+  const PatchMemo shape = remembered(in.manifold, {arms_a, count}, centre_a, normal);
+  const Vec3 centre_b = body_b ? mean_arm({arms_b, count}) : Vec3::Zero();
   Vec3 tangents[2];
   tangent_basis(normal, tangents);
-  FrictionPatch patch{.a = a,
-                      .b = b,
-                      .tangent = {impulse_direction(tangents[0], body_a, shape_a.centre_arm, body_b,
-                                                    shape_b.centre_arm),
-                                  impulse_direction(tangents[1], body_a, shape_a.centre_arm, body_b,
-                                                    shape_b.centre_arm)},
-                      .twist = twist_direction(normal, body_a, body_b),
-                      .friction = in.material.friction,
-                      .twist_arm = shape_a.twist_arm,
-                      .first = at.first,
-                      .count = count,
-                      .source = in.source,
-                      .keeps_friction = in.keeps_friction};
+  FrictionPatch patch{
+      .a = a,
+      .b = b,
+      .tangent = {impulse_direction(tangents[0], body_a, centre_a, body_b, centre_b),
+                  impulse_direction(tangents[1], body_a, centre_a, body_b, centre_b)},
+      .twist = twist_direction(normal, body_a, body_b),
+      .friction = in.material.friction,
+      .shape = shape,
+      .first = at.first,
+      .count = count,
+      .source = in.source,
+      .keeps_friction = in.keeps_friction};
   if (in.keeps_friction) {
     const PatchImpulses& friction = in.manifold.friction;
     for (int k = 0; k < 2; ++k) {
@@ -197,6 +231,7 @@ void store(const ContactRows& rows, const FrictionPatch& patch, Manifold& manifo
     manifold.points[k].impulses.normal = rows.points[patch.first + k].normal_impulse;
   }
   if (patch.keeps_friction) manifold.friction = patch_impulses(patch);
+  manifold.patch = patch.shape;
 }
 
 }  // namespace

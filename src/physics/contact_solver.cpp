@@ -56,7 +56,7 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
     f.tangent_impulse[k] += change;
     largest = std::max(largest, std::abs(change));
   }
-  const double twist_limit = limit * f.twist_arm;
+  const double twist_limit = limit * f.shape.twist_arm;
   const double twist = std::clamp(f.twist_impulse - f.twist.mass * relative_speed(f.twist, a, b),
                                   -twist_limit, twist_limit);
   const double change = twist - f.twist_impulse;

@@ -110,10 +110,10 @@ struct FrictionPatch {
   ImpulseDirection tangent[2];  // at the manifold's centre, normal to its normal
   ImpulseDirection twist;       // turning about the normal (angular only)
   double friction = 0.0;        // μ of the pair
-  double twist_arm = 0.0;       // m: mean distance of the points from the centre
+  PatchMemo shape;              // its twist_arm (m): mean distance of the points from the centre
   std::uint32_t first = 0, count = 0;
   double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ Σ normal (N s)
-  double twist_impulse = 0.0;              // accumulated, |twist| <= μ twist_arm Σ normal (N m s)
+  double twist_impulse = 0.0;              // accumulated, |twist| <= μ twist arm Σ normal (N m s)
   ManifoldRef source;
   // Whether the friction impulses are warm-started (the row builder sets them) and go back to the
   // manifold: not between bodies in a converged solve (above).

@@ -59,6 +59,7 @@ void refind_pair(const StepContext& context, const PairRows& rows, double left) 
   carry_by_feature(found, pair.manifold, at, solve, carried);
   carried.friction = patch_impulses(solve.patches[rows.patch]);
   found.friction = pair.manifold.friction;
+  found.patch = pair.manifold.patch;
   pair.manifold = found;
   pair.stamp.valid = false;  // found at a sub-step's poses: not the start's
   const Material material = combine(model_a.material, model_b.material);
@@ -81,6 +82,7 @@ void write_plane_rows(const StepContext& context, const PlaneRows& rows, const P
       box_plane_manifold(corner_separations(pose.rotation, pose.position, model.half_size, plane),
                          model.half_size, margin);
   found.friction = manifold.friction;
+  found.patch = manifold.patch;
   CarriedImpulses carried;
   carry_by_feature(found, manifold, at, solve, carried);
   const FrictionPatch& before = solve.patches[rows.patch];

@@ -241,7 +241,10 @@ void append_plane_rows(const StepContext& context, const BodyInRows& body, doubl
     Manifold found = box_plane_manifold(separations[p], model.half_size, margin);
     // Warm start from the last step's impulses of the same corners, and of the same plane's
     // friction.
-    if (found.count > 0 && manifold.count > 0) found.friction = manifold.friction;
+    if (found.count > 0 && manifold.count > 0) {
+      found.friction = manifold.friction;
+      found.patch = manifold.patch;
+    }
     keep_impulses(found, manifold);
     manifold = found;
     if (manifold.count == 0) continue;

@@ -146,6 +146,7 @@ void find_pairs(const StepContext& context) {
     stamp(context, margin + kReuseDistance, pair);
     if (before) {
       pair.manifold.friction = before->manifold.friction;
+      pair.manifold.patch = before->manifold.patch;
       keep_impulses(pair.manifold, before->manifold);
     }
     scratch.found.push_back(pair);
