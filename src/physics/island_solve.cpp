@@ -106,16 +106,61 @@ std::span<const std::uint32_t> start_island(const StepContext& context, std::uin
   return members_of(island, context.scratch);
 }
 
-// The fastest closing in the island: of a pair, or of a body on the planes (m in the step).
+// How far body i's corners can swing about its centre in the step (m).
+double swing(const StepContext& context, std::uint32_t i) {
+  const BodyState& start = context.in[i];
+  const BodyState& end = context.scratch.advances[i].end;
+  return context.dt * std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
+         context.models[i].half_size.norm();
+}
+
+// How far the bodies of a pair can close on each other in the step (m): as `reach` in
+// world_step.cpp, but of B's centre relative to A's (a clump of boxes falling together closes by
+// nothing), plus both corners' swings.
+double pair_closing(const StepContext& context, std::uint32_t a, std::uint32_t b) {
+  const BodyState& a_start = context.in[a];
+  const BodyState& b_start = context.in[b];
+  const BodyState& a_end = context.scratch.advances[a].end;
+  const BodyState& b_end = context.scratch.advances[b].end;
+  const double travel = std::max(
+      ((b_end.position() - a_end.position()) - (b_start.position() - a_start.position())).norm(),
+      context.dt * std::max((b_start.velocity() - a_start.velocity()).norm(),
+                            (b_end.velocity() - a_end.velocity()).norm()));
+  return travel + swing(context, a) + swing(context, b);
+}
+
+// How far a body can close on the planes within its reach in the step (m): its centre's travel
+// along each such plane's normal towards it, plus its corners' swing.
+double plane_closing(const StepContext& context, std::uint32_t i) {
+  const BodyState& start = context.in[i];
+  const BodyState& end = context.scratch.advances[i].end;
+  const double near =
+      context.models[i].half_size.norm() + context.scratch.reaches[i] + kTouchingDistance;
+  double closing = -1.0;  // no plane within reach
+  for (const Plane& plane : context.planes) {
+    if (separation(plane, start.position()) > near) continue;
+    const Vec3& n = plane.normal;
+    closing =
+        std::max({closing, 0.0, -n.dot(end.position() - start.position()),
+                  -context.dt * n.dot(start.velocity()), -context.dt * n.dot(end.velocity())});
+  }
+  return closing < 0.0 ? 0.0 : closing + swing(context, i);
+}
+
+// The fastest closing in the island: of a pair on each other, or of a body on the planes near it
+// (m in the step). Closing, not moving: clumps of boxes poured together move far in a step but
+// close on nothing until they land. On the 1000-box pour (contact_bench, seeds 1-3, one run
+// each) this took the mean step from 1.95-2.07 to 1.77-1.80 x Bullet's, the deepest point from
+// 7.5-30 mm to 6.7-9.1 mm.
 double fastest_closing(const StepContext& context, std::uint32_t island,
                        std::span<const std::uint32_t> members) {
   const StepScratch& scratch = context.scratch;
   double fastest = 0.0;
   for (std::uint32_t k = scratch.pair_offsets[island]; k < scratch.pair_offsets[island + 1]; ++k) {
     const auto [a, b] = scratch.found[scratch.pair_order[k]].bodies;
-    fastest = std::max(fastest, scratch.reaches[a] + scratch.reaches[b]);
+    fastest = std::max(fastest, pair_closing(context, a, b));
   }
-  for (const std::uint32_t i : members) fastest = std::max(fastest, scratch.reaches[i]);
+  for (const std::uint32_t i : members) fastest = std::max(fastest, plane_closing(context, i));
   return fastest;
 }
 
@@ -161,7 +206,7 @@ void add_substep_pair_rows(const StepContext& context, std::uint32_t island) {
   for (std::uint32_t k = scratch.pair_offsets[island]; k < scratch.pair_offsets[island + 1]; ++k) {
     const std::uint32_t p = scratch.pair_order[k];
     const auto [a, b] = scratch.found[p].bodies;
-    const double reach = scratch.reaches[a] + scratch.reaches[b];
+    const double reach = pair_closing(context, a, b);
     const RowSlots at =
         add_slots(scratch.rows, reach > kRefindReach
                                     ? kMaxManifoldPoints
