@@ -25,11 +25,22 @@ inline constexpr int kMaxImpactsPerStep = 8;
 // step's gravity, also undoes the sinking the step's gravity caused.
 double impulse_position_weight(Integrator integrator, double h /* s */);
 
+// Where an impact with a plane that does not bounce (every corner reaching it slower than the
+// restitution threshold) is resolved: at its time, for the body alone (a body that touches only
+// planes), or by the solve of the body's island at the step's end with all its other contacts
+// (in a world of bodies that can touch each other). Solved alone, an impact at one corner of a
+// thin rod resting across another sets it rolling (a 5 cm × 5 cm × 3 m rod turns 1800 times as
+// easily about its length as across it), which the rod under it then stops, and the lifted corner
+// falls again: two crossed rods rocked so for ever (5 mm/s, 0.03 rad/s after 5 s; at rest to
+// round-off once the island solves it, build/contact_hard).
+enum class SlowImpacts { at_their_time, in_the_solve };
+
 // Steps 1 and 2 of step_with_planes for body `body` of the context, into scratch.advances[body]:
-// its free step, and its impacts with the planes at their times. memory.planes[body] keeps the last
-// step's manifolds while it touches (their impulses warm-start the rest), and
-// scratch.separations[body] the corners of the end.
-void advance_among_planes(const StepContext& context, std::uint32_t body);
+// its free step, and its impacts with the planes at their times (those that do not bounce only
+// with SlowImpacts::at_their_time). memory.planes[body] keeps the last step's manifolds while it
+// touches (their impulses warm-start the rest), and scratch.separations[body] the corners of the
+// end.
+void advance_among_planes(const StepContext& context, std::uint32_t body, SlowImpacts slow);
 
 // A body as the rows of its plane contacts see it: its index in the world, its index among
 // scratch.rows.bodies, and its rotation (body to world) at the pose the rows are for.

@@ -28,6 +28,8 @@ struct PlaneAdvance {
   double remaining = 0.0;            // s: the part of the step after the last impact
   // A corner of `end` touches a plane: StepScratch::separations holds the body's corners.
   bool touching = false;
+  // An impact that did not bounce was resolved at its time (SlowImpacts::at_their_time).
+  bool slow_impact = false;
 };
 
 // A pair's place in an island's rows (island_solve.cpp): its points in `slots` slots from
