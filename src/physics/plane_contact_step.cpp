@@ -236,7 +236,7 @@ void advance_among_planes(const StepContext& context, std::uint32_t body, SlowIm
   }
   BodyState state = context.in[body];
   double time = context.t;
-  const double slow_speed = slow_impact_speed(context, model);
+  double slow_speed = -1.0;  // m/s, found at the first impact (a resting body has none)
   for (int impacts = 0; impacts < kMaxImpactsPerStep; ++impacts) {
     find_impact_corners(state, separations, model.half_size, planes,
                         context.scratch.impact_corners);
@@ -244,6 +244,7 @@ void advance_among_planes(const StepContext& context, std::uint32_t body, SlowIm
     const double until = time_of_impact(context, model, state, time, out.remaining);
     const BodyState at = until > 0.0 ? step(integrator, model, state, time, until) : state;
     if (passed_through(at, model.half_size, planes, context.scratch.impact_corners)) break;
+    if (slow_speed < 0.0) slow_speed = slow_impact_speed(context, model);
     if (fastest_approach(at, planes, context.scratch.impact_corners) < slow_speed) {
       // In the solve: the end of the free step stands, touching, and the island takes it.
       if (slow == SlowImpacts::in_the_solve) break;
