@@ -150,8 +150,8 @@ double plane_closing(const StepContext& context, std::uint32_t i) {
 // The fastest closing in the island: of a pair on each other, or of a body on the planes near it
 // (m in the step). Closing, not moving: clumps of boxes poured together move far in a step but
 // close on nothing until they land. On the 1000-box pour (contact_bench, seeds 1-3, one run
-// each) this took the mean step from 1.95-2.07 to 1.77-1.80 x Bullet's, the deepest point from
-// 7.5-30 mm to 6.7-9.1 mm.
+// each) the mean step went from 1.95-2.07 to 1.66-1.92 x Bullet's (docs/performance.md; the
+// deepest point, one rare landing, moves either way with the run).
 double fastest_closing(const StepContext& context, std::uint32_t island,
                        std::span<const std::uint32_t> members) {
   const StepScratch& scratch = context.scratch;
