@@ -108,10 +108,8 @@ std::span<const std::uint32_t> start_island(const StepContext& context, std::uin
 
 // How far body i's corners can swing about its centre in the step (m).
 double swing(const StepContext& context, std::uint32_t i) {
-  const BodyState& start = context.in[i];
-  const BodyState& end = context.scratch.advances[i].end;
-  return context.dt * std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
-         context.models[i].half_size.norm();
+  return corner_swing(context.in[i], context.scratch.advances[i].end, context.models[i].half_size,
+                      context.dt);
 }
 
 // How far the bodies of a pair can close on each other in the step (m): as `reach` in

@@ -4,6 +4,7 @@
 // rows built by physics/contact_rows.hpp; and the helpers the world step shares with them.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -18,6 +19,14 @@ namespace tumble::physics {
 // past another's edge meets its face, which the edge's point knew nothing of: the pile of `tumble
 // bench contact` sank 30 cm so while pouring). Box2D's speculative distance is 2 cm.
 inline constexpr double kRefindReach = 0.02;
+
+// How far a box's corners can swing about its centre in a step of h (s) from `start` to `end`:
+// its fastest turn times its half diagonal (m).
+inline double corner_swing(const BodyState& start, const BodyState& end, const Vec3& half_size,
+                           double h) {
+  return h * std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
+         half_size.norm();
+}
 
 inline BoxPose pose_of(const BodyState& state, const Mat3& rotation, const Vec3& half_size) {
   return {.position = state.position(), .rotation = rotation, .half_size = half_size};

@@ -18,10 +18,7 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 double reach(const BodyState& start, const BodyState& end, const Vec3& half_size, double h) {
   const double travel = std::max((end.position() - start.position()).norm(),
                                  h * std::max(start.velocity().norm(), end.velocity().norm()));
-  const double swing = h *
-                       std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
-                       half_size.norm();
-  return travel + swing;
+  return travel + corner_swing(start, end, half_size, h);
 }
 
 std::uint32_t find_root(std::vector<std::uint32_t>& root, std::uint32_t i) {
