@@ -125,20 +125,26 @@ void add_box(BulletWorld& bullet, const PileBox& box, const physics::Material& m
   bullet.boxes.push_back(std::move(body));
 }
 
-// Contact points over all pairs, and the deepest (m, >= 0). Bullet also keeps points that are
-// slightly apart (up to the manifold's contact-breaking threshold, 0.02 times the shape's
-// bounding radius), so the count is of touching-or-nearly pairs' points.
-std::pair<int, double> count_contacts(btCollisionDispatcher& dispatcher) {
+// Contact points over all pairs. Bullet also keeps points that are slightly apart (up to the
+// manifold's contact-breaking threshold, 0.02 times the shape's bounding radius), so the count is
+// of touching-or-nearly pairs' points.
+int count_points(btCollisionDispatcher& dispatcher) {
   int points = 0;
-  double deepest = 0.0;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
-    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-    points += manifold->getNumContacts();
-    for (int c = 0; c < manifold->getNumContacts(); ++c) {
-      deepest = std::max(deepest, -static_cast<double>(manifold->getContactPoint(c).getDistance()));
-    }
+    points += dispatcher.getManifoldByIndexInternal(m)->getNumContacts();
   }
-  return {points, deepest};
+  return points;
+}
+
+// Box i's pose as PileDepth reads it.
+physics::BoxPose pose_of(const btRigidBody& body, const PileBox& box) {
+  const btTransform& t = body.getWorldTransform();
+  physics::Mat3 rotation;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) rotation(r, c) = static_cast<double>(t.getBasis()[r][c]);
+  }
+  return {
+      .position = from_bullet(t.getOrigin()), .rotation = rotation, .half_size = 0.5 * box.size};
 }
 
 double top_speed(const BulletWorld& bullet) {
@@ -164,6 +170,8 @@ PileRun run_pile_in_bullet(const Pile& pile, const StepObserver& observer) {
   for (const physics::Plane& plane : pile.planes) add_plane(*bullet, plane);
   for (const PileBox& box : pile.boxes) add_box(*bullet, box, pile.box_material);
 
+  PileDepth depth_of;
+  std::vector<physics::BoxPose> poses(pile.boxes.size());
   PileRun run;
   run.engine = bullet_engine_name();
   const auto steps = static_cast<std::size_t>(pile.steps);
@@ -180,8 +188,10 @@ PileRun run_pile_in_bullet(const Pile& pile, const StepObserver& observer) {
     const std::clock_t cpu_end = std::clock();
     run.step_ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
     run.step_cpu_ms.push_back(1000.0 * static_cast<double>(cpu_end - cpu_start) / CLOCKS_PER_SEC);
-    const auto [points, deepest] = count_contacts(bullet->dispatcher);
-    run.contacts.push_back(points);
+    for (std::size_t i = 0; i < poses.size(); ++i)
+      poses[i] = pose_of(*bullet->boxes[i], pile.boxes[i]);
+    const double deepest = depth_of(pile, poses);
+    run.contacts.push_back(count_points(bullet->dispatcher));
     run.depth_m.push_back(deepest);
     run.top_speed.push_back(top_speed(*bullet));
     run.largest_penetration_m = std::max(run.largest_penetration_m, deepest);

@@ -1,9 +1,12 @@
 #include "bench/pile.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+
+#include "physics/contact.hpp"
 
 namespace tumble::bench {
 namespace {
@@ -125,6 +128,27 @@ Pile make_pile(int bodies, std::uint64_t seed, double seconds) {
 bool inside_bin(const Pile& pile, const physics::Vec3& centre) {
   const double w = pile.bin_half_width;
   return std::abs(centre.x()) <= w && std::abs(centre.z()) <= w && centre.y() >= 0.0;
+}
+
+double PileDepth::operator()(const Pile& pile, std::span<const physics::BoxPose> poses) {
+  double deepest = 0.0;
+  bounds_.clear();
+  for (const physics::BoxPose& pose : poses) {
+    for (const physics::Plane& plane : pile.planes) {
+      const physics::CornerSeparations s =
+          physics::corner_separations(pose.rotation, pose.position, pose.half_size, plane);
+      deepest = std::max(deepest, -*std::min_element(s.begin(), s.end()));
+    }
+    bounds_.push_back(physics::box_bounds(pose.position, pose.rotation, pose.half_size, 0.0));
+  }
+  physics::overlapping_pairs(bounds_, order_, pairs_);
+  for (const auto& [a, b] : pairs_) {
+    const physics::PairManifold m = physics::box_box_manifold(poses[a], poses[b], 0.0);
+    for (int k = 0; k < m.count; ++k) {
+      deepest = std::max(deepest, -m.points[static_cast<std::size_t>(k)].separation);
+    }
+  }
+  return deepest;
 }
 
 double bounding_radius(const PileBox& box) {

@@ -9,31 +9,21 @@
 namespace tumble::bench {
 namespace {
 
-// The deepest any box is inside a plane or another box's manifold said (m, >= 0), and how many
-// contact points there are, after a step.
-struct ContactCount {
+// How many contact points the step's manifolds hold, with planes and between boxes.
+int count_points(const physics::WorldContacts& contacts) {
   int points = 0;
-  double depth = 0.0;
-};
-
-ContactCount count_contacts(const physics::WorldContacts& contacts,
-                            const std::vector<physics::BodyState>& states, const Pile& pile) {
-  ContactCount out;
   for (const physics::PairContact& pair : contacts.memory.pairs) {
     for (int k = 0; k < pair.manifold.count; ++k) {
-      const double s = pair.manifold.points[static_cast<std::size_t>(k)].separation;
-      if (s < physics::kTouchingDistance) ++out.points;
-      out.depth = std::max(out.depth, -s);
+      if (pair.manifold.points[static_cast<std::size_t>(k)].separation <
+          physics::kTouchingDistance) {
+        ++points;
+      }
     }
   }
-  for (std::size_t i = 0; i < states.size(); ++i) {
-    for (const physics::Manifold& m : contacts.memory.planes[i]) out.points += m.count;
-    for (const physics::Plane& plane : pile.planes) {
-      out.depth = std::max(out.depth, -physics::closest_corner_separation(
-                                          states[i], 0.5 * pile.boxes[i].size, plane));
-    }
+  for (const std::vector<physics::Manifold>& planes : contacts.memory.planes) {
+    for (const physics::Manifold& m : planes) points += m.count;
   }
-  return out;
+  return points;
 }
 
 }  // namespace
@@ -56,6 +46,8 @@ PileRun run_pile_in_tumble(const Pile& pile, const StepObserver& observer) {
   std::vector<physics::BodyState> next(states.size());
   physics::WorldContacts contacts;
   const physics::ContactSettings settings;
+  PileDepth depth_of;
+  std::vector<physics::BoxPose> poses(pile.boxes.size());
   PileRun run;
   run.engine = tumble_engine_name();
   for (int n = 0; n < pile.steps; ++n) {
@@ -68,10 +60,15 @@ PileRun run_pile_in_tumble(const Pile& pile, const StepObserver& observer) {
     states.swap(next);
     run.step_ms.push_back(std::chrono::duration<double, std::milli>(wall_end - wall_start).count());
     run.step_cpu_ms.push_back(1000.0 * static_cast<double>(cpu_end - cpu_start) / CLOCKS_PER_SEC);
-    const ContactCount count = count_contacts(contacts, states, pile);
-    run.contacts.push_back(count.points);
-    run.depth_m.push_back(count.depth);
-    run.largest_penetration_m = std::max(run.largest_penetration_m, count.depth);
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      poses[i] = {.position = states[i].position(),
+                  .rotation = states[i].rotation(),
+                  .half_size = models[i].half_size};
+    }
+    const double depth = depth_of(pile, poses);
+    run.contacts.push_back(count_points(contacts));
+    run.depth_m.push_back(depth);
+    run.largest_penetration_m = std::max(run.largest_penetration_m, depth);
     double top = 0.0;
     for (const physics::BodyState& s : states) top = std::max(top, s.velocity().norm());
     run.top_speed.push_back(top);

@@ -43,7 +43,9 @@ inline constexpr int kSubsteps = 4;  // Box2D's default for a 60 Hz step
 // the floor). With this rule (and the planes' corners found again, island_solve.cpp) one sub-step
 // per 2 cm up to 16 took the whole 20 s run to 1.6 cm deep at most; one per 1 cm up to 32 to
 // 0.84 cm (seeds 2 and 3: 0.83 and 0.92 cm), the pour's steps costing about twice as much. Once
-// the pile settles its islands take four: the median step is unchanged.
+// the pile settles its islands take four: the median step is unchanged. (These depths are the
+// manifolds', as found; from the poses at each step's end the pour goes 10-14 cm deep, a box
+// falling on beside one that lands: docs/performance.md, "The depth, measured from the poses".)
 inline constexpr double kSubstepReach = 0.01;
 inline constexpr int kMostSubsteps = 32;
 

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 namespace tumble::bench {
 namespace {
@@ -129,6 +131,29 @@ TEST(Pile, InsideBinIsTheWallsAndTheFloor) {
   EXPECT_FALSE(inside_bin(pile, Vec3(3.01, 1.0, 0.0)));
   EXPECT_FALSE(inside_bin(pile, Vec3(0.0, 1.0, -3.01)));
   EXPECT_FALSE(inside_bin(pile, Vec3(0.0, -0.01, 0.0)));
+}
+
+// The depth of a pile's poses is the deepest of the boxes' overlaps with each other and with the
+// planes, from the poses alone: two unit cubes 3 cm into each other face-on, a third 2 cm into
+// the floor, a fourth turned 45 degrees about y and 5 cm into the wall at x = 3 with a corner.
+TEST(Pile, DepthIsTheDeepestOverlapOfThePoses) {
+  const Pile pile = make_pile(0, 1);
+  const Vec3 half(0.5, 0.5, 0.5);
+  const physics::Mat3 turned =
+      Eigen::AngleAxisd(std::numbers::pi / 4, Vec3::UnitY()).toRotationMatrix();
+  std::vector<physics::BoxPose> poses = {
+      {.position = Vec3(-1.0, 2.0, 0.0), .rotation = physics::Mat3::Identity(), .half_size = half},
+      {.position = Vec3(-0.03, 2.0, 0.0), .rotation = physics::Mat3::Identity(), .half_size = half},
+      {.position = Vec3(0.0, 0.48, -1.5),
+       .rotation = physics::Mat3::Identity(),
+       .half_size = half}};
+  PileDepth depth;
+  EXPECT_NEAR(depth(pile, poses), 0.03, 1e-12);
+  poses[1].position.x() = 0.1;  // apart: the floor's 2 cm is the deepest
+  EXPECT_NEAR(depth(pile, poses), 0.02, 1e-12);
+  poses.push_back(
+      {.position = Vec3(3.05 - std::sqrt(0.5), 1.0, 1.5), .rotation = turned, .half_size = half});
+  EXPECT_NEAR(depth(pile, poses), 0.05, 1e-12);
 }
 
 }  // namespace
