@@ -10,7 +10,7 @@ cmake_minimum_required(VERSION 3.25)
 
 set(parts common physics sim scene io render sys diff view pipeline job bench bench/jobs cli)
 set(allowed_common common)
-set(allowed_physics physics)
+set(allowed_physics physics common)
 set(allowed_sim sim physics common)
 set(allowed_scene scene sim physics common)
 set(allowed_io io common)

@@ -13,12 +13,7 @@ Vec3 through_body_tensor(const Mat3& rotation, const Vec3& diagonal, const Vec3&
 }  // namespace
 
 BodyConstants cube_constants(double mass, double side) {
-  const double inertia = mass * side * side / 6.0;
-  return BodyConstants{.mass = mass,
-                       .inverse_mass = 1.0 / mass,
-                       .inertia = Vec3::Constant(inertia),
-                       .inverse_inertia = Vec3::Constant(1.0 / inertia),
-                       .isotropic = true};
+  return constants_from_moments(mass, Vec3::Constant(mass * side * side / 6.0));
 }
 
 BodyConstants box_constants(double mass, const Vec3& size) {
@@ -26,11 +21,15 @@ BodyConstants box_constants(double mass, const Vec3& size) {
   const Vec3 inertia =
       mass / 12.0 *
       Vec3(squared.y() + squared.z(), squared.x() + squared.z(), squared.x() + squared.y());
+  return constants_from_moments(mass, inertia);
+}
+
+BodyConstants constants_from_moments(double mass, const Vec3& moments) {
   return BodyConstants{.mass = mass,
                        .inverse_mass = 1.0 / mass,
-                       .inertia = inertia,
-                       .inverse_inertia = inertia.cwiseInverse(),
-                       .isotropic = inertia.x() == inertia.y() && inertia.y() == inertia.z()};
+                       .inertia = moments,
+                       .inverse_inertia = moments.cwiseInverse(),
+                       .isotropic = moments.x() == moments.y() && moments.y() == moments.z()};
 }
 
 Vec3 apply_inverse_inertia_world(const BodyConstants& constants, const Quat& orientation,

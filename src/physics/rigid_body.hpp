@@ -22,6 +22,8 @@ struct BodyConstants {
   bool isotropic = true;
 };
 
+// The constants of a body of `mass` (kg) with principal `moments` (kg m², body frame).
+BodyConstants constants_from_moments(double mass, const Vec3& moments);
 // A uniform-density cube: I = m s² / 6 about every axis through the centre.
 BodyConstants cube_constants(double mass /* kg */, double side /* m */);
 // A uniform-density box with edge lengths `size` along the body axes:
