@@ -119,7 +119,7 @@ void StepBoxRestingOnPenaltyPlane(benchmark::State& state) {
   const ContactSettings contact{.method = ContactMethod::penalty};
   model = with_penalty_contact(model, {Plane{}}, contact.stiffness, contact.damping);
   const double sink = model.constants.mass * 9.81 / (4.0 * contact.stiffness);  // m
-  const BodyState start = box_at(model, model.half_size.y() - sink);
+  const BodyState start = box_at(model, model.shape.half_size.y() - sink);
   for (auto _ : state) benchmark::DoNotOptimize(step(integrator, model, start, 0.0, kDt));
   state.SetLabel(std::string(integrator_name(integrator)));
 }

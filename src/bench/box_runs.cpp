@@ -7,7 +7,7 @@ using namespace physics;
 BodyModel box_under_gravity(std::int64_t shape) {
   const Vec3 size = shape == 0 ? Vec3::Ones() : Vec3(1.0, 0.3, 2.0);
   BodyModel model{.constants = box_constants(1.0, size), .forces = {Gravity{}}};
-  model.half_size = 0.5 * size;
+  model.shape.half_size = 0.5 * size;
   return model;
 }
 
@@ -23,7 +23,7 @@ BoxRun::BoxRun(Stepper stepper, Integrator integrator, std::int64_t shape, doubl
       settings_{.sleep = sleep},
       next_(1) {
   const BodyModel& model = models_[0];
-  states_ = {box_at(model, model.half_size.y())};
+  states_ = {box_at(model, model.shape.half_size.y())};
   if (stepper == Stepper::free) return;
   planes_ = {Plane{}};
   for (int n = 0; n < 600; ++n) advance();

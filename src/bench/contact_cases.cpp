@@ -26,7 +26,7 @@ struct CubeOnFloor {
 CubeOnFloor cube_on_floor(const physics::Material& material) {
   CubeOnFloor out{.model = {.constants = physics::cube_constants(1.0, 1.0),
                             .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
-                            .half_size = Vec3::Constant(0.5),
+                            .shape = physics::box_shape(Vec3::Constant(0.5)),
                             .material = material},
                   .planes = {physics::Plane{.material = material}},
                   .penalty = {.method = physics::ContactMethod::penalty}};
@@ -41,7 +41,7 @@ CubeOnFloor cube_on_floor(const physics::Material& material) {
 // The height of the lowest corner above the floor (m): negative inside it.
 double lowest_corner(const BodyState& state, const physics::BodyModel& model,
                      const physics::Plane& floor) {
-  return physics::closest_corner_separation(state, model.half_size, floor);
+  return physics::closest_corner_separation(state, model.shape.half_size, floor);
 }
 
 // The bottom face's height at the first apex after the first bounce (m): the vertex of the
@@ -161,7 +161,7 @@ ContactCase rest() {
             for (std::size_t n = first; n < states.size(); ++n) {
               penetration = std::max(penetration, -lowest_corner(states[n], model, floor));
               for (int feature = 0; feature < 8; ++feature) {
-                const Vec3 c = physics::corner(model.half_size, feature);
+                const Vec3 c = physics::corner(model.shape.half_size, feature);
                 motion = std::max(motion, (physics::body_point_to_world(states[n], c) -
                                            physics::body_point_to_world(states[n - 1], c))
                                               .norm());
@@ -185,7 +185,7 @@ double energy_above_rest(const ContactCase& c, const BodyState& state) {
     if (const auto* g = std::get_if<physics::Gravity>(&law)) gravity += g->acceleration;
   }
   const double height = physics::separation(c.planes.front(), state.position()) -
-                        c.model.half_size.minCoeff();  // m, above the lowest rest on a face
+                        c.model.shape.half_size.minCoeff();  // m, above the lowest rest on a face
   return physics::kinetic_energy(state) + c.model.constants.mass * gravity.norm() * height;
 }
 

@@ -68,7 +68,7 @@ sim::Simulation simulation_of(const World& world) {
   for (const Box& box : world.boxes) {
     physics::BodyModel model{.constants = physics::box_constants(box.mass, box.size),
                              .forces = {},
-                             .half_size = box.size / 2.0,
+                             .shape = physics::box_shape(box.size / 2.0),
                              .material = box.material};
     if (!box.gravity.isZero()) model.forces.push_back(physics::Gravity{box.gravity});
     if (!box.push.isZero()) model.forces.push_back(physics::ConstantForce{box.push});

@@ -38,7 +38,7 @@ PileRun run_pile_in_tumble(const Pile& pile, const StepObserver& observer) {
   for (const PileBox& box : pile.boxes) {
     models.push_back({.constants = physics::box_constants(box.mass, box.size),
                       .forces = {physics::Gravity{.acceleration = pile.gravity}},
-                      .half_size = 0.5 * box.size,
+                      .shape = physics::box_shape(0.5 * box.size),
                       .material = pile.box_material});
     states.push_back(physics::make_state(models.back().constants, box.position, box.velocity,
                                          box.orientation, box.angular_velocity));
@@ -63,7 +63,7 @@ PileRun run_pile_in_tumble(const Pile& pile, const StepObserver& observer) {
     for (std::size_t i = 0; i < states.size(); ++i) {
       poses[i] = {.position = states[i].position(),
                   .rotation = states[i].rotation(),
-                  .half_size = models[i].half_size};
+                  .half_size = models[i].shape.half_size};
     }
     const double depth = depth_of(pile, poses);
     run.contacts.push_back(count_points(contacts));

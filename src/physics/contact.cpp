@@ -1,6 +1,7 @@
 #include "physics/contact.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace tumble::physics {
 
@@ -69,6 +70,39 @@ Manifold box_plane_manifold(const CornerSeparations& separations, const Vec3& ha
     point.separation = depths[i];
   }
   return out;
+}
+
+CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, const Vec3& position,
+                                    const Plane& plane) {
+  if (shape.kind == ShapeKind::box) {
+    return corner_separations(rotation, position, shape.half_size, plane);
+  }
+  CornerSeparations out;
+  out.fill(std::numeric_limits<double>::infinity());
+  out[0] = separation(plane, position) - shape.radius;
+  return out;
+}
+
+Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations,
+                        const Mat3& rotation, const Vec3& normal, double margin) {
+  if (shape.kind == ShapeKind::box) return box_plane_manifold(separations, shape.half_size, margin);
+  Manifold out;
+  if (!(separations[0] < margin)) return out;
+  out.count = 1;
+  out.points[0].feature = 0;
+  out.points[0].body_point = -shape.radius * (rotation.transpose() * normal);
+  out.points[0].separation = separations[0];
+  return out;
+}
+
+double closest_separation(const BodyState& state, const Shape& shape, const Plane& plane) {
+  if (shape.kind == ShapeKind::box) return closest_corner_separation(state, shape.half_size, plane);
+  return separation(plane, state.position()) - shape.radius;
+}
+
+RoundedPoint rounded_point(const Shape& shape, int feature) {
+  if (shape.kind == ShapeKind::box) return {.core = corner(shape.half_size, feature)};
+  return {.core = Vec3::Zero(), .radius = shape.radius};
 }
 
 }  // namespace tumble::physics

@@ -106,6 +106,30 @@ Manifold box_plane_manifold(const CornerSeparations& separations, const Vec3& ha
 // The lowest separation of any corner of the box from the plane (m; negative inside).
 double closest_corner_separation(const BodyState& state, const Vec3& half_size, const Plane& plane);
 
+// The same for any shape, indexed by feature: a box's eight corners; a sphere's one point nearest
+// the plane (feature 0; the others +∞). `rotation` body to world, `position` the centre (m).
+CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, const Vec3& position,
+                                    const Plane& plane);
+
+// The manifold of the shape's points (from plane_separations) below `margin` (m) against a plane
+// of unit `normal`, the body at `rotation`: a box's corners as box_plane_manifold gives them; a
+// sphere's point nearest the plane, its body point −r Rᵀn (it moves on the surface as the ball
+// rolls: it is found again at each step).
+Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations,
+                        const Mat3& rotation, const Vec3& normal, double margin);
+
+// The lowest separation of the shape at `state` from the plane (m; negative inside).
+double closest_separation(const BodyState& state, const Shape& shape, const Plane& plane);
+
+// A shape's point `feature` (of plane_separations) as a core point fixed in the body (m, body
+// frame) with `radius` (m) of rounding around it: the point that touches a plane of normal n is
+// core − radius Rᵀn. A box's corners have no rounding; a sphere is its centre and its radius.
+struct RoundedPoint {
+  Vec3 core = Vec3::Zero();
+  double radius = 0.0;
+};
+RoundedPoint rounded_point(const Shape& shape, int feature);
+
 // The body-frame offset of corner `feature` (bit i: sign along body axis i).
 inline Vec3 corner(const Vec3& half_size, int feature) {
   return Vec3((feature & 1) ? half_size.x() : -half_size.x(),

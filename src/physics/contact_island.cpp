@@ -112,7 +112,7 @@ void hold_energy(std::span<const IslandBody> bodies, std::span<BodyState> out) {
     const double end_kinetic = kinetic_energy(out[i]);
     before += kinetic_energy(*bodies[i].start) - force.dot(bodies[i].start->position());
     after += end_kinetic - force.dot(out[i].position());
-    scale += end_kinetic + force.norm() * bodies[i].model->half_size.norm();
+    scale += end_kinetic + force.norm() * bodies[i].model->shape.half_size.norm();
     kinetic += end_kinetic;
     pull += force.squaredNorm();
   }

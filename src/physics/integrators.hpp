@@ -16,8 +16,7 @@ namespace tumble::physics {
 struct BodyModel {
   BodyConstants constants;
   std::vector<ForceLaw> forces;
-  // The box the body is, for contact: half its edge lengths along the body axes (m).
-  Vec3 half_size = Vec3::Constant(0.5);
+  Shape shape = {};  // for contact: a unit cube unless said
   Material material = {};
   bool collides = true;  // with other bodies (planes always stop it)
 };

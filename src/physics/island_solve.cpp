@@ -49,9 +49,9 @@ void refind_pair(const StepContext& context, const PairRows& rows, double left) 
   const BodyState& a_state = context.scratch.substep_bodies[context.scratch.local[a]].state;
   const BodyState& b_state = context.scratch.substep_bodies[context.scratch.local[b]].state;
   const Mat3 a_rotation = a_state.rotation(), b_rotation = b_state.rotation();
-  PairManifold found = box_box_manifold(pose_of(a_state, a_rotation, model_a.half_size),
-                                        pose_of(b_state, b_rotation, model_b.half_size),
-                                        kTouchingDistance + left * rows.reach);
+  PairManifold found = pair_manifold(pose_of(a_state, a_rotation, model_a.shape),
+                                     pose_of(b_state, b_rotation, model_b.shape),
+                                     kTouchingDistance + left * rows.reach);
   // A point found again keeps its impulse.
   ContactRows& solve = context.scratch.rows;
   const RowSlots at = slots_of(rows);
@@ -78,9 +78,9 @@ void write_plane_rows(const StepContext& context, const PlaneRows& rows, const P
   Manifold& manifold = context.memory.planes[rows.body][rows.plane];
   ContactRows& solve = context.scratch.rows;
   const RowSlots at = slots_of(rows);
-  Manifold found =
-      box_plane_manifold(corner_separations(pose.rotation, pose.position, model.half_size, plane),
-                         model.half_size, margin);
+  Manifold found = plane_manifold(
+      model.shape, plane_separations(model.shape, pose.rotation, pose.position, plane),
+      pose.rotation, plane.normal, margin);
   found.friction = manifold.friction;
   found.patch = manifold.patch;
   CarriedImpulses carried;
@@ -108,7 +108,7 @@ std::span<const std::uint32_t> start_island(const StepContext& context, std::uin
 
 // How far body i's corners can swing about its centre in the step (m).
 double swing(const StepContext& context, std::uint32_t i) {
-  return corner_swing(context.in[i], context.scratch.advances[i].end, context.models[i].half_size,
+  return corner_swing(context.in[i], context.scratch.advances[i].end, context.models[i].shape,
                       context.dt);
 }
 
@@ -133,7 +133,7 @@ double plane_closing(const StepContext& context, std::uint32_t i) {
   const BodyState& start = context.in[i];
   const BodyState& end = context.scratch.advances[i].end;
   const double near =
-      context.models[i].half_size.norm() + context.scratch.reaches[i] + kTouchingDistance;
+      context.models[i].shape.half_size.norm() + context.scratch.reaches[i] + kTouchingDistance;
   double closing = -1.0;  // no plane within reach
   for (const Plane& plane : context.planes) {
     if (separation(plane, start.position()) > near) continue;
@@ -182,7 +182,7 @@ void add_substep_plane_rows(const StepContext& context, std::span<const std::uin
     std::vector<Manifold>& manifolds = context.memory.planes[i];
     manifolds.resize(context.planes.size());
     const BodyState& start = context.in[i];
-    const double near = context.models[i].half_size.norm() + margin + kRefindReach;
+    const double near = context.models[i].shape.half_size.norm() + margin + kRefindReach;
     for (std::uint32_t p = 0; p < context.planes.size(); ++p) {
       if (separation(context.planes[p], start.position()) > near) {
         manifolds[p].count = 0;
@@ -228,8 +228,8 @@ void refind(const StepContext& context, int substep, int substeps) {
     const BodyModel& model = context.models[rows.body];
     // As far as it can go in what is left of the step, at its speeds now or the start's, and
     // as far again as the projection may push it (a box wedged under another is pushed down).
-    const double going = context.dt * (now.velocity().norm() +
-                                       now.angular_velocity().norm() * model.half_size.norm());
+    const double going = context.dt * (now.velocity().norm() + now.angular_velocity().norm() *
+                                                                   model.shape.half_size.norm());
     const double margin = kTouchingDistance +
                           left * std::max(context.scratch.reaches[rows.body], going) + kRefindReach;
     const Mat3 rotation = now.rotation();

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "physics/pair_contact.hpp"
 #include "physics/world_step.hpp"
 
 namespace tumble::physics {
@@ -20,16 +21,17 @@ namespace tumble::physics {
 // bench contact` sank 30 cm so while pouring). Box2D's speculative distance is 2 cm.
 inline constexpr double kRefindReach = 0.02;
 
-// How far a box's corners can swing about its centre in a step of h (s) from `start` to `end`:
-// its fastest turn times its half diagonal (m).
-inline double corner_swing(const BodyState& start, const BodyState& end, const Vec3& half_size,
+// How far a shape's surface can swing about its centre in a step of h (s) from `start` to `end`:
+// a box's fastest turn times its half diagonal (m); a sphere's surface turns in place.
+inline double corner_swing(const BodyState& start, const BodyState& end, const Shape& shape,
                            double h) {
+  if (shape.kind == ShapeKind::sphere) return 0.0;
   return h * std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
-         half_size.norm();
+         shape.half_size.norm();
 }
 
-inline BoxPose pose_of(const BodyState& state, const Mat3& rotation, const Vec3& half_size) {
-  return {.position = state.position(), .rotation = rotation, .half_size = half_size};
+inline ShapePose pose_of(const BodyState& state, const Mat3& rotation, const Shape& shape) {
+  return {.position = state.position(), .rotation = rotation, .shape = &shape};
 }
 
 // A small island (a tower, a pyramid, a few boxes knocking): every body's free step, then one

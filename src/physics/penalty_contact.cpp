@@ -39,7 +39,7 @@ Wrench penalty_contact_wrench(const PenaltyContact& law, const BodyState& state)
 BodyModel with_penalty_contact(BodyModel model, std::vector<Plane> planes, double stiffness,
                                double damping) {
   model.forces.push_back(PenaltyContact{.planes = std::move(planes),
-                                        .half_size = model.half_size,
+                                        .half_size = model.shape.half_size,
                                         .material = model.material,
                                         .stiffness = stiffness,
                                         .damping = damping});

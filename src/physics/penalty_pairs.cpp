@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "physics/box_box.hpp"
+#include "physics/pair_contact.hpp"
 
 namespace tumble::physics {
 
@@ -12,9 +12,8 @@ void PenaltyPairs::add(std::span<const BodyState> states, double /*t*/,
     const BodyState& a = states[i];
     const BodyState& b = states[j];
     const Mat3 rotation_a = a.rotation(), rotation_b = b.rotation();
-    const PairManifold manifold =
-        box_box_manifold({a.position(), rotation_a, models_[i].half_size},
-                         {b.position(), rotation_b, models_[j].half_size}, 0.0);
+    const PairManifold manifold = pair_manifold({a.position(), rotation_a, &models_[i].shape},
+                                                {b.position(), rotation_b, &models_[j].shape}, 0.0);
     if (manifold.count == 0) continue;
     const double friction = combine(models_[i].material, models_[j].material).friction;
     const Vec3& normal = manifold.normal;
@@ -56,13 +55,13 @@ void step_penalty_world(Integrator integrator, std::span<const BodyModel> models
     for (std::uint32_t i = 0; i < count; ++i) {
       if (!models[i].collides) continue;
       const BodyState& state = in[i];
-      const double reach =
-          (state.velocity().norm() + state.angular_velocity().norm() * models[i].half_size.norm()) *
-              dt +
-          kPenaltyReach;
+      const double reach = (state.velocity().norm() +
+                            state.angular_velocity().norm() * models[i].shape.half_size.norm()) *
+                               dt +
+                           kPenaltyReach;
       scratch.colliders.push_back(i);
       scratch.bounds.push_back(
-          box_bounds(state.position(), state.rotation(), models[i].half_size, reach));
+          box_bounds(state.position(), state.rotation(), models[i].shape.half_size, reach));
     }
     overlapping_pairs(scratch.bounds, scratch.order, scratch.candidates);
     for (const auto& [first, second] : scratch.candidates) {

@@ -9,30 +9,30 @@
 namespace tumble::physics {
 namespace {
 
-// Whether the box's bounding sphere at `position` (m, world) comes within `margin` (m) of any
+// Whether the shape's bounding sphere at `position` (m, world) comes within `margin` (m) of any
 // plane: one dot product per plane, and the whole test for a body that touches nothing.
-bool near_any(const Vec3& position, const Vec3& half_size, std::span<const Plane> planes,
+bool near_any(const Vec3& position, const Shape& shape, std::span<const Plane> planes,
               double margin) {
-  const double reach = half_size.norm() + margin;
+  const double reach = bounding_radius(shape) + margin;
   return std::any_of(planes.begin(), planes.end(),
                      [&](const Plane& plane) { return separation(plane, position) <= reach; });
 }
 
-// Into `out`, one per plane: the corner separations of the box at `pose`, or +∞ for every corner
-// of a plane that the box's bounding sphere is further from than `margin` (m). Returns the lowest
-// separation.
-double corner_separations(const PoseRef& pose, const Vec3& half_size, std::span<const Plane> planes,
-                          double margin, std::vector<CornerSeparations>& out) {
+// Into `out`, one per plane: the separations of the shape's points at `pose`, or +∞ for every
+// point of a plane that the shape's bounding sphere is further from than `margin` (m). Returns the
+// lowest separation.
+double plane_separations(const PoseRef& pose, const Shape& shape, std::span<const Plane> planes,
+                         double margin, std::vector<CornerSeparations>& out) {
   const Vec3& position = pose.position;
   out.resize(planes.size());
-  const double reach = half_size.norm() + margin;
+  const double reach = bounding_radius(shape) + margin;
   double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t p = 0; p < planes.size(); ++p) {
     if (separation(planes[p], position) > reach) {
       out[p].fill(std::numeric_limits<double>::infinity());
       continue;
     }
-    out[p] = corner_separations(pose.rotation, position, half_size, planes[p]);
+    out[p] = plane_separations(shape, pose.rotation, position, planes[p]);
     lowest = std::min(lowest, *std::min_element(out[p].begin(), out[p].end()));
   }
   return lowest;
@@ -43,16 +43,16 @@ double lowest_separation(const BodyState& state, std::span<const Plane> planes,
   const Mat3 rotation = state.rotation();
   double lowest = std::numeric_limits<double>::infinity();
   for (const ImpactCorner& c : corners) {
-    lowest =
-        std::min(lowest, separation(planes[c.plane], rotation * c.body_point + state.position()));
+    lowest = std::min(
+        lowest, separation(planes[c.plane], rotation * c.body_point + state.position()) - c.radius);
   }
   return lowest;
 }
 
-// Into `out`: the corners inside a plane at the end of the step (`end`, the separations there)
-// that were apart from it at `start` (by more than kTouchingDistance).
+// Into `out`: the shape's points inside a plane at the end of the step (`end`, the separations
+// there) that were apart from it at `start` (by more than kTouchingDistance).
 void find_impact_corners(const BodyState& start, const std::vector<CornerSeparations>& end,
-                         const Vec3& half_size, std::span<const Plane> planes,
+                         const Shape& shape, std::span<const Plane> planes,
                          std::vector<ImpactCorner>& out) {
   out.clear();
   Mat3 start_rotation;
@@ -64,11 +64,12 @@ void find_impact_corners(const BodyState& start, const std::vector<CornerSeparat
       rotated = true;
     }
     const CornerSeparations before =
-        corner_separations(start_rotation, start.position(), half_size, planes[p]);
+        plane_separations(shape, start_rotation, start.position(), planes[p]);
     for (int feature = 0; feature < 8; ++feature) {
       const auto f = static_cast<std::size_t>(feature);
       if (end[p][f] < 0.0 && before[f] > kTouchingDistance) {
-        out.push_back({p, corner(half_size, feature)});
+        const RoundedPoint point = rounded_point(shape, feature);
+        out.push_back({.plane = p, .body_point = point.core, .radius = point.radius});
       }
     }
   }
@@ -116,13 +117,13 @@ double time_of_impact(const StepContext& context, const BodyModel& model, const 
 // such a step back whole (its impulse balances the step's load, impulse_position_weight); an
 // impact there found corners at both faces and left the cube 0.3 m inside. A box tipping onto a
 // face still has its pivot within a free fall's step of the surface (1.4 mm at 1/60 s).
-bool passed_through(const BodyState& at, const Vec3& half_size, std::span<const Plane> planes,
+bool passed_through(const BodyState& at, const Shape& shape, std::span<const Plane> planes,
                     const std::vector<ImpactCorner>& corners) {
   const Mat3 rotation = at.rotation();
-  const double thinnest = half_size.minCoeff();
+  const double thinnest = shape.half_size.minCoeff();
   for (const ImpactCorner& c : corners) {
     const CornerSeparations there =
-        corner_separations(rotation, at.position(), half_size, planes[c.plane]);
+        plane_separations(shape, rotation, at.position(), planes[c.plane]);
     if (*std::min_element(there.begin(), there.end()) < -thinnest) return true;
   }
   return false;
@@ -154,8 +155,9 @@ double fastest_approach(const BodyState& at, std::span<const Plane> planes,
   const Mat3 rotation = at.rotation();
   double fastest = 0.0;  // m/s
   for (const ImpactCorner& c : corners) {
-    const Vec3 point = rotation * c.body_point + at.position();
-    fastest = std::max(fastest, -planes[c.plane].normal.dot(point_velocity(at, point)));
+    const Vec3& n = planes[c.plane].normal;
+    const Vec3 point = rotation * c.body_point + at.position() - c.radius * n;
+    fastest = std::max(fastest, -n.dot(point_velocity(at, point)));
   }
   return fastest;
 }
@@ -165,15 +167,16 @@ BodyState resolve_impact(const StepContext& context, std::uint32_t body, const B
   const BodyModel& model = context.models[body];
   const Mat3 rotation = at.rotation();
   std::vector<CornerSeparations>& separations = context.scratch.separations[body];
-  corner_separations({at.position(), rotation}, model.half_size, context.planes, kTouchingDistance,
-                     separations);
+  plane_separations({at.position(), rotation}, model.shape, context.planes, kTouchingDistance,
+                    separations);
   ContactRows& rows = context.scratch.rows;
   rows.clear();
   rows.bodies.push_back(SolverBody::from(at, model.constants, rotation));
   for (std::uint32_t p = 0; p < context.planes.size(); ++p) {
-    const Manifold found = box_plane_manifold(separations[p], model.half_size, kTouchingDistance);
-    if (found.count == 0) continue;
     const Plane& plane = context.planes[p];
+    const Manifold found =
+        plane_manifold(model.shape, separations[p], rotation, plane.normal, kTouchingDistance);
+    if (found.count == 0) continue;
     append_rows({.manifold = found,
                  .plane = plane,
                  .material = combine(model.material, plane.material),
@@ -192,14 +195,14 @@ BodyState resolve_impact(const StepContext& context, std::uint32_t body, const B
   return with_impulses(at, rows.bodies[0], model.constants);
 }
 
-// Whether a corner of the box at `state` is within kTouchingDistance of a plane; if so, into
-// `separations` its corner separations and into `rotation` its rotation matrix.
-bool touching(const BodyState& state, const Vec3& half_size, std::span<const Plane> planes,
+// Whether a point of the shape at `state` is within kTouchingDistance of a plane; if so, into
+// `separations` its points' separations and into `rotation` its rotation matrix.
+bool touching(const BodyState& state, const Shape& shape, std::span<const Plane> planes,
               std::vector<CornerSeparations>& separations, Mat3& rotation) {
-  if (!near_any(state.position(), half_size, planes, kTouchingDistance)) return false;
+  if (!near_any(state.position(), shape, planes, kTouchingDistance)) return false;
   rotation = state.rotation();
-  return corner_separations({state.position(), rotation}, half_size, planes, kTouchingDistance,
-                            separations) < kTouchingDistance;
+  return plane_separations({state.position(), rotation}, shape, planes, kTouchingDistance,
+                           separations) < kTouchingDistance;
 }
 
 }  // namespace
@@ -229,7 +232,7 @@ void advance_among_planes(const StepContext& context, std::uint32_t body, SlowIm
   out.end = step(integrator, model, context.in[body], context.t, context.dt);
   out.remaining = context.dt;
   out.slow_impact = false;
-  out.touching = touching(out.end, model.half_size, planes, separations, out.rotation);
+  out.touching = touching(out.end, model.shape, planes, separations, out.rotation);
   if (!out.touching) {
     for (Manifold& m : manifolds) m.count = 0;  // nothing to warm start from
     return;
@@ -238,12 +241,11 @@ void advance_among_planes(const StepContext& context, std::uint32_t body, SlowIm
   double time = context.t;
   double slow_speed = -1.0;  // m/s, found at the first impact (a resting body has none)
   for (int impacts = 0; impacts < kMaxImpactsPerStep; ++impacts) {
-    find_impact_corners(state, separations, model.half_size, planes,
-                        context.scratch.impact_corners);
+    find_impact_corners(state, separations, model.shape, planes, context.scratch.impact_corners);
     if (context.scratch.impact_corners.empty()) break;
     const double until = time_of_impact(context, model, state, time, out.remaining);
     const BodyState at = until > 0.0 ? step(integrator, model, state, time, until) : state;
-    if (passed_through(at, model.half_size, planes, context.scratch.impact_corners)) break;
+    if (passed_through(at, model.shape, planes, context.scratch.impact_corners)) break;
     if (slow_speed < 0.0) slow_speed = slow_impact_speed(context, model);
     if (fastest_approach(at, planes, context.scratch.impact_corners) < slow_speed) {
       // In the solve: the end of the free step stands, touching, and the island takes it.
@@ -254,7 +256,7 @@ void advance_among_planes(const StepContext& context, std::uint32_t body, SlowIm
     time += until;
     out.remaining -= until;
     out.end = step(integrator, model, state, time, out.remaining);
-    out.touching = touching(out.end, model.half_size, planes, separations, out.rotation);
+    out.touching = touching(out.end, model.shape, planes, separations, out.rotation);
     if (!out.touching) {
       for (Manifold& m : manifolds) m.count = 0;
       return;
@@ -269,7 +271,8 @@ void append_plane_rows(const StepContext& context, const BodyInRows& body, doubl
   for (std::uint32_t p = 0; p < context.planes.size(); ++p) {
     const Plane& plane = context.planes[p];
     Manifold& manifold = manifolds[p];
-    Manifold found = box_plane_manifold(separations[p], model.half_size, margin);
+    Manifold found =
+        plane_manifold(model.shape, separations[p], body.rotation, plane.normal, margin);
     // Warm start from the last step's impulses of the same corners, and of the same plane's
     // friction.
     if (found.count > 0 && manifold.count > 0) {
@@ -296,12 +299,12 @@ void append_speculative_plane_rows(const StepContext& context, const BodyInRows&
   const BodyState& start = context.in[body.body];
   std::vector<Manifold>& manifolds = context.memory.planes[body.body];
   manifolds.resize(context.planes.size());
-  if (!near_any(start.position(), model.half_size, context.planes, margin)) {
+  if (!near_any(start.position(), model.shape, context.planes, margin)) {
     for (Manifold& m : manifolds) m.count = 0;
     return;
   }
-  corner_separations({start.position(), body.rotation}, model.half_size, context.planes, margin,
-                     context.scratch.separations[body.body]);
+  plane_separations({start.position(), body.rotation}, model.shape, context.planes, margin,
+                    context.scratch.separations[body.body]);
   append_plane_rows(context, body, margin);
 }
 

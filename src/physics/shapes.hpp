@@ -1,6 +1,8 @@
-// The shapes bodies touch: static planes (floor, walls, slopes), and the surface material that a
-// contact between two shapes combines.
+// The shapes of bodies (boxes and spheres), the static planes they touch (floor, walls, slopes),
+// and the surface material that a contact between two shapes combines.
 #pragma once
+
+#include <cstdint>
 
 #include "physics/rigid_body.hpp"
 
@@ -15,6 +17,32 @@ struct Material {
 // What a pair of shapes uses: restitution = max(a, b), friction = sqrt(a b) (as Box2D mixes
 // them), so a bouncy ball bounces on any floor and an ice surface is slippery under any shoe.
 Material combine(const Material& a, const Material& b);
+
+// What a body is, for contact: a box, or a round shape (a sphere) that is a core (a point) with
+// `radius` of rounding around it, as Box2D and Box3D model rounded shapes. The shape is in the
+// body frame, centred on the centre of mass.
+enum class ShapeKind : std::uint8_t { box, sphere };
+
+struct Shape {
+  ShapeKind kind = ShapeKind::box;
+  // Half the edges of the box the shape fits in, along the body axes (m): the box itself for a
+  // box, (r, r, r) for a sphere. Bounds, reaches and swings read it for every shape.
+  Vec3 half_size = Vec3::Constant(0.5);
+  double radius = 0.0;  // m: the sphere's; 0 for a box
+};
+
+// A box of half edges `half_size` (m), or a sphere of `radius` (m).
+inline Shape box_shape(const Vec3& half_size) {
+  return {.kind = ShapeKind::box, .half_size = half_size};
+}
+inline Shape sphere_shape(double radius) {
+  return {.kind = ShapeKind::sphere, .half_size = Vec3::Constant(radius), .radius = radius};
+}
+
+// The radius of the smallest sphere about the centre that holds the shape (m).
+inline double bounding_radius(const Shape& shape) {
+  return shape.kind == ShapeKind::sphere ? shape.radius : shape.half_size.norm();
+}
 
 // A static, infinite plane: the half-space n·x >= offset is outside; bodies stay there.
 struct Plane {

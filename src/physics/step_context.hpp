@@ -15,10 +15,11 @@
 
 namespace tumble::physics {
 
-// A corner of the box that may hit a plane within a step.
+// A point of the body's shape (rounded_point, contact.hpp) that may hit a plane within a step.
 struct ImpactCorner {
   std::size_t plane = 0;
-  Vec3 body_point = Vec3::Zero();  // body frame (m)
+  Vec3 body_point = Vec3::Zero();  // its core, body frame (m)
+  double radius = 0.0;             // its rounding (m): the touching point is radius inside
 };
 
 // A body's step among planes up to its resting contacts: steps 1 and 2 of step_with_planes.

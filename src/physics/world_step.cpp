@@ -15,10 +15,10 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 // step's, or its speed times h, whichever is more: an impact with a plane within the step can
 // bring the end back near the start) plus its corners' swing (its fastest turn times its half
 // diagonal).
-double reach(const BodyState& start, const BodyState& end, const Vec3& half_size, double h) {
+double reach(const BodyState& start, const BodyState& end, const Shape& shape, double h) {
   const double travel = std::max((end.position() - start.position()).norm(),
                                  h * std::max(start.velocity().norm(), end.velocity().norm()));
-  return travel + corner_swing(start, end, half_size, h);
+  return travel + corner_swing(start, end, shape, h);
 }
 
 std::uint32_t find_root(std::vector<std::uint32_t>& root, std::uint32_t i) {
@@ -73,7 +73,7 @@ bool reuse(const StepContext& context, const PairContact& before, double margin,
   const BodyState& b = context.in[pair.bodies.second];
   const Mat3& a_rotation = context.scratch.start_rotations[pair.bodies.first];
   const Mat3& b_rotation = context.scratch.start_rotations[pair.bodies.second];
-  const Vec3& b_half_size = context.models[pair.bodies.second].half_size;
+  const Vec3& b_half_size = context.models[pair.bodies.second].shape.half_size;
   const PairStamp& then = before.stamp;
   if (!then.valid) return false;
   const Vec3 moved = a_rotation.transpose() * (b.position() - a.position()) - then.offset;
@@ -113,10 +113,10 @@ void find_pairs(const StepContext& context) {
     scratch.start_rotations[i] = in[i].rotation();
     const PlaneAdvance& advance = scratch.advances[i];
     const Mat3 end_rotation = advance.touching ? advance.rotation : advance.end.rotation();
-    scratch.bounds.push_back(merged(
-        box_bounds(in[i].position(), scratch.start_rotations[i], models[i].half_size,
-                   kTouchingDistance),
-        box_bounds(advance.end.position(), end_rotation, models[i].half_size, kTouchingDistance)));
+    scratch.bounds.push_back(merged(box_bounds(in[i].position(), scratch.start_rotations[i],
+                                               models[i].shape.half_size, kTouchingDistance),
+                                    box_bounds(advance.end.position(), end_rotation,
+                                               models[i].shape.half_size, kTouchingDistance)));
   }
   overlapping_pairs(scratch.bounds, scratch.order, scratch.candidates);
   const std::vector<PairContact>& last = context.memory.pairs;
@@ -136,9 +136,9 @@ void find_pairs(const StepContext& context) {
       scratch.found.push_back(pair);
       continue;
     }
-    pair.manifold = box_box_manifold(
-        pose_of(in[a], scratch.start_rotations[a], models[a].half_size),
-        pose_of(in[b], scratch.start_rotations[b], models[b].half_size), margin + kReuseDistance);
+    pair.manifold = pair_manifold(pose_of(in[a], scratch.start_rotations[a], models[a].shape),
+                                  pose_of(in[b], scratch.start_rotations[b], models[b].shape),
+                                  margin + kReuseDistance);
     if (pair.manifold.count == 0) continue;
     stamp(context, margin + kReuseDistance, pair);
     if (before) {
@@ -268,7 +268,7 @@ bool wake_touched(const StepContext& context, int islands) {
       memory.still_for[i] = 0.0;
       advance_among_planes(context, i, SlowImpacts::at_their_time);
       scratch.reaches[i] =
-          reach(context.in[i], scratch.advances[i].end, context.models[i].half_size, context.dt);
+          reach(context.in[i], scratch.advances[i].end, context.models[i].shape, context.dt);
       woke = true;
     }
   }
@@ -283,7 +283,7 @@ double point_speed_bound(const BodyState& state, const Vec3& half_size) {
 // Adds dt (s) to the body's time still if it ended the step still, else restarts it; returns
 // whether it has been still for kTimeToSleep and may sleep.
 bool still_long_enough(const BodyModel& model, const BodyState& end, double dt, double& still_for) {
-  const bool still = point_speed_bound(end, model.half_size) < kSleepSpeed;
+  const bool still = point_speed_bound(end, model.shape.half_size) < kSleepSpeed;
   still_for = still ? still_for + dt : 0.0;
   return still_for >= kTimeToSleep && can_sleep(model);
 }
@@ -423,7 +423,7 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
   advance_bodies(context);
   StepScratch& scratch = contacts.scratch;
   for (std::size_t i = 0; i < in.size(); ++i) {
-    scratch.reaches[i] = reach(in[i], scratch.advances[i].end, models[i].half_size, dt);
+    scratch.reaches[i] = reach(in[i], scratch.advances[i].end, models[i].shape, dt);
   }
   int islands = 0;
   do {  // again while bodies woke: what they touch now may be asleep too

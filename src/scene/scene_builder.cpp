@@ -30,7 +30,7 @@ physics::Plane plane(const PlaneSpec& spec) {
 physics::BodyModel body_model(const Scene& scene, const BodySpec& body) {
   physics::BodyModel model{.constants = body_constants(body),
                            .forces = body.forces,
-                           .half_size = 0.5 * body.size,
+                           .shape = physics::box_shape(0.5 * body.size),
                            .material = body.material,
                            .collides = body.collide};
   const physics::ContactSettings& contact = scene.physics.contact;

@@ -104,7 +104,7 @@ TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
   for (std::size_t i = 0; i < count; ++i) {
     out.group[i] = i;
     for (const physics::Plane& plane : planes) {
-      if (physics::closest_corner_separation(initial[i], models[i].half_size, plane) < kTouching) {
+      if (physics::closest_separation(initial[i], models[i].shape, plane) < kTouching) {
         out.on_plane[i] = out.touches[i] = true;
       }
     }
@@ -112,8 +112,10 @@ TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
   for (std::size_t i = 0; i < count; ++i) {
     for (std::size_t j = i + 1; j < count && settings.collide_bodies; ++j) {
       if (!models[i].collides || !models[j].collides) continue;
-      const physics::BoxPose a{initial[i].position(), initial[i].rotation(), models[i].half_size};
-      const physics::BoxPose b{initial[j].position(), initial[j].rotation(), models[j].half_size};
+      const physics::BoxPose a{initial[i].position(), initial[i].rotation(),
+                               models[i].shape.half_size};
+      const physics::BoxPose b{initial[j].position(), initial[j].rotation(),
+                               models[j].shape.half_size};
       if (physics::box_box_axis(a, b).separation >= kTouching) continue;
       out.touches[i] = out.touches[j] = true;
       out.group[root_of(out.group, i)] = root_of(out.group, j);
@@ -169,7 +171,7 @@ std::vector<BodiesAdvice> check_contact_world(const std::vector<physics::BodyMod
   for (std::size_t i = 0; i < count; ++i) {
     if (!touches[i] || !by_rows(i)) continue;
     const double acceleration = constant_acceleration(models[i]).norm();  // m/s²
-    const double edge = 2.0 * models[i].half_size.minCoeff();             // m
+    const double edge = 2.0 * models[i].shape.half_size.minCoeff();       // m
     const double per_step = 0.5 * acceleration * dt * dt;                 // m
     if (per_step > edge) {
       out.push_back({{i},
@@ -268,7 +270,8 @@ std::vector<BodiesAdvice> check_penalty_pairs(const std::vector<physics::BodyMod
   };
   const auto tolerance_of = [&](const std::vector<std::size_t>& group) {
     double edge = std::numeric_limits<double>::infinity();
-    for (const std::size_t i : group) edge = std::min(edge, 2.0 * models[i].half_size.minCoeff());
+    for (const std::size_t i : group)
+      edge = std::min(edge, 2.0 * models[i].shape.half_size.minCoeff());
     return kMostPenaltySink * edge;  // m
   };
   const std::string springs = printed(

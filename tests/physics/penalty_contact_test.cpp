@@ -21,7 +21,7 @@ constexpr double kDropHeight = 1.0;  // of the bottom face above the floor at th
 BodyModel dropped_cube() {
   return {.constants = cube_constants(1.0, 1.0),
           .forces = {Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
-          .half_size = Vec3::Constant(0.5),
+          .shape = box_shape(Vec3::Constant(0.5)),
           .material = {.restitution = 0.5, .friction = 0.0}};
 }
 

@@ -17,7 +17,7 @@ constexpr double kStep = 1.0 / 4000.0;  // s: within every integrator's limit at
 BodyModel unit_cube() {
   return {.constants = cube_constants(1.0, 1.0),
           .forces = {},
-          .half_size = Vec3::Constant(0.5),
+          .shape = box_shape(Vec3::Constant(0.5)),
           .material = {.restitution = 0.0, .friction = 0.5}};
 }
 

@@ -33,7 +33,7 @@ struct DropSetup {
 sim::Simulation simulation(const DropSetup& s) {
   BodyModel model{.constants = cube_constants(1.0, 1.0),
                   .forces = {},
-                  .half_size = Vec3::Constant(0.5),
+                  .shape = box_shape(Vec3::Constant(0.5)),
                   .material = s.body};
   if (s.gravity) model.forces.push_back(Gravity{.acceleration = Vec3(0.0, -kG, 0.0)});
   const BodyState start =

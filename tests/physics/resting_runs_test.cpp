@@ -90,7 +90,7 @@ TEST_P(RestingRun, TouchesEveryPlaneNeverSinksGainsNoEnergyAndEndsAtRest) {
   const Case& c = GetParam();
   BodyModel model{.constants = box_constants(1.0, c.size),
                   .forces = {Gravity{.acceleration = c.gravity}},
-                  .half_size = 0.5 * c.size,
+                  .shape = box_shape(0.5 * c.size),
                   .material = c.material};
   BodyState state =
       make_state(model.constants, c.position, c.velocity, c.orientation, c.angular_velocity);
@@ -108,7 +108,7 @@ TEST_P(RestingRun, TouchesEveryPlaneNeverSinksGainsNoEnergyAndEndsAtRest) {
     touching += touches;
     for (const Manifold& m : manifolds) patches += m.count > 0;
     for (const Plane& plane : c.planes) {
-      deepest = std::max(deepest, -closest_corner_separation(state, model.half_size, plane));
+      deepest = std::max(deepest, -closest_corner_separation(state, model.shape.half_size, plane));
     }
     most_gained = std::max(most_gained, energy(state, c.gravity) - start_energy);
   }
@@ -132,7 +132,7 @@ INSTANTIATE_TEST_SUITE_P(Runs, RestingRun, ::testing::ValuesIn(cases()),
 TEST(RestingBounce, LeavesAtRestitutionTimesTheApproach) {
   BodyModel model{.constants = cube_constants(1.0, 1.0),
                   .forces = {},
-                  .half_size = Vec3::Constant(0.5),
+                  .shape = box_shape(Vec3::Constant(0.5)),
                   .material = {.restitution = 0.5, .friction = 0.5}};
   const std::vector<Plane> planes = {Plane{.material = model.material}};
   // Resting on the floor, then struck downwards at 2 m/s: its corners touched at the start, so the

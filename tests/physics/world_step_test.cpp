@@ -21,7 +21,7 @@ constexpr double kStep = 1.0 / 60.0;  // s
 BodyModel box_model(const Vec3& size, double mass, Material material, bool gravity) {
   BodyModel model{.constants = box_constants(mass, size),
                   .forces = {},
-                  .half_size = 0.5 * size,
+                  .shape = box_shape(0.5 * size),
                   .material = material};
   if (gravity) model.forces.push_back(Gravity{.acceleration = Vec3(0.0, -kG, 0.0)});
   return model;
@@ -132,7 +132,7 @@ TEST(WorldStep, APairThatBarelyMovedKeepsItsPointsAndMeasuresThemAnew) {
     const PairManifold& used = contacts.memory.pairs[0].manifold;
     const auto pose = [&](const BodyState& s) {
       return BoxPose{
-          .position = s.position(), .rotation = s.rotation(), .half_size = cube.half_size};
+          .position = s.position(), .rotation = s.rotation(), .half_size = cube.shape.half_size};
     };
     const PairManifold fresh = box_box_manifold(pose(start[0]), pose(start[1]), 1e-3);
     ASSERT_EQ(used.count, 4);
@@ -272,8 +272,8 @@ TEST_P(FastCube, DoesNotPassThroughAThinBox) {
     world.step();
     const BodyState& c = world.current()[0];
     const BodyState& p = world.current()[1];
-    const BoxAxis axis = box_box_axis({c.position(), c.rotation(), cube.half_size},
-                                      {p.position(), p.rotation(), plate.half_size});
+    const BoxAxis axis = box_box_axis({c.position(), c.rotation(), cube.shape.half_size},
+                                      {p.position(), p.rotation(), plate.shape.half_size});
     deepest = std::max(deepest, -axis.separation);
   }
   const BodyState& c = world.current()[0];

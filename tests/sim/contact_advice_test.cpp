@@ -20,7 +20,7 @@ constexpr double kStep = 1.0 / 60.0;  // s; gravity adds 0.1635 m/s per step
 physics::BodyModel cube(double restitution) {
   physics::BodyModel model{.constants = physics::cube_constants(1.0, 1.0),
                            .forces = {physics::Gravity{}},
-                           .half_size = physics::Vec3::Constant(0.5),
+                           .shape = physics::box_shape(physics::Vec3::Constant(0.5)),
                            .material = {.restitution = restitution, .friction = 0.5}};
   return model;
 }
@@ -94,7 +94,7 @@ Column column(const std::vector<double>& masses, double push = 0.0) {
   for (std::size_t i = 0; i < masses.size(); ++i) {
     physics::BodyModel model{.constants = physics::cube_constants(masses[i], 1.0),
                              .forces = {physics::Gravity{}},
-                             .half_size = physics::Vec3::Constant(0.5),
+                             .shape = physics::box_shape(physics::Vec3::Constant(0.5)),
                              .material = {}};
     if (push > 0.0 && i + 1 == masses.size()) {
       model.forces.push_back(physics::ConstantForce{physics::Vec3(0.0, -push, 0.0)});

@@ -258,7 +258,7 @@ BodyModel penalty_box(const Vec3& size, double stiffness, double damping, double
   const physics::Material material{.restitution = 0.0, .friction = friction};
   BodyModel model{.constants = physics::box_constants(1.0, size),
                   .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
-                  .half_size = 0.5 * size,
+                  .shape = physics::box_shape(0.5 * size),
                   .material = material};
   return physics::with_penalty_contact(model, {physics::Plane{.material = material}}, stiffness,
                                        damping);
@@ -275,7 +275,7 @@ double rest_depth(const BodyModel& model) {
 double rest_height(const BodyModel& model, const Quat& orientation) {
   double lowest = 0.0;  // of a corner relative to the centre (m)
   for (int feature = 0; feature < 8; ++feature) {
-    lowest = std::min(lowest, (orientation * physics::corner(model.half_size, feature)).y());
+    lowest = std::min(lowest, (orientation * physics::corner(model.shape.half_size, feature)).y());
   }
   return -lowest - rest_depth(model);
 }

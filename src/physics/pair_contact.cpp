@@ -1,0 +1,105 @@
+#include "physics/pair_contact.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace tumble::physics {
+namespace {
+
+// The one point of a round contact: the world point `at` (m) in both bodies' frames.
+PairManifold one_point(const ShapePose& a, const ShapePose& b, const Vec3& normal, const Vec3& at,
+                       double gap, std::uint32_t feature) {
+  PairManifold out;
+  out.normal = normal;
+  out.count = 1;
+  PairPoint& point = out.points[0];
+  point.feature = feature;
+  point.point_a = a.rotation.transpose() * (at - a.position);
+  point.point_b = b.rotation.transpose() * (at - b.position);
+  point.separation = gap;
+  return out;
+}
+
+// The manifold of B against A made from A against B's: the normal turned round, the anchors
+// swapped.
+PairManifold swapped(PairManifold m) {
+  m.normal = -m.normal;
+  for (int k = 0; k < m.count; ++k) {
+    PairPoint& p = m.points[static_cast<std::size_t>(k)];
+    std::swap(p.point_a, p.point_b);
+  }
+  return m;
+}
+
+}  // namespace
+
+PairManifold sphere_sphere_manifold(const ShapePose& a, double ra, const ShapePose& b, double rb,
+                                    double margin) {
+  const Vec3 d = b.position - a.position;
+  const double distance = d.norm();
+  const double gap = distance - ra - rb;
+  if (!(gap < margin)) return {};
+  const Vec3 normal = distance > 0.0 ? Vec3(d / distance) : Vec3(Vec3::UnitY());
+  // The middle of the gap: A's surface point plus half the gap along the normal.
+  const Vec3 at = a.position + (ra + 0.5 * gap) * normal;
+  return one_point(a, b, normal, at, gap, 0);
+}
+
+PairManifold box_sphere_manifold(const BoxPose& box, const ShapePose& sphere, double radius,
+                                 double margin) {
+  const Vec3& h = box.half_size;
+  const Vec3 local = box.rotation.transpose() * (sphere.position - box.position);
+  const Vec3 closest = local.cwiseMax(-h).cwiseMin(h);
+  std::uint32_t feature = 0;
+  for (int axis = 2; axis >= 0; --axis) {
+    const std::uint32_t region = local[axis] < -h[axis] ? 0 : local[axis] > h[axis] ? 2 : 1;
+    feature = 3 * feature + region;
+  }
+  Vec3 normal_local;
+  double gap = 0.0;
+  Vec3 surface_local = closest;  // the box's surface point under the sphere
+  const Vec3 outside = local - closest;
+  if (outside.squaredNorm() > 0.0) {
+    const double distance = outside.norm();
+    normal_local = outside / distance;
+    gap = distance - radius;
+  } else {
+    // The centre is inside: out of the face it is nearest (the lowest axis on a tie).
+    int axis = 0;
+    double least = h.x() - std::abs(local.x());
+    for (int k = 1; k < 3; ++k) {
+      const double depth = h[k] - std::abs(local[k]);
+      if (depth < least) {
+        least = depth;
+        axis = k;
+      }
+    }
+    const double side = local[axis] < 0.0 ? -1.0 : 1.0;
+    normal_local = Vec3::Zero();
+    normal_local[axis] = side;
+    surface_local[axis] = side * h[axis];
+    gap = -least - radius;
+  }
+  if (!(gap < margin)) return {};
+  const Vec3 normal = box.rotation * normal_local;
+  const Vec3 at = box.position + box.rotation * surface_local + 0.5 * gap * normal;
+  return one_point({box.position, box.rotation, nullptr}, sphere, normal, at, gap, feature);
+}
+
+PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin) {
+  const Shape& sa = *a.shape;
+  const Shape& sb = *b.shape;
+  if (sa.kind == ShapeKind::box && sb.kind == ShapeKind::box) {
+    return box_box_manifold({a.position, a.rotation, sa.half_size},
+                            {b.position, b.rotation, sb.half_size}, margin);
+  }
+  if (sa.kind == ShapeKind::sphere && sb.kind == ShapeKind::sphere) {
+    return sphere_sphere_manifold(a, sa.radius, b, sb.radius, margin);
+  }
+  if (sa.kind == ShapeKind::box) {
+    return box_sphere_manifold({a.position, a.rotation, sa.half_size}, b, sb.radius, margin);
+  }
+  return swapped(box_sphere_manifold({b.position, b.rotation, sb.half_size}, a, sa.radius, margin));
+}
+
+}  // namespace tumble::physics

@@ -1,0 +1,37 @@
+// The contact of two bodies of any shapes (narrow phase): the manifold of a pair, by the pair of
+// shapes — two boxes by the separating-axis test (physics/box_box.hpp), a sphere and a box or two
+// spheres in closed form. Pure geometry, as box_box.hpp.
+#pragma once
+
+#include "physics/box_box.hpp"
+#include "physics/shapes.hpp"
+
+namespace tumble::physics {
+
+// A shape placed in the world.
+struct ShapePose {
+  Vec3 position = Vec3::Zero();      // centre of mass, world frame (m)
+  Mat3 rotation = Mat3::Identity();  // body to world
+  const Shape* shape = nullptr;
+};
+
+// The contact of two shapes whose closest features are within `margin` (m) of touching: up to
+// kMaxManifoldPoints points with separation below `margin`, the normal from A towards B; count 0
+// otherwise. A sphere touches at one point, the middle of the gap (or overlap) between the two
+// surfaces along the normal.
+PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin);
+
+// Two spheres of radii `ra`, `rb` (m) centred at `a`, `b` (rotations body to world): the normal
+// along the line of centres (+y when the centres coincide), feature 0.
+PairManifold sphere_sphere_manifold(const ShapePose& a, double ra, const ShapePose& b, double rb,
+                                    double margin);
+
+// A box and a sphere of `radius` (m) centred at `sphere.position`, the normal from the box towards
+// the sphere: from the box's closest point to the centre, or, with the centre inside the box, out
+// of the face it is nearest. The feature names the box's region that the centre projects into
+// (per axis: below, within, above its face pair; 27 in all), so that a ball resting on a face keeps
+// its id while it rolls across it.
+PairManifold box_sphere_manifold(const BoxPose& box, const ShapePose& sphere, double radius,
+                                 double margin);
+
+}  // namespace tumble::physics
