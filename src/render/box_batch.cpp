@@ -8,7 +8,10 @@
 namespace tumble::render {
 namespace {
 
-constexpr GLsizei kCubeIndices = 36;  // two triangles per face
+// A ball's cube faces are divided 16 × 16: its outline is a polygon of 64 sides, whose sides
+// bulge in by 0.12% of the radius (1 − cos(π/64)), a tenth of a pixel for a ball 160 px across;
+// the shading's normal is the sphere's own at every pixel (ball.frag).
+constexpr int kBallDivisions = 16;
 
 // Per box, advancing once per instance, at body.vert's locations. A matrix takes one location
 // per column.
@@ -31,15 +34,22 @@ void point_instance_attributes() {
 
 }  // namespace
 
-BoxBatch BoxBatch::create() {
+BoxBatch BoxBatch::create(Solid solid) {
   BoxBatch out;
-  // Positions and normals interleaved, four vertices per face.
-  const std::vector<CubeVertex> vertices = cube_vertices();
+  out.solid_ = solid;
+  // Positions and normals interleaved: the cube four vertices per face, or the ball.
   std::vector<GLushort> indices;
-  for (GLushort face = 0; face < 6; ++face) {
-    const GLushort base = face * 4;
-    for (const GLushort corner : {0, 1, 2, 0, 2, 3}) indices.push_back(base + corner);
+  std::vector<CubeVertex> vertices;
+  if (solid == Solid::ball) {
+    vertices = sphere_vertices(kBallDivisions, indices);
+  } else {
+    vertices = cube_vertices();
+    for (GLushort face = 0; face < 6; ++face) {
+      const GLushort base = face * 4;
+      for (const GLushort corner : {0, 1, 2, 0, 2, 3}) indices.push_back(base + corner);
+    }
   }
+  out.indices_ = static_cast<GLsizei>(indices.size());
   glGenVertexArrays(1, out.vao_.out());
   glBindVertexArray(out.vao_.get());
   glGenBuffers(1, out.cube_vbo_.out());
@@ -71,7 +81,7 @@ BoxBatch::~BoxBatch() {
 }
 
 void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye) {
-  const std::vector<BoxInstance> instances = box_instances(boxes, eye);
+  const std::vector<BoxInstance> instances = box_instances(boxes, eye, solid_);
   count_ = static_cast<GLsizei>(instances.size());
   glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_.get());
   // A fresh store each frame, so the driver need not wait for the last frame's draws.
@@ -82,7 +92,7 @@ void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye) {
 void BoxBatch::draw() const {
   if (count_ == 0) return;
   glBindVertexArray(vao_.get());
-  glDrawElementsInstanced(GL_TRIANGLES, kCubeIndices, GL_UNSIGNED_SHORT, nullptr, count_);
+  glDrawElementsInstanced(GL_TRIANGLES, indices_, GL_UNSIGNED_SHORT, nullptr, count_);
 }
 
 }  // namespace tumble::render

@@ -1,7 +1,7 @@
-// Every box of a frame as one instanced draw: the unit cube's vertices and indices, set up once,
-// and one record per box (box_instances.hpp) uploaded in one buffer per frame. Both passes that
-// draw boxes (the shadow map and the lit boxes) draw the same upload. Internal to src/render/;
-// needs a current GL context from create() to destruction.
+// Every box of a frame that is one Solid as one instanced draw: the solid's mesh (the unit cube,
+// or the ball inside it), set up once, and one record per box (box_instances.hpp) uploaded in one
+// buffer per frame. Both passes that draw them (the shadow map and the lit solids) draw the same
+// upload. Internal to src/render/; needs a current GL context from create() to destruction.
 #pragma once
 
 #include <vector>
@@ -15,14 +15,15 @@ namespace tumble::render {
 class BoxBatch {
  public:
   BoxBatch() = default;  // no GL objects: for a renderer whose set-up failed
-  static BoxBatch create();
+  static BoxBatch create(Solid solid);
   ~BoxBatch();
   BoxBatch(BoxBatch&& other) noexcept = default;
   BoxBatch& operator=(BoxBatch&& other) noexcept = default;
   BoxBatch(const BoxBatch&) = delete;
   BoxBatch& operator=(const BoxBatch&) = delete;
 
-  // Replaces the boxes drawn by draw(), nearest to `eye` (world frame, m) first.
+  // Replaces the boxes drawn by draw() with those of `boxes` that are this batch's solid, nearest
+  // to `eye` (world frame, m) first.
   void upload(const std::vector<Box>& boxes, const Vec3& eye);
   // One draw of every uploaded box with the bound program, which reads body.vert's attribute
   // locations (or a subset of them, as box_shadow.vert).
@@ -30,7 +31,9 @@ class BoxBatch {
 
  private:
   GlName vao_, cube_vbo_, cube_ebo_, instance_vbo_;
-  GLsizei count_ = 0;  // boxes uploaded
+  Solid solid_ = Solid::box;
+  GLsizei indices_ = 0;  // of the mesh
+  GLsizei count_ = 0;    // boxes uploaded
 };
 
 }  // namespace tumble::render

@@ -1,23 +1,23 @@
 #include "render/box_instances.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 #include "render/geometry.hpp"
 
 namespace tumble::render {
 
-std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye) {
+std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye,
+                                       Solid solid) {
   std::vector<double> distance(boxes.size());  // squared, from the eye to the centre (m²)
+  std::vector<std::size_t> order;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     distance[i] = (boxes[i].position - eye).squaredNorm();
+    if (boxes[i].solid == solid) order.push_back(i);
   }
-  std::vector<std::size_t> order(boxes.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
-  std::vector<BoxInstance> out(boxes.size());
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
+  std::vector<BoxInstance> out(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
     const Box& box = boxes[order[i]];
     BoxInstance& instance = out[i];
     Eigen::Map<Eigen::Matrix4f>(instance.model) = model_matrix(box).cast<float>();

@@ -17,11 +17,12 @@ struct BoxInstance {
   float albedo[3];    // linear (linear_from_srgb of the box's colour)
 };
 
-// One record per box, nearest to `eye` (world frame, m) first, ties in the given order. Drawn so,
-// most of a box hidden behind nearer ones fails the depth test before it is shaded (llvmpipe
-// tests depth before shading when the shader writes no depth and discards nothing). The picture
-// is the same in any order (opaque boxes, GL_LESS) but where faces of two boxes meet at exactly
-// equal depth.
-std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye);
+// One record per box of `solid`, nearest to `eye` (world frame, m) first, ties in the given order.
+// Drawn so, most of a box hidden behind nearer ones fails the depth test before it is shaded
+// (llvmpipe tests depth before shading when the shader writes no depth and discards nothing). The
+// picture is the same in any order (opaque boxes, GL_LESS) but where faces of two boxes meet at
+// exactly equal depth.
+std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye,
+                                       Solid solid = Solid::box);
 
 }  // namespace tumble::render

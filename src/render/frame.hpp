@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,12 +33,21 @@ struct Camera {
   double fov_degrees = 40.0;            // vertical field of view
 };
 
-// A box (a cube when the edges are equal) at a pose.
+// What a Box draws: the box itself, or the ball inside it.
+enum class Solid : std::uint8_t {
+  box,
+  // The sphere the box holds (its size is the diameter along every axis): smooth, with three dark
+  // great circles fixed in its body so that its turning reads.
+  ball,
+};
+
+// A box (a cube when the edges are equal) at a pose, or the ball inside it.
 struct Box {
   Vec3 position = Vec3::Zero();          // centre, world frame (m)
   Quat orientation = Quat::Identity();   // body-to-world rotation
   Vec3 size = Vec3::Ones();              // edge lengths along the body axes (m)
   Color color = Color(0.85, 0.35, 0.2);  // sRGB
+  Solid solid = Solid::box;
 };
 
 // A finite piece of a plane (a wall, a slope, a raised floor): matte, gridded, framed by a dark
@@ -105,6 +115,9 @@ struct RenderSettings : common::RenderSettings {
   // Whether frames may have lines and arrows (FrameView::lines, arrows): only then are their
   // shaders built.
   bool overlays = false;
+  // Whether frames may have balls (Solid::ball): only then is their shader built and their mesh
+  // set up.
+  bool balls = false;
 };
 
 // Changes every frame.

@@ -108,4 +108,49 @@ std::vector<CubeVertex> cube_vertices() {
   return out;
 }
 
+std::vector<CubeVertex> sphere_vertices(int divisions, std::vector<std::uint16_t>& indices) {
+  std::vector<CubeVertex> out;
+  indices.clear();
+  const int side = divisions + 1;  // vertices along a face's edge
+  for (const CubeVertex& face : [] {
+         std::vector<CubeVertex> centres;  // one per face: its centre and normal
+         const std::vector<CubeVertex> cube = cube_vertices();
+         for (std::size_t f = 0; f < 6; ++f) centres.push_back(cube[4 * f]);
+         return centres;
+       }()) {
+    int axis = 0;
+    while (face.normal[axis] == 0.0f) ++axis;
+    const float sign = face.normal[axis];
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const auto base = static_cast<std::uint16_t>(out.size());
+    for (int j = 0; j < side; ++j) {
+      for (int i = 0; i < side; ++i) {
+        // On the cube's face, as cube_vertices winds it (u mirrored on the negative face).
+        Eigen::Vector3f p = Eigen::Vector3f::Zero();
+        p[axis] = sign;
+        p[u] = sign * (-1.0f + 2.0f * static_cast<float>(i) / static_cast<float>(divisions));
+        p[v] = -1.0f + 2.0f * static_cast<float>(j) / static_cast<float>(divisions);
+        const Eigen::Vector3f n = p.normalized();
+        CubeVertex vertex{};
+        for (int k = 0; k < 3; ++k) {
+          vertex.position[k] = 0.5f * n[k];
+          vertex.normal[k] = n[k];
+        }
+        out.push_back(vertex);
+      }
+    }
+    for (int j = 0; j < divisions; ++j) {
+      for (int i = 0; i < divisions; ++i) {
+        const auto at = [&](int di, int dj) {
+          return static_cast<std::uint16_t>(base + (j + dj) * side + i + di);
+        };
+        for (const std::uint16_t k : {at(0, 0), at(1, 0), at(1, 1), at(0, 0), at(1, 1), at(0, 1)}) {
+          indices.push_back(k);
+        }
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace tumble::render

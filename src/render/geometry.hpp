@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "render/frame.hpp"
@@ -50,5 +51,10 @@ struct CubeVertex {
 };
 
 std::vector<CubeVertex> cube_vertices();
+
+// The sphere of diameter 1 (the ball in the unit cube), each face of the cube divided into
+// `divisions` × `divisions` cells pushed out onto the sphere, normals along the radius; into
+// `indices`, two triangles a cell, counter-clockwise seen from outside.
+std::vector<CubeVertex> sphere_vertices(int divisions, std::vector<std::uint16_t>& indices);
 
 }  // namespace tumble::render

@@ -121,12 +121,14 @@ struct Renderer::Resources {
   RenderSettings settings;
   std::unique_ptr<OffscreenContext> context;
   ShaderProgram body_program;
+  ShaderProgram ball_program;  // only with settings.balls
   ShaderProgram ground_program;
   ShaderProgram shadowed_ground_program;  // the same, receiving shadows
   ShaderProgram shadow_program;           // quads
   ShaderProgram box_shadow_program;       // boxes, instanced
   ShaderProgram plane_program;            // quads
   BoxBatch boxes;                         // every box of the frame, one instanced draw per pass
+  BoxBatch balls;                         // and every ball, with settings.balls
   Framebuffer target;                     // what a frame is drawn into
   Framebuffer resolved;                   // one sample per pixel of a multisampled target
   std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
@@ -199,7 +201,13 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
       !built)
     return built;
 
-  boxes = BoxBatch::create();
+  boxes = BoxBatch::create(Solid::box);
+  if (settings.balls) {
+    if (Result<void> built = build(ball_program, {"ball.vert"}, {"lighting.glsl", "ball.frag"});
+        !built)
+      return built;
+    balls = BoxBatch::create(Solid::ball);
+  }
 
   // Ground: one square as a triangle strip.
   const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
@@ -369,6 +377,7 @@ void Renderer::Resources::draw_shadow_map(const FrameView& view, const FrameSetu
   glUseProgram(box_shadow_program.id());
   set_matrix(box_shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
   boxes.draw();
+  balls.draw();
   if (!view.quads.empty()) {
     glUseProgram(shadow_program.id());
     set_matrix(shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
@@ -580,6 +589,10 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   const FrameSetup frame = r.setup(view);
 
   r.boxes.upload(view.boxes, view.camera.position);
+  assert((s.balls || std::none_of(view.boxes.begin(), view.boxes.end(),
+                                  [](const Box& b) { return b.solid == Solid::ball; })) &&
+         "Solid::ball needs RenderSettings::balls");
+  if (s.balls) r.balls.upload(view.boxes, view.camera.position);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);
@@ -595,6 +608,10 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   // none of them: opaque too. Those seen from their back are blended over everything, last.
   r.use(r.body_program, frame, view.camera);
   r.boxes.draw();
+  if (s.balls) {
+    r.use(r.ball_program, frame, view.camera);
+    r.balls.draw();
+  }
   if (s.ground.enabled && s.shadows) r.draw_ground_shadows(view, frame);
   r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);

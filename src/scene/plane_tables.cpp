@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "physics/box_box.hpp"
+#include "physics/pair_contact.hpp"
 
 #include "scene/limits.hpp"
 #include "scene/scene_builder.hpp"
@@ -69,7 +70,7 @@ void refuse_bodies_inside(const TableReader& root, const Scene& scene) {
     for (std::size_t j = 0; j < scene.planes.size(); ++j) {
       const PlaneSpec& spec = scene.planes[j];
       const double depth =
-          -physics::closest_corner_separation(start, 0.5 * body.size, scene::plane(spec));
+          -physics::closest_separation(start, physics_shape(body), scene::plane(spec));
       if (!(depth > kStartOverlapAllowed)) continue;
       const std::string what = "body " + in_quotes(body.name) + " starts " + format_number(depth) +
                                " m inside plane " + in_quotes(spec.name);
@@ -132,6 +133,24 @@ physics::ContactSettings read_contact_settings(TableReader& in) {
   return out;
 }
 
+namespace {
+
+// How deep two bodies overlap at their start (m; <= 0 apart): two boxes by the separating-axis
+// test, a pair with a sphere by its contact.
+double start_overlap(const BodySpec& a, const BodySpec& b) {
+  const physics::Mat3 ra = a.orientation.toRotationMatrix(), rb = b.orientation.toRotationMatrix();
+  if (a.shape != Shape::sphere && b.shape != Shape::sphere) {
+    return -physics::box_box_axis({a.position, ra, 0.5 * a.size}, {b.position, rb, 0.5 * b.size})
+                .separation;
+  }
+  const physics::Shape sa = physics_shape(a), sb = physics_shape(b);
+  const physics::PairManifold m =
+      physics::pair_manifold({a.position, ra, &sa}, {b.position, rb, &sb}, 0.0);
+  return m.count > 0 ? -m.points[0].separation : 0.0;
+}
+
+}  // namespace
+
 void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
   // Both methods act between bodies: impulse contact would throw overlapping bodies apart, and
   // penalty contact's springs would start compressed by the overlap.
@@ -155,13 +174,11 @@ void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
       const BodySpec& second = scene.bodies[b];
       if (lower(order[m]) > scene.bodies[order[n]].position.x() + radius(order[n])) break;
       if ((first.position - second.position).norm() >= radius(a) + radius(b)) continue;
-      const physics::BoxAxis axis = physics::box_box_axis(
-          {first.position, first.orientation.toRotationMatrix(), 0.5 * first.size},
-          {second.position, second.orientation.toRotationMatrix(), 0.5 * second.size});
-      if (!(-axis.separation > kStartOverlapAllowed)) continue;
+      const double overlap = start_overlap(first, second);
+      if (!(overlap > kStartOverlapAllowed)) continue;
       const std::string what = "bodies " + in_quotes(first.name) + " and " +
                                in_quotes(second.name) + " start overlapping by " +
-                               format_number(-axis.separation) +
+                               format_number(overlap) +
                                " m (bodies collide; give one `collide = false`, or set "
                                "[physics] collide_bodies = false)";
       const toml::table& table = *bodies[b].as_table();

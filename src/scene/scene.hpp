@@ -18,12 +18,14 @@
 
 namespace tumble::scene {
 
-enum class Shape { cube, box };
+enum class Shape { cube, box, sphere };
 
 struct BodySpec {
   std::string name;
   Shape shape = Shape::cube;
-  physics::Vec3 size = physics::Vec3::Ones();              // edge lengths along the body axes (m)
+  // Edge lengths along the body axes (m); for a sphere, those of the cube around it (2r each).
+  physics::Vec3 size = physics::Vec3::Ones();
+  double radius = 0.0;                                     // a sphere's (m)
   double mass = 1.0;                                       // kg
   physics::Vec3 position = physics::Vec3::Zero();          // world frame (m)
   physics::Vec3 velocity = physics::Vec3::Zero();          // world frame (m/s)

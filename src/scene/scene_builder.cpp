@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "physics/mass_properties.hpp"
+
 namespace tumble::scene {
 
 physics::BodyConstants body_constants(const BodySpec& body) {
@@ -10,8 +12,16 @@ physics::BodyConstants body_constants(const BodySpec& body) {
       return physics::cube_constants(body.mass, body.size.x());
     case Shape::box:
       return physics::box_constants(body.mass, body.size);
+    case Shape::sphere:
+      return physics::constants_from_moments(
+          body.mass, physics::sphere_inertia(body.mass, body.radius).diagonal());
   }
   return {};
+}
+
+physics::Shape physics_shape(const BodySpec& body) {
+  return body.shape == Shape::sphere ? physics::sphere_shape(body.radius)
+                                     : physics::box_shape(0.5 * body.size);
 }
 
 physics::BodyState initial_state(const BodySpec& body) {
@@ -30,7 +40,7 @@ physics::Plane plane(const PlaneSpec& spec) {
 physics::BodyModel body_model(const Scene& scene, const BodySpec& body) {
   physics::BodyModel model{.constants = body_constants(body),
                            .forces = body.forces,
-                           .shape = physics::box_shape(0.5 * body.size),
+                           .shape = physics_shape(body),
                            .material = body.material,
                            .collides = body.collide};
   const physics::ContactSettings& contact = scene.physics.contact;

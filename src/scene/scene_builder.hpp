@@ -7,6 +7,8 @@
 namespace tumble::scene {
 
 physics::BodyConstants body_constants(const BodySpec& body);
+// The body's shape for contact: its box, or its sphere.
+physics::Shape physics_shape(const BodySpec& body);
 physics::BodyState initial_state(const BodySpec& body);
 // Number of fixed steps that cover the scene: round(duration / dt).
 std::int64_t step_count(const Scene& scene);

@@ -158,19 +158,30 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   body.name = in.optional_string("name", "body" + std::to_string(index));
   if (!is_safe_name(body.name)) in.fail("name", kSafeNameRule);
   const std::string shape = in.required_string("shape");
-  const toml::node& size = in.required("size");
-  if (shape == "cube") {
-    body.shape = Shape::cube;
-    if (size.is_array())
-      in.fail("size", "a cube's size is its side, one number (a box takes [x, y, z])");
-    body.size = Vec3::Constant(in.number("size", size));
-  } else if (shape == "box") {
-    body.shape = Shape::box;
-    body.size = in.vector("size", size);
-  } else {
-    in.fail("shape", "unknown shape " + in_quotes(shape) + " (expected cube or box)");
+  if (shape != "cube" && shape != "box" && shape != "sphere") {
+    in.fail("shape", "unknown shape " + in_quotes(shape) + " (expected cube, box or sphere)");
   }
-  if (!(body.size.minCoeff() > 0.0)) in.fail("size", "every edge must be greater than 0");
+  if (shape == "sphere") {
+    body.shape = Shape::sphere;
+    if (in.has("size")) in.fail("size", "a sphere has a radius, not a size");
+    body.radius = in.required_number("radius");
+    require_positive(in, "radius", body.radius);
+    body.size = Vec3::Constant(2.0 * body.radius);
+  } else {
+    if (in.has("radius"))
+      in.fail("radius", "only a sphere has a radius (a " + shape + " has a size)");
+    const toml::node& size = in.required("size");
+    if (shape == "cube") {
+      body.shape = Shape::cube;
+      if (size.is_array())
+        in.fail("size", "a cube's size is its side, one number (a box takes [x, y, z])");
+      body.size = Vec3::Constant(in.number("size", size));
+    } else {
+      body.shape = Shape::box;
+      body.size = in.vector("size", size);
+    }
+    if (!(body.size.minCoeff() > 0.0)) in.fail("size", "every edge must be greater than 0");
+  }
   body.mass = in.required_number("mass");
   require_positive(in, "mass", body.mass);
   const physics::BodyConstants constants = body_constants(body);
@@ -276,6 +287,12 @@ Scene read_scene(const toml::table& root, const std::string& file) {
   in.each_table(*bodies, "bodies", static_cast<std::size_t>(kMaxBodies), "a [[bodies]] table",
                 [&](TableReader& body, std::size_t i) {
                   scene.bodies.push_back(read_body(body, i, file));
+                  if (scene.bodies.back().shape == Shape::sphere &&
+                      scene.physics.contact.method == physics::ContactMethod::penalty) {
+                    body.fail("shape",
+                              "penalty contact holds boxes only: a sphere needs [physics] contact "
+                              "= \"impulse\" (the default)");
+                  }
                   if (!names.insert(scene.bodies.back().name).second) {
                     body.fail("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
                   }

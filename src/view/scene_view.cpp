@@ -192,7 +192,10 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
     view.boxes.push_back(render::Box{.position = states[i].position(),
                                      .orientation = states[i].orientation(),
                                      .size = scene.bodies[i].size,
-                                     .color = scene.bodies[i].color});
+                                     .color = scene.bodies[i].color,
+                                     .solid = scene.bodies[i].shape == scene::Shape::sphere
+                                                  ? render::Solid::ball
+                                                  : render::Solid::box});
     add_force_visuals(scene.bodies[i], states[i], t, view.boxes);
   }
   return view;
@@ -248,6 +251,9 @@ render::RenderSettings renderer_settings(const scene::Scene& scene, const Framin
                                   overlays_need_font(scene) ? overlay_font(scene) : std::string(),
                                   overlays_need_lines(scene)};
   settings.ground = framing.ground;
+  settings.balls =
+      std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                  [](const scene::BodySpec& b) { return b.shape == scene::Shape::sphere; });
   return settings;
 }
 

@@ -324,6 +324,62 @@ TEST(Renderer, ImageIsUprightWithBackgroundAboveAndGroundBelow) {
   EXPECT_LT(bottom[2], bottom[0] / 2);
 }
 
+// A ball, turned so that its three great circles cross its face, lit and shadowed on the ground.
+TEST(Renderer, BallMatchesGolden) {
+  RenderSettings settings = small_settings();
+  settings.balls = true;
+  FrameView view = cube_view(Quat(Eigen::AngleAxisd(0.6, Vec3(1, 0.4, 0.3).normalized())));
+  view.boxes[0].solid = Solid::ball;
+  view.boxes.push_back(Box{.position = Vec3(-1.3, -0.2, -0.6),
+                           .size = Vec3::Constant(0.6),
+                           .color = Color(0.3, 0.6, 0.85)});
+  expect_matches_golden(draw(settings, view), "ball");
+}
+
+// Seen head-on without ground or shadows, a ball's outline is a circle of the projected radius:
+// at distance d a sphere of radius r subtends asin(r / d), so its picture's radius is
+// (rows / 2) tan(asin(r / d)) / tan(fov / 2) pixels. Its widest row and column, measured
+// against a picture without it, are that diameter within 2 px, and each other within 1.
+TEST(Renderer, ABallSeenHeadOnIsACircleOfItsProjectedSize) {
+  RenderSettings settings = small_settings();
+  settings.width = settings.height = 240;
+  settings.ground.enabled = false;
+  settings.shadows = false;
+  settings.balls = true;
+  FrameView view;
+  view.camera.position = Vec3(0.0, 0.0, 5.0);
+  view.camera.look_at = Vec3::Zero();
+  const io::Image empty = draw(settings, view);
+  view.boxes.push_back(Box{.orientation = Quat(Eigen::AngleAxisd(0.9, Vec3(0, 1, 1).normalized())),
+                           .size = Vec3::Constant(2.0),
+                           .solid = Solid::ball});
+  const io::Image ball = draw(settings, view);
+  int widest_row = 0, widest_column = 0;
+  const auto differs = [&](int x, int y) {
+    const std::size_t at = 3 * (static_cast<std::size_t>(y) * 240 + x);
+    for (int c = 0; c < 3; ++c) {
+      if (std::abs(ball.rgb[at + c] - empty.rgb[at + c]) > 16) return true;
+    }
+    return false;
+  };
+  for (int line = 0; line < 240; ++line) {
+    int row = 0, column = 0;
+    for (int k = 0; k < 240; ++k) {
+      row += differs(k, line) ? 1 : 0;
+      column += differs(line, k) ? 1 : 0;
+    }
+    widest_row = std::max(widest_row, row);
+    widest_column = std::max(widest_column, column);
+  }
+  const double diameter = 240.0 * std::tan(std::asin(1.0 / 5.0)) /
+                          std::tan(0.5 * view.camera.fov_degrees * M_PI / 180.0);
+  std::printf("[ measured ] widest row %d px, column %d px, projected diameter %.2f px\n",
+              widest_row, widest_column, diameter);
+  EXPECT_NEAR(widest_row, diameter, 2.0);
+  EXPECT_NEAR(widest_column, diameter, 2.0);
+  EXPECT_LE(std::abs(widest_row - widest_column), 1);
+}
+
 TEST(Renderer, MissingShaderIsAClearErrorNamingTheFile) {
   std::string error;
   const auto renderer = ::tumble::testing::value_or_empty(
