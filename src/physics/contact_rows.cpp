@@ -63,6 +63,15 @@ struct PlaneView {
   const Vec3& normal() const { return in.plane.normal; }
   RowPoint point(std::uint32_t k) const {
     const ContactPoint& point = in.manifold.points[k];
+    if (in.rounding > 0.0) {
+      return {.arm_a = -in.rounding * in.plane.normal,
+              .arm_b = Vec3::Zero(),
+              .anchor_a = Vec3::Zero(),
+              .anchor_b = Vec3::Zero(),
+              .base = -in.plane.offset - in.rounding,
+              .impulse = point.impulses.normal,
+              .speculative_speed = 0.0};
+    }
     return {.arm_a = in.rotation * point.body_point,
             .arm_b = Vec3::Zero(),
             .anchor_a = point.body_point,
@@ -74,26 +83,60 @@ struct PlaneView {
 };
 
 // The rows' view of a pair manifold: B is pushed along the normal (from A to B), so B is the
-// rows' a.
+// rows' a. Against a static body (its index kStatic) the moving one is the rows' a, pushed away
+// from the static one (along −normal when B is static), and the static one's anchor, which never
+// moves, is folded into the base: s = base + n·(a's point) − n·(b's point) holds either way.
 struct PairView {
   const PairManifoldRows& in;
-  std::uint32_t a() const { return in.b; }
-  std::uint32_t b() const { return in.a; }
-  const Vec3& normal() const { return in.manifold.normal; }
+  bool b_static;  // the rows' a is A
+  Vec3 n;         // along which the rows' a is pushed
+
+  explicit PairView(const PairManifoldRows& rows)
+      : in(rows),
+        b_static(rows.b == kStatic),
+        n(rows.b == kStatic ? Vec3(-rows.manifold.normal) : rows.manifold.normal) {}
+  std::uint32_t a() const { return b_static ? in.a : in.b; }
+  std::uint32_t b() const { return b_static ? kStatic : in.a; }
+  const Vec3& normal() const { return n; }
   RowPoint point(std::uint32_t k) const {
     const PairPoint& point = in.manifold.points[k];
+    const Side a = side(in.a_base, in.a_rotation, point.point_a, in.a_rounding);
+    const Side b = side(in.b_base, in.b_rotation, point.point_b, in.b_rounding);
+    const double speculative_speed =
+        in.speculative_step > 0.0 ? std::max(point.separation, 0.0) / in.speculative_step : 0.0;
+    if (b_static) {
+      return {.arm_a = a.arm,
+              .arm_b = Vec3::Zero(),
+              .anchor_a = a.anchor,
+              .anchor_b = Vec3::Zero(),
+              .base = point.separation - n.dot(a.measured),
+              .impulse = point.impulses.normal,
+              .speculative_speed = speculative_speed};
+    }
+    const bool a_static = in.a == kStatic;
     // The two anchors were one point at the base poses (to rounding, subtracted here).
-    const Vec3 offset =
-        world_point(in.b_base, point.point_b) - world_point(in.a_base, point.point_a);
-    return {.arm_a = in.b_rotation * point.point_b,
-            .arm_b = in.a_rotation * point.point_a,
-            .anchor_a = point.point_b,
-            .anchor_b = point.point_a,
-            .base = point.separation - in.manifold.normal.dot(offset),
+    return {.arm_a = b.arm,
+            .arm_b = a_static ? Vec3::Zero() : a.arm,
+            .anchor_a = b.anchor,
+            .anchor_b = a_static ? Vec3::Zero() : a.anchor,
+            .base = point.separation - n.dot(b.measured - a.measured) -
+                    (a_static ? n.dot(a.measured) : 0.0),
             .impulse = point.impulses.normal,
-            .speculative_speed = in.speculative_step > 0.0
-                                     ? std::max(point.separation, 0.0) / in.speculative_step
-                                     : 0.0};
+            .speculative_speed = speculative_speed};
+  }
+
+ private:
+  // One body's part of a point: its arm (world) for the rows, its anchor (body frame) for the
+  // projection, and that anchor's world position at the base pose. A round body's anchor is its
+  // centre and its arm the one the manifold gave, whichever way it has turned since.
+  struct Side {
+    Vec3 arm, anchor, measured;
+  };
+  static Side side(const PoseRef& base, const Mat3& rotation, const Vec3& point, double rounding) {
+    if (rounding > 0.0) {
+      return {.arm = base.rotation * point, .anchor = Vec3::Zero(), .measured = base.position};
+    }
+    return {.arm = rotation * point, .anchor = point, .measured = world_point(base, point)};
   }
 };
 
@@ -252,11 +295,11 @@ void write_rows(const PlaneManifoldRows& manifold, const RowSlots& at, ContactRo
   write(PlaneView{manifold}, at, rows);
 }
 void append_rows(const PairManifoldRows& manifold, ContactRows& rows) {
-  write(PairView{manifold}, appended(static_cast<std::uint32_t>(manifold.manifold.count), rows),
+  write(PairView(manifold), appended(static_cast<std::uint32_t>(manifold.manifold.count), rows),
         rows);
 }
 void write_rows(const PairManifoldRows& manifold, const RowSlots& at, ContactRows& rows) {
-  write(PairView{manifold}, at, rows);
+  write(PairView(manifold), at, rows);
 }
 
 PatchImpulses patch_impulses(const FrictionPatch& patch) {

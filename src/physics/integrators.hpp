@@ -19,6 +19,10 @@ struct BodyModel {
   Shape shape = {};  // for contact: a unit cube unless said
   Material material = {};
   bool collides = true;  // with other bodies (planes always stop it)
+  // Fixed in the world (a peg, a ramp, a table): never moves, and other bodies meet it as they
+  // meet a plane. Its constants have no inverse mass or inertia (static_constants) and it has no
+  // forces.
+  bool is_static = false;
 };
 
 // The model with penalty contact against `planes` added to its laws: a PenaltyContact of the

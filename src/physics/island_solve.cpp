@@ -8,6 +8,14 @@
 namespace tumble::physics {
 namespace {
 
+// Body i's state in a sub-stepped island now: a member's as its sub-steps moved it, a static
+// body's where it stands.
+const BodyState& substep_state(const StepContext& context, std::uint32_t i) {
+  return context.models[i].is_static
+             ? context.in[i]
+             : context.scratch.substep_bodies[context.scratch.local[i]].state;
+}
+
 // The rows of the pair rows.pair, from its manifold, with its bodies at the poses in the
 // sub-stepped island's bodies: their start, or a sub-step's.
 PairManifoldRows substep_pair_rows(const StepContext& context, const PairRows& rows,
@@ -15,20 +23,21 @@ PairManifoldRows substep_pair_rows(const StepContext& context, const PairRows& r
                                    const Mat3& b_rotation) {
   const PairContact& pair = context.scratch.found[rows.pair];
   const auto [a, b] = pair.bodies;
-  const std::uint32_t a_local = context.scratch.local[a], b_local = context.scratch.local[b];
-  const BodyState& a_state = context.scratch.substep_bodies[a_local].state;
-  const BodyState& b_state = context.scratch.substep_bodies[b_local].state;
+  const BodyState& a_state = substep_state(context, a);
+  const BodyState& b_state = substep_state(context, b);
   return {.manifold = pair.manifold,
           .material = material,
-          .a = a_local,
-          .b = b_local,
+          .a = context.scratch.local[a],
+          .b = context.scratch.local[b],
           .a_rotation = a_rotation,
           .b_rotation = b_rotation,
           .a_base = {a_state.position(), a_rotation},
           .b_base = {b_state.position(), b_rotation},
           .speculative_step = 0.0,
           .source = {.owner = rows.pair},
-          .keeps_friction = true};
+          .keeps_friction = true,
+          .a_rounding = rounding(context.models[a].shape),
+          .b_rounding = rounding(context.models[b].shape)};
 }
 
 RowSlots slots_of(const PairRows& rows) {
@@ -46,8 +55,8 @@ void refind_pair(const StepContext& context, const PairRows& rows, double left) 
   const auto [a, b] = pair.bodies;
   const BodyModel& model_a = context.models[a];
   const BodyModel& model_b = context.models[b];
-  const BodyState& a_state = context.scratch.substep_bodies[context.scratch.local[a]].state;
-  const BodyState& b_state = context.scratch.substep_bodies[context.scratch.local[b]].state;
+  const BodyState& a_state = substep_state(context, a);
+  const BodyState& b_state = substep_state(context, b);
   const Mat3 a_rotation = a_state.rotation(), b_rotation = b_state.rotation();
   PairManifold found = pair_manifold(pose_of(a_state, a_rotation, model_a.shape),
                                      pose_of(b_state, b_rotation, model_b.shape),
@@ -94,16 +103,34 @@ void write_plane_rows(const StepContext& context, const PlaneRows& rows, const P
               .body = context.scratch.local[rows.body],
               .rotation = pose.rotation,
               .source = {.owner = rows.body, .plane = rows.plane},
-              .keeps_friction = true},
+              .keeps_friction = true,
+              .rounding = rounding(model.shape)},
              at, solve);
   if (within_step) restore(carried, at, solve);
 }
 
-// The island's bodies, with the rows its solve fills emptied.
+// The island's bodies, with the rows its solve fills emptied, and the static bodies its pairs
+// touch at kStatic among the rows' bodies (they are none of them: rows against them are one-sided,
+// as against a plane).
 std::span<const std::uint32_t> start_island(const StepContext& context, std::uint32_t island) {
-  context.scratch.rows.clear();
-  context.scratch.local.resize(context.scratch.island_of.size());
-  return members_of(island, context.scratch);
+  StepScratch& scratch = context.scratch;
+  scratch.rows.clear();
+  scratch.local.resize(scratch.island_of.size());
+  for (std::uint32_t k = scratch.pair_offsets[island]; k < scratch.pair_offsets[island + 1]; ++k) {
+    for (const std::uint32_t i : {scratch.found[scratch.pair_order[k]].bodies.first,
+                                  scratch.found[scratch.pair_order[k]].bodies.second}) {
+      if (context.models[i].is_static) scratch.local[i] = kStatic;
+    }
+  }
+  return members_of(island, scratch);
+}
+
+// Body i's rotation as a converged island's rows take it: a member's at the end of its free step,
+// a static body's where it stands.
+const Mat3& rows_rotation(const StepContext& context, std::uint32_t i) {
+  return context.models[i].is_static
+             ? context.scratch.start_rotations[i]
+             : context.scratch.island_bodies[context.scratch.local[i]].rotation;
 }
 
 // How far body i's corners can swing about its centre in the step (m).
@@ -275,13 +302,15 @@ void solve_converged(const StepContext& context, std::uint32_t island) {
                  .material = material,
                  .a = scratch.local[a],
                  .b = scratch.local[b],
-                 .a_rotation = scratch.island_bodies[scratch.local[a]].rotation,
-                 .b_rotation = scratch.island_bodies[scratch.local[b]].rotation,
+                 .a_rotation = rows_rotation(context, a),
+                 .b_rotation = rows_rotation(context, b),
                  .a_base = {context.in[a].position(), scratch.start_rotations[a]},
                  .b_base = {context.in[b].position(), scratch.start_rotations[b]},
                  .speculative_step = context.dt,
                  .source = {.owner = p},
-                 .keeps_friction = false},
+                 .keeps_friction = false,
+                 .a_rounding = rounding(context.models[a].shape),
+                 .b_rounding = rounding(context.models[b].shape)},
                 rows);
   }
   scratch.island_out.resize(members.size());

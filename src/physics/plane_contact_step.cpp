@@ -183,7 +183,8 @@ BodyState resolve_impact(const StepContext& context, std::uint32_t body, const B
                  .body = 0,
                  .rotation = rotation,
                  .source = {.owner = body, .plane = p},
-                 .keeps_friction = false},
+                 .keeps_friction = false,
+                 .rounding = rounding(model.shape)},
                 rows);
   }
   // An impact is solved to convergence: its bounce decides the energy of everything after it.
@@ -288,7 +289,8 @@ void append_plane_rows(const StepContext& context, const BodyInRows& body, doubl
                  .body = body.solver,
                  .rotation = body.rotation,
                  .source = {.owner = body.body, .plane = p},
-                 .keeps_friction = true},
+                 .keeps_friction = true,
+                 .rounding = rounding(model.shape)},
                 context.scratch.rows);
   }
 }

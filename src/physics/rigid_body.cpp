@@ -24,6 +24,14 @@ BodyConstants box_constants(double mass, const Vec3& size) {
   return constants_from_moments(mass, inertia);
 }
 
+BodyConstants static_constants() {
+  return BodyConstants{.mass = 0.0,
+                       .inverse_mass = 0.0,
+                       .inertia = Vec3::Zero(),
+                       .inverse_inertia = Vec3::Zero(),
+                       .isotropic = true};
+}
+
 BodyConstants constants_from_moments(double mass, const Vec3& moments) {
   return BodyConstants{.mass = mass,
                        .inverse_mass = 1.0 / mass,

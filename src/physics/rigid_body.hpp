@@ -24,6 +24,9 @@ struct BodyConstants {
 
 // The constants of a body of `mass` (kg) with principal `moments` (kg m², body frame).
 BodyConstants constants_from_moments(double mass, const Vec3& moments);
+// A static body's: no inverse mass or inertia, so that no impulse moves it (mass and moments 0:
+// it has no momentum to speak of).
+BodyConstants static_constants();
 // A uniform-density cube: I = m s² / 6 about every axis through the centre.
 BodyConstants cube_constants(double mass /* kg */, double side /* m */);
 // A uniform-density box with edge lengths `size` along the body axes:

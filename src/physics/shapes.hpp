@@ -44,6 +44,12 @@ inline double bounding_radius(const Shape& shape) {
   return shape.kind == ShapeKind::sphere ? shape.radius : shape.half_size.norm();
 }
 
+// How far the shape's surface stands out from its core (m): a sphere's radius around its centre;
+// 0 for a box, which is all core.
+inline double rounding(const Shape& shape) {
+  return shape.kind == ShapeKind::sphere ? shape.radius : 0.0;
+}
+
 // A static, infinite plane: the half-space n·x >= offset is outside; bodies stay there.
 struct Plane {
   Vec3 normal = Vec3::UnitY();  // unit, world frame, pointing out of the solid side

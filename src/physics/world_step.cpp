@@ -34,7 +34,9 @@ void advance_bodies(const StepContext& context) {
   for (std::uint32_t i = 0; i < context.in.size(); ++i) {
     PlaneAdvance& advance = context.scratch.advances[i];
     const BodyState& in = context.in[i];
-    if (context.memory.asleep[i]) {
+    if (context.models[i].is_static) {  // where it stands, touching no plane
+      advance = {.end = in, .rotation = in.rotation(), .remaining = context.dt};
+    } else if (context.memory.asleep[i]) {
       // Unmoved, and still in its island: its manifolds keep the impulses it fell asleep with.
       advance = {.end = in, .rotation = in.rotation(), .remaining = context.dt, .touching = true};
     } else if (context.planes.empty()) {
@@ -76,6 +78,12 @@ bool reuse(const StepContext& context, const PairContact& before, double margin,
   const Vec3& b_half_size = context.models[pair.bodies.second].shape.half_size;
   const PairStamp& then = before.stamp;
   if (!then.valid) return false;
+  // A ball's point turns away with the ball: its closed-form contact is found afresh, and costs
+  // no more than this test.
+  if (rounding(context.models[pair.bodies.first].shape) > 0.0 ||
+      rounding(context.models[pair.bodies.second].shape) > 0.0) {
+    return false;
+  }
   const Vec3 moved = a_rotation.transpose() * (b.position() - a.position()) - then.offset;
   const Quat turned = then.turn.conjugate() * (a.orientation().conjugate() * b.orientation());
   const double angle = 2.0 * std::asin(std::min(1.0, turned.vec().norm()));  // rad
@@ -124,6 +132,7 @@ void find_pairs(const StepContext& context) {
   for (const BodyPair& candidate : scratch.candidates) {
     const std::uint32_t a = scratch.colliders[candidate.first];
     const std::uint32_t b = scratch.colliders[candidate.second];
+    if (models[a].is_static && models[b].is_static) continue;
     const BodyPair bodies{a, b};
     while (previous < last.size() && last[previous].bodies < bodies) ++previous;
     const PairContact* before =
@@ -157,7 +166,11 @@ int group_islands(const StepContext& context) {
   StepScratch& scratch = context.scratch;
   scratch.root.resize(body_count);
   for (std::uint32_t i = 0; i < body_count; ++i) scratch.root[i] = i;
+  // A static body joins no island: two balls resting on one peg are two islands, each with its
+  // rows against the peg, as against a plane.
+  const auto is_static = [&](std::uint32_t i) { return context.models[i].is_static; };
   for (const PairContact& pair : scratch.found) {
+    if (is_static(pair.bodies.first) || is_static(pair.bodies.second)) continue;
     const std::uint32_t a = find_root(scratch.root, pair.bodies.first);
     const std::uint32_t b = find_root(scratch.root, pair.bodies.second);
     if (a != b) scratch.root[std::max(a, b)] = std::min(a, b);
@@ -169,7 +182,9 @@ int group_islands(const StepContext& context) {
   std::vector<char>& paired = scratch.paired;
   paired.assign(body_count, 0);
   for (const PairContact& pair : scratch.found) {
-    paired[pair.bodies.first] = paired[pair.bodies.second] = 1;
+    for (const std::uint32_t i : {pair.bodies.first, pair.bodies.second}) {
+      if (!is_static(i)) paired[i] = 1;
+    }
   }
   for (std::uint32_t i = 0; i < body_count; ++i) {
     if (!scratch.advances[i].touching && !paired[i]) continue;
@@ -198,7 +213,10 @@ int group_islands(const StepContext& context) {
       scratch.members);
   bucket(
       scratch.found.size(),
-      [&](std::uint32_t k) { return scratch.island_of[scratch.found[k].bodies.first]; },
+      [&](std::uint32_t k) {
+        const BodyPair& bodies = scratch.found[k].bodies;
+        return scratch.island_of[is_static(bodies.first) ? bodies.second : bodies.first];
+      },
       scratch.pair_offsets, scratch.pair_order);
   return islands;
 }
@@ -323,7 +341,7 @@ void step_bodies_alone(const StepContext& context) {
   ContactMemory& memory = context.memory;
   memory.pairs.clear();
   for (std::uint32_t i = 0; i < context.in.size(); ++i) {
-    if (memory.asleep[i]) {  // nothing can wake it: only another body could
+    if (memory.asleep[i] || context.models[i].is_static) {  // nothing can move it
       context.out[i] = context.in[i];
       continue;
     }

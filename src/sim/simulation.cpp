@@ -79,7 +79,9 @@ void Simulation::step() {
       break;
     case Stepping::alone:
       for (std::size_t i = 0; i < models_.size(); ++i) {
-        current_[i] = physics::step(integrator_, models_[i], previous_[i], t, dt_);
+        current_[i] = models_[i].is_static
+                          ? previous_[i]
+                          : physics::step(integrator_, models_[i], previous_[i], t, dt_);
       }
       break;
   }
