@@ -66,6 +66,7 @@ void refuse_bodies_inside(const TableReader& root, const Scene& scene) {
   const toml::array& planes = *root.table().get("planes")->as_array();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const BodySpec& body = scene.bodies[i];
+    if (body.is_static) continue;  // never moved by a plane: a ramp may stand in the floor
     const physics::BodyState start = initial_state(body);
     for (std::size_t j = 0; j < scene.planes.size(); ++j) {
       const PlaneSpec& spec = scene.planes[j];
@@ -173,6 +174,7 @@ void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
       const BodySpec& first = scene.bodies[a];
       const BodySpec& second = scene.bodies[b];
       if (lower(order[m]) > scene.bodies[order[n]].position.x() + radius(order[n])) break;
+      if (first.is_static && second.is_static) continue;  // a board of pegs may be one piece
       if ((first.position - second.position).norm() >= radius(a) + radius(b)) continue;
       const double overlap = start_overlap(first, second);
       if (!(overlap > kStartOverlapAllowed)) continue;

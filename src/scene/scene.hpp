@@ -33,7 +33,8 @@ struct BodySpec {
   physics::Vec3 angular_velocity = physics::Vec3::Zero();  // world frame (rad/s)
   std::vector<physics::ForceLaw> forces;                   // only what the scene lists
   physics::Material material = {};                         // restitution 0, friction 0.5
-  bool collide = true;  // with other bodies (planes stop every body)
+  bool collide = true;     // with other bodies (planes stop every body)
+  bool is_static = false;  // fixed in the world (`static = true`): never moves, no mass needed
   common::Color color = common::Color(0.85, 0.35, 0.2);  // sRGB
 };
 

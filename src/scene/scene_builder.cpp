@@ -7,6 +7,7 @@
 namespace tumble::scene {
 
 physics::BodyConstants body_constants(const BodySpec& body) {
+  if (body.is_static) return physics::static_constants();
   switch (body.shape) {
     case Shape::cube:
       return physics::cube_constants(body.mass, body.size.x());
@@ -42,7 +43,8 @@ physics::BodyModel body_model(const Scene& scene, const BodySpec& body) {
                            .forces = body.forces,
                            .shape = physics_shape(body),
                            .material = body.material,
-                           .collides = body.collide};
+                           .collides = body.collide,
+                           .is_static = body.is_static};
   const physics::ContactSettings& contact = scene.physics.contact;
   if (!scene.planes.empty() && contact.method == physics::ContactMethod::penalty) {
     std::vector<physics::Plane> planes;

@@ -182,7 +182,19 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
     }
     if (!(body.size.minCoeff() > 0.0)) in.fail("size", "every edge must be greater than 0");
   }
-  body.mass = in.required_number("mass");
+  body.is_static = in.optional_bool("static", false);
+  if (body.is_static) {
+    // Fixed in the world: it needs no mass (one written is not used) and cannot move.
+    for (const char* key : {"velocity", "angular_velocity", "forces"}) {
+      if (in.has(key)) {
+        in.fail(key, std::string("a static body never moves: it takes no ") +
+                         (std::string(key) == "forces" ? "forces" : key));
+      }
+    }
+    body.mass = in.optional_number("mass", 1.0);
+  } else {
+    body.mass = in.required_number("mass");
+  }
   require_positive(in, "mass", body.mass);
   const physics::BodyConstants constants = body_constants(body);
   if (!(std::isfinite(constants.inverse_mass) && constants.inverse_inertia.allFinite() &&
@@ -287,6 +299,12 @@ Scene read_scene(const toml::table& root, const std::string& file) {
   in.each_table(*bodies, "bodies", static_cast<std::size_t>(kMaxBodies), "a [[bodies]] table",
                 [&](TableReader& body, std::size_t i) {
                   scene.bodies.push_back(read_body(body, i, file));
+                  if (scene.bodies.back().is_static &&
+                      scene.physics.contact.method == physics::ContactMethod::penalty) {
+                    body.fail("static",
+                              "penalty contact has no static bodies: use [physics] contact = "
+                              "\"impulse\" (the default), or a plane");
+                  }
                   if (scene.bodies.back().shape == Shape::sphere &&
                       scene.physics.contact.method == physics::ContactMethod::penalty) {
                     body.fail("shape",

@@ -8,9 +8,9 @@
 #include <variant>
 
 #include "common/printed.hpp"
-#include "physics/box_box.hpp"
 #include "physics/contact_island.hpp"
 #include "physics/normal_block.hpp"
+#include "physics/pair_contact.hpp"
 #include "physics/world_step.hpp"
 #include "sim/stability.hpp"
 
@@ -21,7 +21,8 @@ std::vector<std::string> check_contact(const physics::BodyModel& model,
                                        const physics::ContactSettings& settings,
                                        physics::Integrator integrator, double dt) {
   std::vector<std::string> out;
-  if (settings.method != physics::ContactMethod::impulse) return out;
+  // A static body neither falls nor bounces: what meets it bounces by its own advice.
+  if (settings.method != physics::ContactMethod::impulse || model.is_static) return out;
   physics::Vec3 gravity = physics::Vec3::Zero();  // m/s²
   for (const physics::ForceLaw& law : model.forces) {
     if (const auto* g = std::get_if<physics::Gravity>(&law)) gravity += g->acceleration;
@@ -90,6 +91,21 @@ std::size_t root_of(std::vector<std::size_t>& parent, std::size_t i) {
   return i;
 }
 
+// Whether two bodies touch (within kTouching): two boxes by the separating-axis test, any other
+// pair by its manifold.
+bool touch(const physics::BodyModel& a, const physics::BodyState& sa, const physics::BodyModel& b,
+           const physics::BodyState& sb) {
+  const physics::Mat3 ra = sa.rotation(), rb = sb.rotation();
+  if (a.shape.kind == physics::ShapeKind::box && b.shape.kind == physics::ShapeKind::box) {
+    return physics::box_box_axis({sa.position(), ra, a.shape.half_size},
+                                 {sb.position(), rb, b.shape.half_size})
+               .separation < kTouching;
+  }
+  return physics::pair_manifold({sa.position(), ra, &a.shape}, {sb.position(), rb, &b.shape},
+                                kTouching)
+             .count > 0;
+}
+
 }  // namespace
 
 TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
@@ -103,6 +119,7 @@ TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
   out.group.resize(count);
   for (std::size_t i = 0; i < count; ++i) {
     out.group[i] = i;
+    if (models[i].is_static) continue;
     for (const physics::Plane& plane : planes) {
       if (physics::closest_separation(initial[i], models[i].shape, plane) < kTouching) {
         out.on_plane[i] = out.touches[i] = true;
@@ -112,11 +129,14 @@ TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
   for (std::size_t i = 0; i < count; ++i) {
     for (std::size_t j = i + 1; j < count && settings.collide_bodies; ++j) {
       if (!models[i].collides || !models[j].collides) continue;
-      const physics::BoxPose a{initial[i].position(), initial[i].rotation(),
-                               models[i].shape.half_size};
-      const physics::BoxPose b{initial[j].position(), initial[j].rotation(),
-                               models[j].shape.half_size};
-      if (physics::box_box_axis(a, b).separation >= kTouching) continue;
+      if (models[i].is_static && models[j].is_static) continue;
+      if (!touch(models[i], initial[i], models[j], initial[j])) continue;
+      // A static body holds what rests on it as a plane does.
+      if (models[i].is_static || models[j].is_static) {
+        const std::size_t moving = models[i].is_static ? j : i;
+        out.on_plane[moving] = out.touches[moving] = true;
+        continue;
+      }
       out.touches[i] = out.touches[j] = true;
       out.group[root_of(out.group, i)] = root_of(out.group, j);
       out.pairs.emplace_back(i, j);

@@ -1,4 +1,5 @@
 #include "scene/scene_loader.hpp"
+#include "scene/scene_builder.hpp"
 #include "support/scene_text.hpp"
 
 #include <gtest/gtest.h>
@@ -252,6 +253,49 @@ anchor = [1, 2, 3]
   EXPECT_EQ(held.anchor_keys[0].anchor, Vec3(1.0, 2.0, 3.0));
   EXPECT_EQ(held.start, -kInfinity);
   EXPECT_EQ(held.end, 1.0);
+}
+
+// A sphere is its radius (its box the cube around it, for bounds and framing) with the inertia of
+// a uniform ball; a static body needs no mass and gets no inverse mass or inertia.
+TEST(SceneLoader, SpheresAndStaticBodiesBecomeTheirShapesAndConstants) {
+  const Scene scene = parse_valid(R"(
+duration = 1.0
+[[bodies]]
+name = "ball"
+shape = "sphere"
+radius = 0.25
+mass = 2.0
+[[bodies]]
+name = "peg"
+shape = "sphere"
+radius = 0.1
+static = true
+position = [0.0, 2.0, 0.0]
+[[bodies]]
+name = "table"
+shape = "box"
+size = [2.0, 0.1, 1.0]
+static = true
+position = [3.0, 0.0, 0.0]
+)");
+  ASSERT_EQ(scene.bodies.size(), 3u);
+  const BodySpec& ball = scene.bodies[0];
+  EXPECT_EQ(ball.shape, Shape::sphere);
+  EXPECT_EQ(ball.radius, 0.25);
+  EXPECT_EQ(ball.size, Vec3::Constant(0.5));
+  EXPECT_FALSE(ball.is_static);
+  const physics::BodyModel ball_model = body_model(scene, ball);
+  EXPECT_EQ(ball_model.shape.kind, physics::ShapeKind::sphere);
+  EXPECT_EQ(ball_model.shape.radius, 0.25);
+  EXPECT_NEAR(ball_model.constants.inertia.x(), 0.4 * 2.0 * 0.25 * 0.25, 1e-15);
+  EXPECT_TRUE(ball_model.constants.isotropic);
+  for (const std::size_t i : {1u, 2u}) {
+    const physics::BodyModel fixed = body_model(scene, scene.bodies[i]);
+    EXPECT_TRUE(fixed.is_static) << scene.bodies[i].name;
+    EXPECT_EQ(fixed.constants.inverse_mass, 0.0);
+    EXPECT_EQ(fixed.constants.inverse_inertia, Vec3::Zero());
+  }
+  EXPECT_EQ(body_model(scene, scene.bodies[2]).shape.half_size, Vec3(1.0, 0.05, 0.5));
 }
 
 TEST(SceneLoader, NearlyUnitOrientationIsNormalised) {
