@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -74,10 +75,15 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   std::string engine = "both";
   bool stream = false;
+  tumble::bench::PileShapes shapes = tumble::bench::PileShapes::boxes;
   CLI::App app("The pile of issue 12, in each engine, in one run");
   app.add_option("--bodies", bodies, "Boxes in the pile")->check(CLI::Range(0, 100000));
   app.add_option("--seconds", seconds, "Simulated time (s)")->check(CLI::Range(0.0, 3600.0));
   app.add_option("--seed", seed, "Seed of the pile's sizes, orientations and velocities");
+  app.add_option("--shape", shapes, "What the pile is poured of: boxes or balls")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, tumble::bench::PileShapes>{
+          {"boxes", tumble::bench::PileShapes::boxes},
+          {"balls", tumble::bench::PileShapes::balls}}));
   app.add_option("--engine", engine, "Which engines to run")
       ->check(CLI::IsMember({"both", "tumble", "bullet"}))
       ->capture_default_str();
@@ -96,7 +102,7 @@ int main(int argc, char** argv) {
                stderr);
     return kExitFailed;
   }
-  const Pile pile = tumble::bench::make_pile(bodies, seed, seconds);
+  const Pile pile = tumble::bench::make_pile(bodies, seed, seconds, shapes);
   if (stream) return stream_run(engine, pile);
 
   std::printf("pile: %s, one thread\n", pile.summary.c_str());

@@ -98,16 +98,25 @@ void add_plane(BulletWorld& bullet, const physics::Plane& plane) {
   bullet.world.addRigidBody(bullet.planes.emplace_back(std::make_unique<btRigidBody>(info)).get());
 }
 
-void add_box(BulletWorld& bullet, const PileBox& box, const physics::Material& material) {
+// The body's shape in Bullet: a btBoxShape, or a btSphereShape for a ball (its radius is all
+// margin: it collides as the sphere given).
+std::unique_ptr<btCollisionShape> bullet_shape(const PileBox& box) {
+  if (box.radius > 0.0) return std::make_unique<btSphereShape>(static_cast<btScalar>(box.radius));
   const physics::Vec3 half_size = 0.5 * box.size;  // m
   auto shape = std::make_unique<btBoxShape>(to_bullet(half_size));
   // btBoxShape keeps its 0.04 m margin inside the box: it stores half extents minus the margin
   // and adds the margin back, and box-box (dBoxBox) and box-plane contacts use the extents with
   // margin, so the box collides as the full size given, sharp corners included (no growth).
   assert((from_bullet(shape->getHalfExtentsWithMargin()) - half_size).norm() < 1e-6);
-  // Tumble's inertia (the same formula as btBoxShape::calculateLocalInertia), so that the two
-  // engines start from the same mass properties by construction.
-  const physics::Vec3 inertia = physics::box_constants(box.mass, box.size).inertia;  // kg m²
+  return shape;
+}
+
+void add_box(BulletWorld& bullet, const PileBox& box, const physics::Material& material) {
+  std::unique_ptr<btCollisionShape> shape = bullet_shape(box);
+  // Tumble's inertia (the same formulas as btBoxShape's and btSphereShape's
+  // calculateLocalInertia), so that the two engines start from the same mass properties by
+  // construction.
+  const physics::Vec3 inertia = constants_of(box).inertia;  // kg m²
   btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(box.mass), nullptr,
                                                 shape.get(), to_bullet(inertia));
   info.m_friction = static_cast<btScalar>(material.friction);

@@ -7,6 +7,8 @@
 #include <numbers>
 
 #include "physics/contact.hpp"
+#include "physics/mass_properties.hpp"
+#include "physics/pair_contact.hpp"
 
 namespace tumble::bench {
 namespace {
@@ -73,12 +75,14 @@ std::vector<physics::Plane> bin_planes(const physics::Material& material) {
           {.normal = -Vec3::UnitZ(), .offset = -w, .material = material}};
 }
 
-std::string summary(int bodies, std::uint64_t seed, const Pile& pile) {
+std::string summary(int bodies, std::uint64_t seed, const Pile& pile, PileShapes shapes) {
   char text[256];
   std::snprintf(text, sizeof text,
-                "%d boxes (seed %llu), edges %.1f-%.1f m, %.0f kg/m3, restitution %.2f, friction "
+                "%d %s (seed %llu), %s %.1f-%.1f m, %.0f kg/m3, restitution %.2f, friction "
                 "%.2f, bin %.0f x %.0f m, dt 1/%.0f s, %d steps",
-                bodies, static_cast<unsigned long long>(seed), kMinEdge, kMaxEdge, kDensity,
+                bodies, shapes == PileShapes::balls ? "balls" : "boxes",
+                static_cast<unsigned long long>(seed),
+                shapes == PileShapes::balls ? "diameters" : "edges", kMinEdge, kMaxEdge, kDensity,
                 kRestitution, kFriction, 2 * kBinHalfWidth, 2 * kBinHalfWidth, 1.0 / kStep,
                 pile.steps);
   return text;
@@ -97,7 +101,7 @@ double SplitMix64::uniform() {
   return static_cast<double>(next() >> 11) * 0x1.0p-53;
 }
 
-Pile make_pile(int bodies, std::uint64_t seed, double seconds) {
+Pile make_pile(int bodies, std::uint64_t seed, double seconds, PileShapes shapes) {
   assert(bodies >= 0 && seconds >= 0.0);
   Pile pile;
   pile.box_material = {.restitution = kRestitution, .friction = kFriction};
@@ -113,15 +117,21 @@ Pile make_pile(int bodies, std::uint64_t seed, double seconds) {
     const double x = random.uniform(kMinEdge, kMaxEdge);
     const double y = random.uniform(kMinEdge, kMaxEdge);
     const double z = random.uniform(kMinEdge, kMaxEdge);
-    box.size = Vec3(x, y, z);
-    box.mass = kDensity * x * y * z;
+    if (shapes == PileShapes::balls) {  // the same draws: a ball of the first edge's diameter
+      box.radius = 0.5 * x;
+      box.size = Vec3::Constant(x);
+      box.mass = kDensity * std::numbers::pi / 6.0 * x * x * x;
+    } else {
+      box.size = Vec3(x, y, z);
+      box.mass = kDensity * x * y * z;
+    }
     box.position = cell_centre(i);
     box.orientation = random_orientation(random);
     box.velocity = random_vector(random, kMaxSpeed);
     box.angular_velocity = random_vector(random, kMaxSpin);
     pile.boxes.push_back(box);
   }
-  pile.summary = summary(bodies, seed, pile);
+  pile.summary = summary(bodies, seed, pile, shapes);
   return pile;
 }
 
@@ -130,20 +140,37 @@ bool inside_bin(const Pile& pile, const physics::Vec3& centre) {
   return std::abs(centre.x()) <= w && std::abs(centre.z()) <= w && centre.y() >= 0.0;
 }
 
+physics::Shape shape_of(const PileBox& box) {
+  return box.radius > 0.0 ? physics::sphere_shape(box.radius) : physics::box_shape(0.5 * box.size);
+}
+
+physics::BodyConstants constants_of(const PileBox& box) {
+  if (box.radius > 0.0) {
+    return physics::constants_from_moments(
+        box.mass, physics::sphere_inertia(box.mass, box.radius).diagonal());
+  }
+  return physics::box_constants(box.mass, box.size);
+}
+
 double PileDepth::operator()(const Pile& pile, std::span<const physics::BoxPose> poses) {
   double deepest = 0.0;
   bounds_.clear();
-  for (const physics::BoxPose& pose : poses) {
+  shapes_.clear();
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const physics::BoxPose& pose = poses[i];
+    shapes_.push_back(shape_of(pile.boxes[i]));
     for (const physics::Plane& plane : pile.planes) {
       const physics::CornerSeparations s =
-          physics::corner_separations(pose.rotation, pose.position, pose.half_size, plane);
+          physics::plane_separations(shapes_.back(), pose.rotation, pose.position, plane);
       deepest = std::max(deepest, -*std::min_element(s.begin(), s.end()));
     }
     bounds_.push_back(physics::box_bounds(pose.position, pose.rotation, pose.half_size, 0.0));
   }
   physics::overlapping_pairs(bounds_, order_, pairs_);
   for (const auto& [a, b] : pairs_) {
-    const physics::PairManifold m = physics::box_box_manifold(poses[a], poses[b], 0.0);
+    const physics::PairManifold m =
+        physics::pair_manifold({poses[a].position, poses[a].rotation, &shapes_[a]},
+                               {poses[b].position, poses[b].rotation, &shapes_[b]}, 0.0);
     for (int k = 0; k < m.count; ++k) {
       deepest = std::max(deepest, -m.points[static_cast<std::size_t>(k)].separation);
     }

@@ -15,9 +15,14 @@
 
 namespace tumble::bench {
 
-// One box at the start of the pour.
+// What a pile is poured of: boxes, or balls (spheres of the same size range: diameters 0.2 to
+// 0.6 m).
+enum class PileShapes { boxes, balls };
+
+// One box (or ball) at the start of the pour.
 struct PileBox {
-  physics::Vec3 size;              // edge lengths along the body axes (m)
+  physics::Vec3 size;              // edge lengths along the body axes (m); a ball's cube
+  double radius = 0.0;             // m: a ball's; 0 for a box
   double mass = 0.0;               // kg
   physics::Vec3 position;          // centre of mass, world frame (m)
   physics::Quat orientation;       // body-to-world rotation, unit, (w, x, y, z)
@@ -39,9 +44,15 @@ struct Pile {
   std::string summary;
 };
 
-// The pile of `bodies` boxes (>= 0) drawn from `seed`, run for `seconds` (s, rounded to whole
-// steps of 1/60 s).
-Pile make_pile(int bodies, std::uint64_t seed, double seconds = 20.0);
+// The pile of `bodies` boxes or balls (>= 0) drawn from `seed`, run for `seconds` (s, rounded to
+// whole steps of 1/60 s).
+Pile make_pile(int bodies, std::uint64_t seed, double seconds = 20.0,
+               PileShapes shapes = PileShapes::boxes);
+
+// A pile body's shape for tumble's contact: its box, or its ball.
+physics::Shape shape_of(const PileBox& box);
+// Its constants: a uniform box's, or a uniform ball's.
+physics::BodyConstants constants_of(const PileBox& box);
 
 // Whether a box centre (world frame, m) is still in the bin: |x|, |z| <= half width and y >= 0.
 bool inside_bin(const Pile& pile, const physics::Vec3& centre);
@@ -54,10 +65,11 @@ bool inside_bin(const Pile& pile, const physics::Vec3& centre);
 // pour, seed 1: 13.7 cm, while its manifolds said 1.5 cm). Keeps its scratch between calls.
 class PileDepth {
  public:
-  // `poses[i]` is box i's centre (world, m) and rotation (body to world).
+  // `poses[i]` is body i's centre (world, m) and rotation (body to world).
   double operator()(const Pile& pile, std::span<const physics::BoxPose> poses);
 
  private:
+  std::vector<physics::Shape> shapes_;
   std::vector<physics::Bounds> bounds_;
   std::vector<std::uint32_t> order_;
   std::vector<physics::BodyPair> pairs_;

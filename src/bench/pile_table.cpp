@@ -43,7 +43,7 @@ const Row kRows[] = {
      [](const PileRun& r, double) {
        return r.contacts.empty() ? std::string("-") : std::to_string(r.contacts.back());
      }},
-    {"largest penetration (m, from the poses)",
+    {"largest penetration, poses (m)",
      [](const PileRun& r, double) { return fixed(r.largest_penetration_m, 4); }},
     {"boxes out of the bin", [](const PileRun& r, double) { return std::to_string(r.escaped); }},
     {"largest speed at 10 s (m/s)", speed_at_10_s},

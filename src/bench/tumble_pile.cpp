@@ -36,9 +36,9 @@ PileRun run_pile_in_tumble(const Pile& pile, const StepObserver& observer) {
   std::vector<physics::BodyModel> models;
   std::vector<physics::BodyState> states;
   for (const PileBox& box : pile.boxes) {
-    models.push_back({.constants = physics::box_constants(box.mass, box.size),
+    models.push_back({.constants = constants_of(box),
                       .forces = {physics::Gravity{.acceleration = pile.gravity}},
-                      .shape = physics::box_shape(0.5 * box.size),
+                      .shape = shape_of(box),
                       .material = pile.box_material});
     states.push_back(physics::make_state(models.back().constants, box.position, box.velocity,
                                          box.orientation, box.angular_velocity));

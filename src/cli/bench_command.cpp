@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <thread>
@@ -438,6 +439,10 @@ void add_bench_contact(CLI::App& bench, Commands& commands) {
       ->capture_default_str();
   command
       ->add_option("--seed", options->seed, "Seed of the boxes' sizes, orientations and velocities")
+      ->capture_default_str();
+  command->add_option("--shape", options->shapes, "What the pile is poured of: boxes or balls")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, bench::PileShapes>{
+          {"boxes", bench::PileShapes::boxes}, {"balls", bench::PileShapes::balls}}))
       ->capture_default_str();
   command
       ->add_option("--out", options->out,

@@ -137,7 +137,11 @@ TEST(Pile, InsideBinIsTheWallsAndTheFloor) {
 // planes, from the poses alone: two unit cubes 3 cm into each other face-on, a third 2 cm into
 // the floor, a fourth turned 45 degrees about y and 5 cm into the wall at x = 3 with a corner.
 TEST(Pile, DepthIsTheDeepestOverlapOfThePoses) {
-  const Pile pile = make_pile(0, 1);
+  Pile pile = make_pile(0, 1);
+  PileBox unit;
+  unit.size = Vec3::Ones();
+  unit.mass = 1.0;
+  pile.boxes.assign(4, unit);
   const Vec3 half(0.5, 0.5, 0.5);
   const physics::Mat3 turned =
       Eigen::AngleAxisd(std::numbers::pi / 4, Vec3::UnitY()).toRotationMatrix();
@@ -154,6 +158,10 @@ TEST(Pile, DepthIsTheDeepestOverlapOfThePoses) {
   poses.push_back(
       {.position = Vec3(3.05 - std::sqrt(0.5), 1.0, 1.5), .rotation = turned, .half_size = half});
   EXPECT_NEAR(depth(pile, poses), 0.05, 1e-12);
+  // The fourth a ball of radius 0.5 instead, 0.1 m into the third's top face.
+  pile.boxes[3].radius = 0.5;
+  poses[3] = {.position = Vec3(0.0, 1.38, -1.5), .half_size = half};
+  EXPECT_NEAR(depth(pile, poses), 0.1, 1e-12);
 }
 
 }  // namespace

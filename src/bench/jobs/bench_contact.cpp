@@ -56,7 +56,8 @@ Result<PileRun> run_peer(const fs::path& peer, const BenchContactOptions& option
   const Result<void> ended = sys::run_reading_lines(
       peer.string(),
       {"--engine", "bullet", "--stream", "--bodies", std::to_string(options.bodies), "--seconds",
-       exact(options.seconds), "--seed", std::to_string(options.seed)},
+       exact(options.seconds), "--seed", std::to_string(options.seed), "--shape",
+       options.shapes == PileShapes::balls ? "balls" : "boxes"},
       [&](std::string_view line) {
         if (const Result<void> read = reader.read(line); !read) {
           unreadable = read.error();
@@ -180,7 +181,7 @@ Result<ExitCode> run_bench_contact(const BenchContactOptions& options, std::FILE
                  peer.c_str());
   }
 
-  const Pile pile = bench::make_pile(options.bodies, options.seed, options.seconds);
+  const Pile pile = bench::make_pile(options.bodies, options.seed, options.seconds, options.shapes);
   std::fprintf(out, "pile: %s, one thread\n", pile.summary.c_str());
   std::fflush(out);
   pipeline::Progress progress(static_cast<std::int64_t>(pile.steps) * (have_peer ? 2 : 1),

@@ -10,13 +10,15 @@
 #include <filesystem>
 #include <string>
 
+#include "bench/pile.hpp"
 #include "common/exit_codes.hpp"
 #include "common/result.hpp"
 
 namespace tumble::bench {
 
 struct BenchContactOptions {
-  int bodies = 1000;       // boxes in the pile
+  int bodies = 1000;  // boxes (or balls) in the pile
+  PileShapes shapes = PileShapes::boxes;
   double seconds = 20.0;   // simulated time (s), rounded to whole steps of 1/60 s
   std::uint64_t seed = 1;  // of the boxes' sizes, orientations and velocities
   // "" for no files; else an existing folder for contact_bench.json and contact_bench.csv.
