@@ -249,8 +249,12 @@ void write(const View& view, const RowSlots& at, ContactRows& rows) {
       .shape = shape,
       .first = at.first,
       .count = count,
+      .rolling_arm = in.material.rolling_resistance,
       .source = in.source,
       .keeps_friction = in.keeps_friction};
+  if (patch.rolling_arm > 0.0) {
+    for (int k = 0; k < 2; ++k) patch.rolling[k] = twist_direction(tangents[k], body_a, body_b);
+  }
   if (in.keeps_friction) {
     const PatchImpulses& friction = in.manifold.friction;
     for (int k = 0; k < 2; ++k) {

@@ -62,7 +62,23 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
   const double change = twist - f.twist_impulse;
   push(f.twist, a, b, change);
   f.twist_impulse = twist;
-  return std::max(largest, std::abs(change));
+  largest = std::max(largest, std::abs(change));
+  if (f.rolling_arm > 0.0) {  // as the tangents: a circle of the two turning rows
+    const double rolling_limit = f.rolling_arm * normal;
+    for (int k = 0; k < 2; ++k) {
+      wanted[k] = f.rolling_impulse[k] - f.rolling[k].mass * relative_speed(f.rolling[k], a, b);
+    }
+    const double rolled = wanted[0] * wanted[0] + wanted[1] * wanted[1];
+    const double cut =
+        rolled > rolling_limit * rolling_limit ? rolling_limit / std::sqrt(rolled) : 1.0;
+    for (int k = 0; k < 2; ++k) {
+      const double rolling_change = wanted[k] * cut - f.rolling_impulse[k];
+      push(f.rolling[k], a, b, rolling_change);
+      f.rolling_impulse[k] += rolling_change;
+      largest = std::max(largest, std::abs(rolling_change));
+    }
+  }
+  return largest;
 }
 
 // One pass over every patch: its points' normal rows, then its friction. Returns the largest

@@ -114,6 +114,12 @@ struct FrictionPatch {
   std::uint32_t first = 0, count = 0;
   double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ Σ normal (N s)
   double twist_impulse = 0.0;              // accumulated, |twist| <= μ twist arm Σ normal (N m s)
+  // Rolling resistance (Material::rolling_resistance): turning about the two tangents, both
+  // together within the lever arm times Σ normal (N m s); solved only where the arm is > 0, and
+  // not warm-started.
+  double rolling_arm = 0.0;  // m
+  ImpulseDirection rolling[2] = {};
+  double rolling_impulse[2] = {0.0, 0.0};
   ManifoldRef source;
   // Whether the friction impulses are warm-started (the row builder sets them) and go back to the
   // manifold: not between bodies in a converged solve (above).

@@ -12,10 +12,16 @@ namespace tumble::physics {
 struct Material {
   double restitution = 0.0;  // e in [0, 1]: normal speed kept by a bounce
   double friction = 0.5;     // Coulomb coefficient μ >= 0
+  // The lever arm of rolling friction (m, >= 0): a contact resists the turning of its bodies
+  // against each other about any axis across its normal with a torque of at most this times its
+  // normal force (MuJoCo's rolling friction; Box2D v3's and Box3D's rolling resistance), so a ball
+  // rolling on a floor comes to rest. 0: no such row is solved.
+  double rolling_resistance = 0.0;
 };
 
 // What a pair of shapes uses: restitution = max(a, b), friction = sqrt(a b) (as Box2D mixes
-// them), so a bouncy ball bounces on any floor and an ice surface is slippery under any shoe.
+// them), so a bouncy ball bounces on any floor and an ice surface is slippery under any shoe;
+// rolling resistance = max(a, b) (as Box3D mixes it).
 Material combine(const Material& a, const Material& b);
 
 // What a body is, for contact: a box, or a round shape (a sphere) that is a core (a point) with

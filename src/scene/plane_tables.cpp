@@ -96,6 +96,8 @@ physics::Material read_material(TableReader& in, const physics::Material& fallba
   }
   out.friction = in.optional_number("friction", fallback.friction);
   require_non_negative(in, "friction", out.friction);
+  out.rolling_resistance = in.optional_number("rolling_resistance", fallback.rolling_resistance);
+  require_non_negative(in, "rolling_resistance", out.rolling_resistance);
   return out;
 }
 

@@ -179,6 +179,30 @@ TEST(SphereWorld, RollsOnAFloorWithoutLosingSpeed) {
   EXPECT_NEAR(s.position().y(), r, 1e-6);
 }
 
+// With rolling resistance c (m), a ball rolling without slipping on a floor slows at
+// 5 c g / (7 r) (the torque c N against its turning, shared with its mass through the rolling
+// constraint), so from v it rolls 7 r v² / (10 c g) and stops: within 2%, and at rest after.
+TEST(SphereWorld, RollingResistanceStopsABallAtTheClosedFormDistance) {
+  const double r = 0.2, v = 2.0;
+  for (const double c : {0.002, 0.01}) {
+    BodyModel model = ball(r, 1.0, {.restitution = 0.0, .friction = 0.5}, true);
+    model.material.rolling_resistance = c;
+    const Plane floor{.normal = Vec3::UnitY(), .offset = 0.0};
+    sim::Simulation world({model},
+                          {state_of(model, Vec3(0, r, 0), Vec3(v, 0, 0), Vec3(0, 0, -v / r))},
+                          Integrator::rk4, kStep, {floor}, {.sleep = false});
+    const double distance = 7.0 * r * v * v / (10.0 * c * kG),
+                 stop = v / (5.0 * c * kG / (7.0 * r));
+    while (world.time() < stop + 2.0) world.step();
+    const BodyState& s = world.current()[0];
+    std::printf("[ measured ] c = %.3f m: rolled %.4f m (closed form %.4f), then %.1e m/s\n", c,
+                s.position().x(), distance, s.velocity().norm());
+    EXPECT_NEAR(s.position().x(), distance, 0.02 * distance);
+    EXPECT_LT(s.velocity().norm(), 1e-6);
+    EXPECT_LT(s.angular_velocity().norm(), 1e-6);
+  }
+}
+
 // Elastic (e = 1, μ = 0), no gravity: a ball meets one at rest head-on (they exchange velocities)
 // and off-centre; energy and momentum are kept within 1e-9.
 TEST(SphereWorld, ElasticImpactsKeepEnergyAndMomentum) {
