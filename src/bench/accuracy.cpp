@@ -241,8 +241,7 @@ Result<std::vector<AccuracyRow>> measure_accuracy(
     }
   }
   for (const ContactCase* c : selection->contact) {
-    for (const physics::ContactMethod method :
-         {physics::ContactMethod::impulse, physics::ContactMethod::penalty}) {
+    for (const physics::ContactMethod method : c->methods) {
       for (const physics::Integrator integrator : physics::kAllIntegrators) {
         if (on_start) {
           on_start(c->name + " (" + physics::contact_method_name(method) + " contact)", integrator);

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <variant>
 
+#include "physics/mass_properties.hpp"
 #include "sim/penalty_modes.hpp"
 
 namespace tumble::bench {
@@ -172,10 +173,58 @@ ContactCase rest() {
   };
 }
 
+// A ball let go on a 30° slope with friction 0.5 (more than 2/7 tan 30°): it rolls without
+// slipping, down ½ (5/7 g sin θ) t² = 4.378 m in 2 s. Impulse contact only.
+ContactCase roll() {
+  constexpr double kRadius = 0.25, kDuration = 2.0;
+  const double theta = std::numbers::pi / 6;
+  const Vec3 n(std::sin(theta), std::cos(theta), 0.0), down(std::cos(theta), -std::sin(theta), 0.0);
+  const physics::Material material{.restitution = 0.0, .friction = 0.5};
+  const physics::BodyModel model{.constants = physics::constants_from_moments(
+                                     1.0, physics::sphere_inertia(1.0, kRadius).diagonal()),
+                                 .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
+                                 .shape = physics::sphere_shape(kRadius),
+                                 .material = material};
+  const Vec3 start = kRadius * n;
+  return {
+      .name = "roll",
+      .summary =
+          "A 1 kg ball of radius 0.25 m let go on a 30° slope, friction 0.5, 2 s "
+          "(impulse contact only)",
+      .measure_note =
+          "the distance rolled down the slope by the end against "
+          "½ (5/7 g sin θ) t² = 4.378 m, and the contact point's fastest slip",
+      .model = model,
+      .initial =
+          physics::make_state(model.constants, start, Vec3::Zero(), Quat::Identity(), Vec3::Zero()),
+      // A floor 10 m below first, never reached: the energy the bench bounds is measured above
+      // it (energy_above_rest), and a run that rolls without losing or gaining any keeps it.
+      .planes = {physics::Plane{.normal = Vec3::UnitY(), .offset = -10.0, .material = material},
+                 physics::Plane{.normal = n, .offset = 0.0, .material = material}},
+      .duration = kDuration,
+      .penalty = {},  // not run with penalty contact
+      .methods = {physics::ContactMethod::impulse},
+      .measures = {{.name = "roll_distance_error_m", .label = "roll distance error (m)"},
+                   {.name = "slip_speed_m_per_s", .label = "slip speed (m/s)"}},
+      .judge =
+          [=](const std::vector<BodyState>& states, double dt) {
+            const double t = dt * static_cast<double>(states.size() - 1);  // s
+            const double exact = 0.5 * 5.0 / 7.0 * kG * std::sin(theta) * t * t;
+            double slip = 0.0;  // m/s
+            for (const BodyState& s : states) {
+              slip =
+                  std::max(slip, (s.velocity() + s.angular_velocity().cross(-kRadius * n)).norm());
+            }
+            return std::vector<double>{
+                std::abs((states.back().position() - start).dot(down) - exact), slip};
+          },
+  };
+}
+
 }  // namespace
 
 const std::vector<ContactCase>& contact_cases() {
-  static const std::vector<ContactCase> cases = {bounce(), slide(), rest()};
+  static const std::vector<ContactCase> cases = {bounce(), slide(), rest(), roll()};
   return cases;
 }
 

@@ -24,13 +24,17 @@ struct ContactCase {
   std::string name;          // short, for files and tables: "bounce"
   std::string summary;       // one line for people
   std::string measure_note;  // how the errors are measured, one sentence
-  physics::BodyModel model;  // gravity, the box and its material; no contact law
+  physics::BodyModel model;  // gravity, the box (or ball) and its material; no contact law
   physics::BodyState initial;
   std::vector<physics::Plane> planes;
   double duration = 0.0;  // s; a whole number of every benchmarked step
   // Penalty runs: the default stiffness, and the damping that gives the case's restitution to a
   // flat landing (sim::penalty_damping_for_restitution).
   physics::ContactSettings penalty;
+  // The methods the case runs with: both, or impulse alone (penalty contact's springs sit at a
+  // box's corners, and a ball has none).
+  std::vector<physics::ContactMethod> methods = {physics::ContactMethod::impulse,
+                                                 physics::ContactMethod::penalty};
   // One or two; the first is the headline, plotted.
   std::vector<ContactMeasure> measures;
   // The errors, one per measure, of a run that went through `states` (states[0] the initial,
