@@ -81,9 +81,7 @@ int main(int argc, char** argv) {
   app.add_option("--seconds", seconds, "Simulated time (s)")->check(CLI::Range(0.0, 3600.0));
   app.add_option("--seed", seed, "Seed of the pile's sizes, orientations and velocities");
   app.add_option("--shape", shapes, "What the pile is poured of: boxes or balls")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, tumble::bench::PileShapes>{
-          {"boxes", tumble::bench::PileShapes::boxes},
-          {"balls", tumble::bench::PileShapes::balls}}));
+      ->transform(CLI::CheckedTransformer(tumble::bench::kPileShapesByName));
   app.add_option("--engine", engine, "Which engines to run")
       ->check(CLI::IsMember({"both", "tumble", "bullet"}))
       ->capture_default_str();

@@ -180,8 +180,7 @@ ContactCase roll() {
   const double theta = std::numbers::pi / 6;
   const Vec3 n(std::sin(theta), std::cos(theta), 0.0), down(std::cos(theta), -std::sin(theta), 0.0);
   const physics::Material material{.restitution = 0.0, .friction = 0.5};
-  const physics::BodyModel model{.constants = physics::constants_from_moments(
-                                     1.0, physics::sphere_inertia(1.0, kRadius).diagonal()),
+  const physics::BodyModel model{.constants = physics::sphere_constants(1.0, kRadius),
                                  .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
                                  .shape = physics::sphere_shape(kRadius),
                                  .material = material};

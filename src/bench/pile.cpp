@@ -80,8 +80,7 @@ std::string summary(int bodies, std::uint64_t seed, const Pile& pile, PileShapes
   std::snprintf(text, sizeof text,
                 "%d %s (seed %llu), %s %.1f-%.1f m, %.0f kg/m3, restitution %.2f, friction "
                 "%.2f, bin %.0f x %.0f m, dt 1/%.0f s, %d steps",
-                bodies, shapes == PileShapes::balls ? "balls" : "boxes",
-                static_cast<unsigned long long>(seed),
+                bodies, pile_shapes_name(shapes), static_cast<unsigned long long>(seed),
                 shapes == PileShapes::balls ? "diameters" : "edges", kMinEdge, kMaxEdge, kDensity,
                 kRestitution, kFriction, 2 * kBinHalfWidth, 2 * kBinHalfWidth, 1.0 / kStep,
                 pile.steps);
@@ -140,14 +139,17 @@ bool inside_bin(const Pile& pile, const physics::Vec3& centre) {
   return std::abs(centre.x()) <= w && std::abs(centre.z()) <= w && centre.y() >= 0.0;
 }
 
+const char* pile_shapes_name(PileShapes shapes) {
+  return shapes == PileShapes::balls ? "balls" : "boxes";
+}
+
 physics::Shape shape_of(const PileBox& box) {
   return box.radius > 0.0 ? physics::sphere_shape(box.radius) : physics::box_shape(0.5 * box.size);
 }
 
 physics::BodyConstants constants_of(const PileBox& box) {
   if (box.radius > 0.0) {
-    return physics::constants_from_moments(
-        box.mass, physics::sphere_inertia(box.mass, box.radius).diagonal());
+    return physics::sphere_constants(box.mass, box.radius);
   }
   return physics::box_constants(box.mass, box.size);
 }

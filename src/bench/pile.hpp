@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,6 +19,10 @@ namespace tumble::bench {
 // What a pile is poured of: boxes, or balls (spheres of the same size range: diameters 0.2 to
 // 0.6 m).
 enum class PileShapes { boxes, balls };
+// Their names on command lines and in the pile's summary.
+inline const std::map<std::string, PileShapes> kPileShapesByName = {{"boxes", PileShapes::boxes},
+                                                                    {"balls", PileShapes::balls}};
+const char* pile_shapes_name(PileShapes shapes);
 
 // One box (or ball) at the start of the pour.
 struct PileBox {
@@ -57,9 +62,9 @@ physics::BodyConstants constants_of(const PileBox& box);
 // Whether a box centre (world frame, m) is still in the bin: |x|, |z| <= half width and y >= 0.
 bool inside_bin(const Pile& pile, const physics::Vec3& centre);
 
-// The deepest any box of the pile is inside a plane or another box (m, >= 0), measured from the
-// boxes' poses alone (every pair whose bounds overlap, by the separating-axis test of
-// physics/box_box.hpp), so that every engine's poses are judged alike, at the end of each step.
+// The deepest any body of the pile is inside a plane or another body (m, >= 0), measured from the
+// poses alone (every pair whose bounds overlap, by its manifold, physics/pair_contact.hpp), so
+// that every engine's poses are judged alike, at the end of each step.
 // Not an engine's own manifolds: they are found at the start of a step (or a sub-step), and a box
 // that a landing neighbour stops within the step can end it far inside that neighbour (tumble's
 // pour, seed 1: 13.7 cm, while its manifolds said 1.5 cm). Keeps its scratch between calls.

@@ -441,8 +441,7 @@ void add_bench_contact(CLI::App& bench, Commands& commands) {
       ->add_option("--seed", options->seed, "Seed of the boxes' sizes, orientations and velocities")
       ->capture_default_str();
   command->add_option("--shape", options->shapes, "What the pile is poured of: boxes or balls")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, bench::PileShapes>{
-          {"boxes", bench::PileShapes::boxes}, {"balls", bench::PileShapes::balls}}))
+      ->transform(CLI::CheckedTransformer(bench::kPileShapesByName))
       ->capture_default_str();
   command
       ->add_option("--out", options->out,

@@ -51,14 +51,15 @@ struct PlaneManifoldRows {
 };
 
 // A pair's manifold, as its rows need it. The solver pushes its first body along the normal,
-// which points from A to B: B is the rows' first body. The projection measures a point's
-// separation as the manifold's plus the anchors' relative motion along the normal since `base`,
-// the poses at which the manifold's separations hold.
+// which points from A to B: B is the rows' first body (A when B is static, pushed along −normal).
+// The projection measures a point's separation as the manifold's plus the anchors' relative
+// motion along the normal since `base`, the poses at which the manifold's separations hold.
 struct PairManifoldRows {
   const PairManifold& manifold;
   const Material& material;  // of the two bodies, combined
-  std::uint32_t a, b;        // the indices of A and B among rows.bodies
-  const Mat3& a_rotation;    // A's at the pose the rows are for
+  // The indices of A and B among rows.bodies, or kStatic for a static body (one of them at most).
+  std::uint32_t a, b;
+  const Mat3& a_rotation;  // A's at the pose the rows are for
   const Mat3& b_rotation;
   PoseRef a_base, b_base;
   // s: a point apart by s may approach at s / speculative_step (Catto, "Speculative contacts",

@@ -31,6 +31,27 @@ SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
   return change;
 }
 
+// Two rows solved together within a circle: both accumulated impulses within `limit`, so that no
+// direction between them is favoured (the tangents' circular cone; the rolling rows' circle).
+// Returns the larger change.
+double solve_in_circle(const ImpulseDirection (&rows)[2], double (&accumulated)[2], double limit,
+                       SolverBody& a, SolverBody* b) {
+  double wanted[2];
+  for (int k = 0; k < 2; ++k) {
+    wanted[k] = accumulated[k] - rows[k].mass * relative_speed(rows[k], a, b);
+  }
+  const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
+  const double scale = size_squared > limit * limit ? limit / std::sqrt(size_squared) : 1.0;
+  double largest = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    const double change = wanted[k] * scale - accumulated[k];
+    push(rows[k], a, b, change);
+    accumulated[k] += change;
+    largest = std::max(largest, std::abs(change));
+  }
+  return largest;
+}
+
 // The friction rows of one patch, within μ times its points' normal impulse; returns the largest
 // change (N s, or N m s for the twist).
 double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConstraint> points,
@@ -41,21 +62,9 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
   for (std::uint32_t i = f.first; i < f.first + f.count; ++i) {
     normal += points[i].normal_impulse + points[i].impact_impulse;
   }
-  // Circular cone: both tangent impulses together within μ λ_n, so no direction is favoured.
-  double wanted[2];
-  for (int k = 0; k < 2; ++k) {
-    wanted[k] = f.tangent_impulse[k] - f.tangent[k].mass * relative_speed(f.tangent[k], a, b);
-  }
+  // Circular cone: both tangent impulses together within μ λ_n.
   const double limit = f.friction * normal;
-  const double size_squared = wanted[0] * wanted[0] + wanted[1] * wanted[1];
-  const double scale = size_squared > limit * limit ? limit / std::sqrt(size_squared) : 1.0;
-  double largest = 0.0;
-  for (int k = 0; k < 2; ++k) {
-    const double change = wanted[k] * scale - f.tangent_impulse[k];
-    push(f.tangent[k], a, b, change);
-    f.tangent_impulse[k] += change;
-    largest = std::max(largest, std::abs(change));
-  }
+  double largest = solve_in_circle(f.tangent, f.tangent_impulse, limit, a, b);
   const double twist_limit = limit * f.shape.twist_arm;
   const double twist = std::clamp(f.twist_impulse - f.twist.mass * relative_speed(f.twist, a, b),
                                   -twist_limit, twist_limit);
@@ -63,20 +72,9 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
   push(f.twist, a, b, change);
   f.twist_impulse = twist;
   largest = std::max(largest, std::abs(change));
-  if (f.rolling_arm > 0.0) {  // as the tangents: a circle of the two turning rows
-    const double rolling_limit = f.rolling_arm * normal;
-    for (int k = 0; k < 2; ++k) {
-      wanted[k] = f.rolling_impulse[k] - f.rolling[k].mass * relative_speed(f.rolling[k], a, b);
-    }
-    const double rolled = wanted[0] * wanted[0] + wanted[1] * wanted[1];
-    const double cut =
-        rolled > rolling_limit * rolling_limit ? rolling_limit / std::sqrt(rolled) : 1.0;
-    for (int k = 0; k < 2; ++k) {
-      const double rolling_change = wanted[k] * cut - f.rolling_impulse[k];
-      push(f.rolling[k], a, b, rolling_change);
-      f.rolling_impulse[k] += rolling_change;
-      largest = std::max(largest, std::abs(rolling_change));
-    }
+  if (f.rolling_arm > 0.0) {
+    largest = std::max(largest,
+                       solve_in_circle(f.rolling, f.rolling_impulse, f.rolling_arm * normal, a, b));
   }
   return largest;
 }

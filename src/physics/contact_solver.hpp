@@ -115,8 +115,8 @@ struct FrictionPatch {
   double tangent_impulse[2] = {0.0, 0.0};  // accumulated, |(t0, t1)| <= μ Σ normal (N s)
   double twist_impulse = 0.0;              // accumulated, |twist| <= μ twist arm Σ normal (N m s)
   // Rolling resistance (Material::rolling_resistance): turning about the two tangents, both
-  // together within the lever arm times Σ normal (N m s); solved only where the arm is > 0, and
-  // not warm-started.
+  // together within the lever arm times Σ normal (N m s); solved only where the arm is > 0. Not
+  // warm-started: it starts from 0 in each solve, and in each sub-step of a sub-stepped one.
   double rolling_arm = 0.0;  // m
   ImpulseDirection rolling[2] = {};
   double rolling_impulse[2] = {0.0, 0.0};

@@ -62,6 +62,28 @@ void wind(const std::vector<Vec3>& vertices, const Vec3& normal, std::vector<std
   std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
 }
 
+// Into `out`: the corners and faces of the hull Qhull built of `points`, the faces' corners in
+// Qhull's order and their outward normals.
+void read_hull(qhT* qh, std::span<const Vec3> points, ConvexHull& out) {  // `qh`: as FOR* name it
+  std::map<int, std::uint32_t> index_of;  // Qhull's point id to the hull's corner
+  facetT* facet = nullptr;
+  vertexT* vertex = nullptr;
+  vertexT** vertexp = nullptr;
+  FORALLfacets {
+    std::vector<std::uint32_t> face;
+    FOREACHvertex_(facet->vertices) {
+      const int id = qh_pointid(qh, vertex->point);
+      const auto [at, added] =
+          index_of.try_emplace(id, static_cast<std::uint32_t>(out.vertices.size()));
+      if (added) out.vertices.push_back(points[static_cast<std::size_t>(id)]);
+      face.push_back(at->second);
+    }
+    const Vec3 normal(facet->normal[0], facet->normal[1], facet->normal[2]);  // outward
+    out.faces.push_back(std::move(face));
+    out.normals.push_back(normal.normalized());
+  }
+}
+
 }  // namespace
 
 std::vector<std::array<std::uint32_t, 3>> ConvexHull::triangles() const {
@@ -88,39 +110,27 @@ Result<ConvexHull> convex_hull(std::span<const Vec3> points) {
   std::vector<coordT> coordinates;
   coordinates.reserve(3 * points.size());
   for (const Vec3& p : points) coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
-  Qhull qhull;
-  char command[] = "qhull";
+  // Qhull's messages go to a stream in memory, closed only once Qhull is freed (it may write
+  // there until then).
   char* message = nullptr;
   std::size_t message_size = 0;
   FILE* errors = open_memstream(&message, &message_size);
-  const int code = qh_new_qhull(qhull.get(), 3, static_cast<int>(points.size()), coordinates.data(),
-                                False, command, nullptr, errors);
+  ConvexHull hull;
+  int code = 0;
+  {
+    Qhull qhull;
+    char command[] = "qhull";
+    code = qh_new_qhull(qhull.get(), 3, static_cast<int>(points.size()), coordinates.data(), False,
+                        command, nullptr, errors);
+    if (code == 0) read_hull(qhull.get(), points, hull);
+  }
   std::fclose(errors);
   const std::string said = message ? std::string(message, message_size) : std::string();
   std::free(message);
   if (code != 0) return Error{"the hull's points could not be wrapped (Qhull: " + said + ")"};
-
-  ConvexHull hull;
-  std::map<int, std::uint32_t> index_of;  // Qhull's point id to the hull's corner
-  facetT* facet = nullptr;
-  vertexT* vertex = nullptr;
-  vertexT** vertexp = nullptr;
-  qhT* qh = qhull.get();  // the FOR* macros name `qh`
-  FORALLfacets {
-    std::vector<std::uint32_t> face;
-    FOREACHvertex_(facet->vertices) {
-      const int id = qh_pointid(qh, vertex->point);
-      const auto [at, added] =
-          index_of.try_emplace(id, static_cast<std::uint32_t>(hull.vertices.size()));
-      if (added) hull.vertices.push_back(points[static_cast<std::size_t>(id)]);
-      face.push_back(at->second);
-    }
-    const Vec3 normal(facet->normal[0], facet->normal[1], facet->normal[2]);  // outward
-    hull.faces.push_back(std::move(face));
-    hull.normals.push_back(normal.normalized());
-  }
-  for (std::size_t f = 0; f < hull.faces.size(); ++f)
+  for (std::size_t f = 0; f < hull.faces.size(); ++f) {
     wind(hull.vertices, hull.normals[f], hull.faces[f]);
+  }
   return hull;
 }
 

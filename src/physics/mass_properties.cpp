@@ -10,6 +10,10 @@ Mat3 sphere_inertia(double mass, double radius) {
   return Mat3::Identity() * (0.4 * mass * radius * radius);
 }
 
+BodyConstants sphere_constants(double mass, double radius) {
+  return constants_from_moments(mass, sphere_inertia(mass, radius).diagonal());
+}
+
 Mat3 cylinder_inertia(double mass, double radius, double length) {
   const double r2 = radius * radius, h2 = length * length;
   const double across = mass * (3.0 * r2 + h2) / 12.0;

@@ -21,6 +21,8 @@ struct MassProperties {
 
 // A uniform ball of `radius` (m): I = 2/5 m r² about every axis.
 Mat3 sphere_inertia(double mass, double radius);
+// The constants of a uniform ball of `mass` (kg) and `radius` (m).
+BodyConstants sphere_constants(double mass, double radius);
 // A uniform solid cylinder of `radius` and `length` (m) along its y axis: I_y = m r²/2,
 // I_x = I_z = m (3 r² + h²)/12.
 Mat3 cylinder_inertia(double mass, double radius, double length);

@@ -1,5 +1,6 @@
 #include "physics/pair_contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -84,6 +85,20 @@ PairManifold box_sphere_manifold(const BoxPose& box, const ShapePose& sphere, do
   const Vec3 normal = box.rotation * normal_local;
   const Vec3 at = box.position + box.rotation * surface_local + 0.5 * gap * normal;
   return one_point({box.position, box.rotation, nullptr}, sphere, normal, at, gap, feature);
+}
+
+double pair_separation(const ShapePose& a, const ShapePose& b, double margin) {
+  if (a.shape->kind == ShapeKind::box && b.shape->kind == ShapeKind::box) {
+    return box_box_axis({a.position, a.rotation, a.shape->half_size},
+                        {b.position, b.rotation, b.shape->half_size})
+        .separation;
+  }
+  const PairManifold m = pair_manifold(a, b, margin);
+  double deepest = margin;
+  for (int k = 0; k < m.count; ++k) {
+    deepest = std::min(deepest, m.points[static_cast<std::size_t>(k)].separation);
+  }
+  return deepest;
 }
 
 PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin) {

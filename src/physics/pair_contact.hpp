@@ -21,6 +21,11 @@ struct ShapePose {
 // surfaces along the normal.
 PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin);
 
+// How far apart two shapes are (m; negative: how deep they overlap), if within `margin` of
+// touching; `margin` or more otherwise: two boxes by the separating-axis test (the axis's
+// separation), any other pair by its manifold's deepest point.
+double pair_separation(const ShapePose& a, const ShapePose& b, double margin);
+
 // Two spheres of radii `ra`, `rb` (m) centred at `a`, `b` (rotations body to world): the normal
 // along the line of centres (+y when the centres coincide), feature 0.
 PairManifold sphere_sphere_manifold(const ShapePose& a, double ra, const ShapePose& b, double rb,

@@ -136,6 +136,7 @@ void substep_island(const StepContext& context, int substeps,
     // as one, its bounce stayed when the guess was taken back, and a settling pile of 1000 boxes
     // still moved at 1 m/s after 10 s).
     for (ContactConstraint& c : points) c.impact_impulse = 0.0;
+    for (FrictionPatch& f : patches) f.rolling_impulse[0] = f.rolling_impulse[1] = 0.0;
     impacts(solver, points, patches, scratch.separations, 2.0 * h, settings, scratch.allowed);
     warm_start(solver, points, patches);
     substep_pass(solver, points, scratch.separations, patches, h, by_block);

@@ -4,7 +4,6 @@
 #include <set>
 #include <vector>
 
-#include "physics/box_box.hpp"
 #include "physics/pair_contact.hpp"
 
 #include "scene/limits.hpp"
@@ -138,18 +137,11 @@ physics::ContactSettings read_contact_settings(TableReader& in) {
 
 namespace {
 
-// How deep two bodies overlap at their start (m; <= 0 apart): two boxes by the separating-axis
-// test, a pair with a sphere by its contact.
+// How deep two bodies overlap at their start (m; <= 0 apart).
 double start_overlap(const BodySpec& a, const BodySpec& b) {
-  const physics::Mat3 ra = a.orientation.toRotationMatrix(), rb = b.orientation.toRotationMatrix();
-  if (a.shape != Shape::sphere && b.shape != Shape::sphere) {
-    return -physics::box_box_axis({a.position, ra, 0.5 * a.size}, {b.position, rb, 0.5 * b.size})
-                .separation;
-  }
   const physics::Shape sa = physics_shape(a), sb = physics_shape(b);
-  const physics::PairManifold m =
-      physics::pair_manifold({a.position, ra, &sa}, {b.position, rb, &sb}, 0.0);
-  return m.count > 0 ? -m.points[0].separation : 0.0;
+  return -physics::pair_separation({a.position, a.orientation.toRotationMatrix(), &sa},
+                                   {b.position, b.orientation.toRotationMatrix(), &sb}, 0.0);
 }
 
 }  // namespace
@@ -183,8 +175,10 @@ void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
       const std::string what = "bodies " + in_quotes(first.name) + " and " +
                                in_quotes(second.name) + " start overlapping by " +
                                format_number(overlap) +
-                               " m (bodies collide; give one `collide = false`, or set "
-                               "[physics] collide_bodies = false)";
+                               (first.is_static || second.is_static
+                                    ? " m (a static body holds its place: move the other out)"
+                                    : " m (bodies collide; give one `collide = false`, or set "
+                                      "[physics] collide_bodies = false)");
       const toml::table& table = *bodies[b].as_table();
       TableReader reader(table, "bodies[" + std::to_string(b) + "]", root.file());
       if (table.contains("position")) reader.fail("position", what);
@@ -202,6 +196,12 @@ void read_planes(TableReader& root, Scene& scene) {
   root.each_table(*planes, "planes", static_cast<std::size_t>(kMaxPlanes), "a [[planes]] table",
                   [&](TableReader& in, std::size_t i) {
                     scene.planes.push_back(read_plane(in, i));
+                    if (scene.physics.contact.method == physics::ContactMethod::penalty &&
+                        scene.planes.back().material.rolling_resistance > 0.0) {
+                      in.fail("rolling_resistance",
+                              "rolling resistance needs [physics] contact = \"impulse\" (the "
+                              "default): penalty contact's springs sit at a box's corners");
+                    }
                     if (!names.insert(scene.planes.back().name).second) {
                       in.fail("name",
                               "duplicate plane name " + in_quotes(scene.planes.back().name));

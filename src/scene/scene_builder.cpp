@@ -14,8 +14,7 @@ physics::BodyConstants body_constants(const BodySpec& body) {
     case Shape::box:
       return physics::box_constants(body.mass, body.size);
     case Shape::sphere:
-      return physics::constants_from_moments(
-          body.mass, physics::sphere_inertia(body.mass, body.radius).diagonal());
+      return physics::sphere_constants(body.mass, body.radius);
   }
   return {};
 }

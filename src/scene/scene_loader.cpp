@@ -153,6 +153,28 @@ physics::ForceLaw read_force(TableReader& in) {
   return law;
 }
 
+// What the scene's contact cannot hold, refused at its key: penalty contact's corner springs hold
+// no sphere, static body or rolling resistance; and a static body among bodies that do not
+// collide would be passed through.
+void refuse_what_the_contact_cannot_hold(TableReader& in, const BodySpec& body,
+                                       const PhysicsSettings& physics) {
+  const auto fail_unless_impulse = [&](const char* key, const std::string& what) {
+    if (physics.contact.method == physics::ContactMethod::penalty) {
+      in.fail(key, what +
+                       " needs [physics] contact = \"impulse\" (the default): penalty "
+                       "contact's springs sit at a box's corners");
+    }
+  };
+  if (body.shape == Shape::sphere) fail_unless_impulse("shape", "a sphere");
+  if (body.is_static) fail_unless_impulse("static", "a static body");
+  if (in.has("rolling_resistance")) fail_unless_impulse("rolling_resistance", "rolling resistance");
+  if (body.is_static && !physics.contact.collide_bodies) {
+    in.fail("static",
+            "a static body with [physics] collide_bodies = false is passed through by "
+            "every body: let bodies collide, or use a plane");
+  }
+}
+
 BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) {
   BodySpec body;
   body.name = in.optional_string("name", "body" + std::to_string(index));
@@ -186,16 +208,19 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   if (body.is_static) {
     // Fixed in the world: it needs no mass (one written is not used) and cannot move.
     for (const char* key : {"velocity", "angular_velocity", "forces"}) {
-      if (in.has(key)) {
-        in.fail(key, std::string("a static body never moves: it takes no ") +
-                         (std::string(key) == "forces" ? "forces" : key));
-      }
+      if (in.has(key)) in.fail(key, std::string("a static body never moves: it takes no ") + key);
     }
-    body.mass = in.optional_number("mass", 1.0);
+    if (in.optional_bool("collide", true) == false) {
+      in.fail("collide",
+              "a static body that collides with nothing is only scenery: leave it out "
+              "or let it collide");
+    }
+    body.mass = in.optional_number("mass", 1.0);  // 0 allowed, as other engines write a static
+    require_non_negative(in, "mass", body.mass);
   } else {
     body.mass = in.required_number("mass");
+    require_positive(in, "mass", body.mass);
   }
-  require_positive(in, "mass", body.mass);
   const physics::BodyConstants constants = body_constants(body);
   if (!(std::isfinite(constants.inverse_mass) && constants.inverse_inertia.allFinite() &&
         constants.inertia.allFinite())) {
@@ -299,18 +324,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
   in.each_table(*bodies, "bodies", static_cast<std::size_t>(kMaxBodies), "a [[bodies]] table",
                 [&](TableReader& body, std::size_t i) {
                   scene.bodies.push_back(read_body(body, i, file));
-                  if (scene.bodies.back().is_static &&
-                      scene.physics.contact.method == physics::ContactMethod::penalty) {
-                    body.fail("static",
-                              "penalty contact has no static bodies: use [physics] contact = "
-                              "\"impulse\" (the default), or a plane");
-                  }
-                  if (scene.bodies.back().shape == Shape::sphere &&
-                      scene.physics.contact.method == physics::ContactMethod::penalty) {
-                    body.fail("shape",
-                              "penalty contact holds boxes only: a sphere needs [physics] contact "
-                              "= \"impulse\" (the default)");
-                  }
+                  refuse_what_the_contact_cannot_hold(body, scene.bodies.back(), scene.physics);
                   if (!names.insert(scene.bodies.back().name).second) {
                     body.fail("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
                   }

@@ -21,7 +21,8 @@ std::vector<std::string> check_contact(const physics::BodyModel& model,
                                        const physics::ContactSettings& settings,
                                        physics::Integrator integrator, double dt) {
   std::vector<std::string> out;
-  // A static body neither falls nor bounces: what meets it bounces by its own advice.
+  // A static body neither falls nor bounces. (What rests on a bouncy static body is not advised
+  // on: only planes are looked at here.)
   if (settings.method != physics::ContactMethod::impulse || model.is_static) return out;
   physics::Vec3 gravity = physics::Vec3::Zero();  // m/s²
   for (const physics::ForceLaw& law : model.forces) {
@@ -91,19 +92,11 @@ std::size_t root_of(std::vector<std::size_t>& parent, std::size_t i) {
   return i;
 }
 
-// Whether two bodies touch (within kTouching): two boxes by the separating-axis test, any other
-// pair by its manifold.
+// Whether two bodies touch (within kTouching).
 bool touch(const physics::BodyModel& a, const physics::BodyState& sa, const physics::BodyModel& b,
            const physics::BodyState& sb) {
-  const physics::Mat3 ra = sa.rotation(), rb = sb.rotation();
-  if (a.shape.kind == physics::ShapeKind::box && b.shape.kind == physics::ShapeKind::box) {
-    return physics::box_box_axis({sa.position(), ra, a.shape.half_size},
-                                 {sb.position(), rb, b.shape.half_size})
-               .separation < kTouching;
-  }
-  return physics::pair_manifold({sa.position(), ra, &a.shape}, {sb.position(), rb, &b.shape},
-                                kTouching)
-             .count > 0;
+  return physics::pair_separation({sa.position(), sa.rotation(), &a.shape},
+                                  {sb.position(), sb.rotation(), &b.shape}, kTouching) < kTouching;
 }
 
 }  // namespace

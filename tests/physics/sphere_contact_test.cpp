@@ -21,7 +21,7 @@ constexpr double kStep = 1.0 / 60.0;  // s
 
 BodyModel ball(double radius, double mass, Material material, bool gravity) {
   BodyModel model{
-      .constants = constants_from_moments(mass, sphere_inertia(mass, radius).diagonal()),
+      .constants = sphere_constants(mass, radius),
       .forces = {},
       .shape = sphere_shape(radius),
       .material = material};

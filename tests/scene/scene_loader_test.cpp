@@ -256,7 +256,8 @@ anchor = [1, 2, 3]
 }
 
 // A sphere is its radius (its box the cube around it, for bounds and framing) with the inertia of
-// a uniform ball; a static body needs no mass and gets no inverse mass or inertia.
+// a uniform ball; a static body needs no mass (0 is taken, as other engines write a static body)
+// and gets no inverse mass or inertia.
 TEST(SceneLoader, SpheresAndStaticBodiesBecomeTheirShapesAndConstants) {
   const Scene scene = parse_valid(R"(
 duration = 1.0
@@ -270,6 +271,7 @@ name = "peg"
 shape = "sphere"
 radius = 0.1
 static = true
+mass = 0.0
 position = [0.0, 2.0, 0.0]
 [[bodies]]
 name = "table"

@@ -57,7 +57,7 @@ Result<PileRun> run_peer(const fs::path& peer, const BenchContactOptions& option
       peer.string(),
       {"--engine", "bullet", "--stream", "--bodies", std::to_string(options.bodies), "--seconds",
        exact(options.seconds), "--seed", std::to_string(options.seed), "--shape",
-       options.shapes == PileShapes::balls ? "balls" : "boxes"},
+       pile_shapes_name(options.shapes)},
       [&](std::string_view line) {
         if (const Result<void> read = reader.read(line); !read) {
           unreadable = read.error();
