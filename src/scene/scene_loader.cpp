@@ -157,7 +157,7 @@ physics::ForceLaw read_force(TableReader& in) {
 // no sphere, static body or rolling resistance; and a static body among bodies that do not
 // collide would be passed through.
 void refuse_what_the_contact_cannot_hold(TableReader& in, const BodySpec& body,
-                                       const PhysicsSettings& physics) {
+                                         const PhysicsSettings& physics) {
   const auto fail_unless_impulse = [&](const char* key, const std::string& what) {
     if (physics.contact.method == physics::ContactMethod::penalty) {
       in.fail(key, what +
