@@ -11,38 +11,27 @@
 namespace tumble::physics {
 namespace {
 
-// The direction along `linear` (null for a twist: no linear part, no share of the masses) whose
-// moments are moment_a on a and moment_b on b (when there is a b).
-// (Computed in locals and stored once: reading back a half-written member stalls on the store.)
-ImpulseDirection direction_with(const Vec3* linear, const Vec3& moment_a, const SolverBody& a,
-                                const SolverBody* b, const Vec3& moment_b) {
-  const Vec3 turn_a = a.turn(moment_a);
-  double inverse = (linear ? a.inverse_mass : 0.0) + moment_a.dot(turn_a);
-  Vec3 moment_b_out = Vec3::Zero(), turn_b = Vec3::Zero();
-  if (b) {
-    moment_b_out = moment_b;
-    turn_b = b->turn(moment_b);
-    inverse += (linear ? b->inverse_mass : 0.0) + moment_b.dot(turn_b);
-  }
-  return {.linear = linear ? *linear : Vec3::Zero(),
-          .moment_a = moment_a,
-          .turn_a = turn_a,
-          .moment_b = moment_b_out,
-          .turn_b = turn_b,
-          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
-}
-
 // The direction `along` (unit, world) at a point `arm_a` (m, world) from a's centre, and at
-// `arm_b` from b's when there is a b (null against a static shape).
+// `arm_b` from b's when there is a b (null against a static shape); turning_direction
+// (contact_solver.hpp) is the same without the linear part.
+// (Computed in locals and stored once: reading back a half-written member stalls on the store.)
 ImpulseDirection impulse_direction(const Vec3& along, const SolverBody& a, const Vec3& arm_a,
                                    const SolverBody* b, const Vec3& arm_b) {
-  return direction_with(&along, arm_a.cross(along), a, b,
-                        b ? Vec3(arm_b.cross(along)) : Vec3::Zero());
-}
-
-// The turning direction about the unit `axis` (world): no linear part, the same moment on both.
-ImpulseDirection twist_direction(const Vec3& axis, const SolverBody& a, const SolverBody* b) {
-  return direction_with(nullptr, axis, a, b, axis);
+  const Vec3 moment_a = arm_a.cross(along);
+  const Vec3 turn_a = a.turn(moment_a);
+  double inverse = a.inverse_mass + moment_a.dot(turn_a);
+  Vec3 moment_b = Vec3::Zero(), turn_b = Vec3::Zero();
+  if (b) {
+    moment_b = arm_b.cross(along);
+    turn_b = b->turn(moment_b);
+    inverse += b->inverse_mass + moment_b.dot(turn_b);
+  }
+  return {.linear = along,
+          .moment_a = moment_a,
+          .turn_a = turn_a,
+          .moment_b = moment_b,
+          .turn_b = turn_b,
+          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
 }
 
 // A manifold's point as rows see it, whatever made the manifold: its arm from both bodies'
@@ -244,7 +233,7 @@ void write(const View& view, const RowSlots& at, ContactRows& rows) {
       .b = b,
       .tangent = {impulse_direction(tangents[0], body_a, centre_a, body_b, centre_b),
                   impulse_direction(tangents[1], body_a, centre_a, body_b, centre_b)},
-      .twist = twist_direction(normal, body_a, body_b),
+      .twist = turning_direction(normal, body_a, body_b),
       .friction = in.material.friction,
       .shape = shape,
       .first = at.first,
@@ -252,9 +241,6 @@ void write(const View& view, const RowSlots& at, ContactRows& rows) {
       .rolling_arm = in.material.rolling_resistance,
       .source = in.source,
       .keeps_friction = in.keeps_friction};
-  if (patch.rolling_arm > 0.0) {
-    for (int k = 0; k < 2; ++k) patch.rolling[k] = twist_direction(tangents[k], body_a, body_b);
-  }
   if (in.keeps_friction) {
     const PatchImpulses& friction = in.manifold.friction;
     for (int k = 0; k < 2; ++k) {

@@ -34,8 +34,9 @@ SolverBody* second(std::span<SolverBody> bodies, const ContactConstraint& c) {
 // Two rows solved together within a circle: both accumulated impulses within `limit`, so that no
 // direction between them is favoured (the tangents' circular cone; the rolling rows' circle).
 // Returns the larger change.
-double solve_in_circle(const ImpulseDirection (&rows)[2], double (&accumulated)[2], double limit,
-                       SolverBody& a, SolverBody* b) {
+[[gnu::always_inline]] inline double solve_in_circle(const ImpulseDirection (&rows)[2],
+                                                     double (&accumulated)[2], double limit,
+                                                     SolverBody& a, SolverBody* b) {
   double wanted[2];
   for (int k = 0; k < 2; ++k) {
     wanted[k] = accumulated[k] - rows[k].mass * relative_speed(rows[k], a, b);
@@ -73,8 +74,10 @@ double solve_friction(std::span<SolverBody> bodies, std::span<const ContactConst
   f.twist_impulse = twist;
   largest = std::max(largest, std::abs(change));
   if (f.rolling_arm > 0.0) {
+    const ImpulseDirection rolling[2] = {turning_direction(f.tangent[0].linear, a, b),
+                                         turning_direction(f.tangent[1].linear, a, b)};
     largest = std::max(largest,
-                       solve_in_circle(f.rolling, f.rolling_impulse, f.rolling_arm * normal, a, b));
+                       solve_in_circle(rolling, f.rolling_impulse, f.rolling_arm * normal, a, b));
   }
   return largest;
 }

@@ -117,14 +117,35 @@ struct FrictionPatch {
   // Rolling resistance (Material::rolling_resistance): turning about the two tangents, both
   // together within the lever arm times Σ normal (N m s); solved only where the arm is > 0. Not
   // warm-started: it starts from 0 in each solve, and in each sub-step of a sub-stepped one.
+  // Its rows turn about the tangents (turning_direction of tangent[k].linear), made where they
+  // are solved: a patch that rolls freely carries no more than the arm and the two impulses.
   double rolling_arm = 0.0;  // m
-  ImpulseDirection rolling[2] = {};
   double rolling_impulse[2] = {0.0, 0.0};
   ManifoldRef source;
   // Whether the friction impulses are warm-started (the row builder sets them) and go back to the
   // manifold: not between bodies in a converged solve (above).
   bool keeps_friction = false;
 };
+
+// The direction that turns a about the unit `axis` (world) and b the other way (none for a
+// static shape): no linear part.
+inline ImpulseDirection turning_direction(const Vec3& axis, const SolverBody& a,
+                                          const SolverBody* b) {
+  const Vec3 turn_a = a.turn(axis);
+  double inverse = 0.0 + axis.dot(turn_a);
+  Vec3 moment_b = Vec3::Zero(), turn_b = Vec3::Zero();
+  if (b) {
+    moment_b = axis;
+    turn_b = b->turn(axis);
+    inverse += 0.0 + axis.dot(turn_b);
+  }
+  return {.linear = Vec3::Zero(),
+          .moment_a = axis,
+          .turn_a = turn_a,
+          .moment_b = moment_b,
+          .turn_b = turn_b,
+          .mass = inverse > 0.0 ? 1.0 / inverse : 0.0};
+}
 
 // Two unit vectors spanning the plane normal to the unit `normal`, from the world axis least
 // along it (so the same normal always gives the same basis).
