@@ -31,9 +31,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   sim::Simulation simulation = scene::build_simulation(scene);
   // Four steps: enough to reach every stage of a step (contact, islands, sub-steps, sleep),
   // within libFuzzer's 10 s per input in this sanitized, instrumented build. Sixteen were not:
-  // tests/fuzz/regressions/scene/offset_tower.toml, a tower with one box set off, pivots its contact block
-  // about 1400 times a step and took 14 s (13 ms a step in a release build: a cost of the block
-  // solve to bring down, not a hang).
+  // tests/fuzz/regressions/scene/offset_tower.toml, a tower with one box set off, pivots its
+  // contact block about 1400 times a step and took 14 s (13 ms a step in a release build: a cost of
+  // the block solve to bring down, not a hang).
   const std::int64_t steps = std::min<std::int64_t>(scene::step_count(scene), 4);
   for (std::int64_t n = 0; n < steps && !simulation.blow_up(); ++n) simulation.step();
   // Halfway between the last two steps, never before them (states_at's precondition).
