@@ -79,29 +79,47 @@ CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, co
   }
   CornerSeparations out;
   out.fill(std::numeric_limits<double>::infinity());
+  if (shape.kind == ShapeKind::capsule) {
+    const Vec3 end = shape.half_length * rotation.col(1);
+    out[0] = separation(plane, position - end) - shape.radius;
+    out[1] = separation(plane, position + end) - shape.radius;
+    return out;
+  }
   out[0] = separation(plane, position) - shape.radius;
   return out;
 }
 
-Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations,
-                        const Mat3& rotation, const Vec3& normal, double margin) {
+Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations, double margin) {
   if (shape.kind == ShapeKind::box) return box_plane_manifold(separations, shape.half_size, margin);
   Manifold out;
-  if (!(separations[0] < margin)) return out;
-  out.count = 1;
-  out.points[0].feature = 0;
-  out.points[0].body_point = -shape.radius * (rotation.transpose() * normal);
-  out.points[0].separation = separations[0];
+  const int ends = shape.kind == ShapeKind::capsule ? 2 : 1;
+  for (int feature = 0; feature < ends; ++feature) {
+    const double s = separations[static_cast<std::size_t>(feature)];
+    if (!(s < margin)) continue;
+    ContactPoint& point = out.points[static_cast<std::size_t>(out.count++)];
+    point.feature = feature;
+    point.body_point = rounded_point(shape, feature).core;
+    point.separation = s;
+  }
   return out;
 }
 
 double closest_separation(const BodyState& state, const Shape& shape, const Plane& plane) {
   if (shape.kind == ShapeKind::box) return closest_corner_separation(state, shape.half_size, plane);
+  if (shape.kind == ShapeKind::capsule) {
+    const CornerSeparations ends =
+        plane_separations(shape, state.rotation(), state.position(), plane);
+    return std::min(ends[0], ends[1]);
+  }
   return separation(plane, state.position()) - shape.radius;
 }
 
 RoundedPoint rounded_point(const Shape& shape, int feature) {
   if (shape.kind == ShapeKind::box) return {.core = corner(shape.half_size, feature)};
+  if (shape.kind == ShapeKind::capsule) {
+    return {.core = Vec3(0.0, feature == 0 ? -shape.half_length : shape.half_length, 0.0),
+            .radius = shape.radius};
+  }
   return {.core = Vec3::Zero(), .radius = shape.radius};
 }
 

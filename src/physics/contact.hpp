@@ -107,23 +107,24 @@ Manifold box_plane_manifold(const CornerSeparations& separations, const Vec3& ha
 double closest_corner_separation(const BodyState& state, const Vec3& half_size, const Plane& plane);
 
 // The same for any shape, indexed by feature: a box's eight corners; a sphere's one point nearest
-// the plane (feature 0; the others +∞). `rotation` body to world, `position` the centre (m).
+// the plane (feature 0; the others +∞); a capsule's nearest points at its two ends (features 0 and
+// 1, the −y and +y ends). `rotation` body to world, `position` the centre (m).
 CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, const Vec3& position,
                                     const Plane& plane);
 
-// The manifold of the shape's points (from plane_separations) below `margin` (m) against a plane
-// of unit `normal`, the body at `rotation`: a box's corners as box_plane_manifold gives them; a
-// sphere's point nearest the plane, its body point −r Rᵀn (it moves on the surface as the ball
-// rolls: it is found again at each step).
-Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations,
-                        const Mat3& rotation, const Vec3& normal, double margin);
+// The manifold of the shape's points (from plane_separations) below `margin` (m): a box's corners
+// as box_plane_manifold gives them; a round shape's core points (rounded_point: a sphere's centre,
+// a capsule's two end centres), whose touching point stands the radius below each along the plane's
+// normal and moves on the surface as the body rolls.
+Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations, double margin);
 
 // The lowest separation of the shape at `state` from the plane (m; negative inside).
 double closest_separation(const BodyState& state, const Shape& shape, const Plane& plane);
 
 // A shape's point `feature` (of plane_separations) as a core point fixed in the body (m, body
 // frame) with `radius` (m) of rounding around it: the point that touches a plane of normal n is
-// core − radius Rᵀn. A box's corners have no rounding; a sphere is its centre and its radius.
+// core − radius Rᵀn. A box's corners have no rounding; a sphere is its centre and its radius; a
+// capsule's features are its two end centres, each with its radius.
 struct RoundedPoint {
   Vec3 core = Vec3::Zero();
   double radius = 0.0;

@@ -53,9 +53,10 @@ struct PlaneView {
   RowPoint point(std::uint32_t k) const {
     const ContactPoint& point = in.manifold.points[k];
     if (in.rounding > 0.0) {
-      return {.arm_a = -in.rounding * in.plane.normal,
+      // The point is the core's (a sphere's centre, a capsule's end): it touches the radius below.
+      return {.arm_a = in.rotation * point.body_point - in.rounding * in.plane.normal,
               .arm_b = Vec3::Zero(),
-              .anchor_a = Vec3::Zero(),
+              .anchor_a = point.body_point,
               .anchor_b = Vec3::Zero(),
               .base = -in.plane.offset - in.rounding,
               .impulse = point.impulses.normal,
@@ -89,8 +90,11 @@ struct PairView {
   const Vec3& normal() const { return n; }
   RowPoint point(std::uint32_t k) const {
     const PairPoint& point = in.manifold.points[k];
-    const Side a = side(in.a_base, in.a_rotation, point.point_a, in.a_rounding);
-    const Side b = side(in.b_base, in.b_rotation, point.point_b, in.b_rounding);
+    const Vec3& normal = in.manifold.normal;
+    const Side a =
+        side(in.a_base, in.a_rotation, point.point_a, in.a_shape, point.separation, normal);
+    const Side b =
+        side(in.b_base, in.b_rotation, point.point_b, in.b_shape, point.separation, -normal);
     const double speculative_speed =
         in.speculative_step > 0.0 ? std::max(point.separation, 0.0) / in.speculative_step : 0.0;
     if (b_static) {
@@ -116,16 +120,27 @@ struct PairView {
 
  private:
   // One body's part of a point: its arm (world) for the rows, its anchor (body frame) for the
-  // projection, and that anchor's world position at the base pose. A round body's anchor is its
-  // centre and its arm the one the manifold gave, whichever way it has turned since.
+  // projection, and that anchor's world position at the base pose. A round body's anchor is the
+  // point of its core under the contact and its arm the one the manifold gave, whichever way it
+  // has turned since. The contact `point` stands the radius and half the `separation` off the core
+  // along the body's `outward` normal (world).
   struct Side {
     Vec3 arm, anchor, measured;
   };
-  static Side side(const PoseRef& base, const Mat3& rotation, const Vec3& point, double rounding) {
-    if (rounding > 0.0) {
-      return {.arm = base.rotation * point, .anchor = Vec3::Zero(), .measured = base.position};
+  static Side side(const PoseRef& base, const Mat3& rotation, const Vec3& point, const Shape& shape,
+                   double separation, const Vec3& outward) {
+    switch (shape.kind) {
+      case ShapeKind::box:
+        return {.arm = rotation * point, .anchor = point, .measured = world_point(base, point)};
+      case ShapeKind::sphere:
+        return {.arm = base.rotation * point, .anchor = Vec3::Zero(), .measured = base.position};
+      case ShapeKind::capsule: {
+        const Vec3 over = (shape.radius + 0.5 * separation) * (base.rotation.transpose() * outward);
+        const Vec3 core = nearest_core_point(shape, point - over);
+        return {.arm = base.rotation * point, .anchor = core, .measured = world_point(base, core)};
+      }
     }
-    return {.arm = rotation * point, .anchor = point, .measured = world_point(base, point)};
+    return {};
   }
 };
 

@@ -45,8 +45,9 @@ struct PlaneManifoldRows {
   const Mat3& rotation;      // the body's at the pose the rows are for
   ManifoldRef source;
   bool keeps_friction;
-  // The body's rounding (shapes.hpp): a round body's rows measure its centre, which stands its
-  // radius off the plane whichever way it has turned, and push at the point below it.
+  // The body's rounding (shapes.hpp): a round body's rows measure its points' cores (a sphere's
+  // centre, a capsule's ends), which stand its radius off the plane whichever way it has turned,
+  // and push at the point below each.
   double rounding = 0.0;
 };
 
@@ -67,11 +68,13 @@ struct PairManifoldRows {
   double speculative_step;
   ManifoldRef source;
   bool keeps_friction;
-  // A's and B's rounding (shapes.hpp): a round body's anchor is its centre and its arm stays
-  // where the manifold put it, so that a ball's point does not turn away with the ball within a
-  // step (found at the step's start, a rolling ball's point turned off its contact, and the ball
-  // ran 0.7% fast down a static ramp and sank 0.06 mm into it).
-  double a_rounding = 0.0, b_rounding = 0.0;
+  // A's and B's shapes: a round body's anchor is the point of its core under the contact (a
+  // sphere's centre, a point of a capsule's segment) and its arm stays where the manifold put it,
+  // so that a ball's point does not turn away with the ball within a step (found at the step's
+  // start, a rolling ball's point turned off its contact, and the ball ran 0.7% fast down a static
+  // ramp and sank 0.06 mm into it).
+  const Shape& a_shape;
+  const Shape& b_shape;
 };
 
 // The manifold's rows onto the end of `rows` (its count of slots), or into `at`.

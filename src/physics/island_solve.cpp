@@ -36,8 +36,8 @@ PairManifoldRows substep_pair_rows(const StepContext& context, const PairRows& r
           .speculative_step = 0.0,
           .source = {.owner = rows.pair},
           .keeps_friction = true,
-          .a_rounding = rounding(context.models[a].shape),
-          .b_rounding = rounding(context.models[b].shape)};
+          .a_shape = context.models[a].shape,
+          .b_shape = context.models[b].shape};
 }
 
 RowSlots slots_of(const PairRows& rows) {
@@ -88,8 +88,7 @@ void write_plane_rows(const StepContext& context, const PlaneRows& rows, const P
   ContactRows& solve = context.scratch.rows;
   const RowSlots at = slots_of(rows);
   Manifold found = plane_manifold(
-      model.shape, plane_separations(model.shape, pose.rotation, pose.position, plane),
-      pose.rotation, plane.normal, margin);
+      model.shape, plane_separations(model.shape, pose.rotation, pose.position, plane), margin);
   found.friction = manifold.friction;
   found.patch = manifold.patch;
   CarriedImpulses carried;
@@ -309,8 +308,8 @@ void solve_converged(const StepContext& context, std::uint32_t island) {
                  .speculative_step = context.dt,
                  .source = {.owner = p},
                  .keeps_friction = false,
-                 .a_rounding = rounding(context.models[a].shape),
-                 .b_rounding = rounding(context.models[b].shape)},
+                 .a_shape = context.models[a].shape,
+                 .b_shape = context.models[b].shape},
                 rows);
   }
   scratch.island_out.resize(members.size());

@@ -22,12 +22,13 @@ namespace tumble::physics {
 inline constexpr double kRefindReach = 0.02;
 
 // How far a shape's surface can swing about its centre in a step of h (s) from `start` to `end`:
-// a box's fastest turn times its half diagonal (m); a sphere's surface turns in place.
+// its fastest turn times its core's reach (m): a box's half diagonal, a capsule's half length; a
+// sphere's surface turns in place.
 inline double corner_swing(const BodyState& start, const BodyState& end, const Shape& shape,
                            double h) {
   if (shape.kind == ShapeKind::sphere) return 0.0;
   return h * std::max(start.angular_velocity().norm(), end.angular_velocity().norm()) *
-         shape.half_size.norm();
+         core_reach(shape);
 }
 
 inline ShapePose pose_of(const BodyState& state, const Mat3& rotation, const Shape& shape) {

@@ -1,28 +1,29 @@
 #include "physics/pair_contact.hpp"
 
+#include "physics/capsule_contact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
 namespace tumble::physics {
-namespace {
-
-// The one point of a round contact: the world point `at` (m) in both bodies' frames.
 PairManifold one_point(const ShapePose& a, const ShapePose& b, const Vec3& normal, const Vec3& at,
                        double gap, std::uint32_t feature) {
   PairManifold out;
   out.normal = normal;
-  out.count = 1;
-  PairPoint& point = out.points[0];
+  add_point(out, a, b, at, gap, feature);
+  return out;
+}
+
+void add_point(PairManifold& m, const ShapePose& a, const ShapePose& b, const Vec3& at, double gap,
+               std::uint32_t feature) {
+  PairPoint& point = m.points[static_cast<std::size_t>(m.count++)];
   point.feature = feature;
   point.point_a = a.rotation.transpose() * (at - a.position);
   point.point_b = b.rotation.transpose() * (at - b.position);
   point.separation = gap;
-  return out;
 }
 
-// The manifold of B against A made from A against B's: the normal turned round, the anchors
-// swapped.
 PairManifold swapped(PairManifold m) {
   m.normal = -m.normal;
   for (int k = 0; k < m.count; ++k) {
@@ -31,8 +32,6 @@ PairManifold swapped(PairManifold m) {
   }
   return m;
 }
-
-}  // namespace
 
 PairManifold sphere_sphere_manifold(const ShapePose& a, double ra, const ShapePose& b, double rb,
                                     double margin) {
@@ -112,9 +111,12 @@ PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin
     return sphere_sphere_manifold(a, sa.radius, b, sb.radius, margin);
   }
   if (sa.kind == ShapeKind::box) {
-    return box_sphere_manifold({a.position, a.rotation, sa.half_size}, b, sb.radius, margin);
+    const BoxPose box{a.position, a.rotation, sa.half_size};
+    return sb.kind == ShapeKind::sphere ? box_sphere_manifold(box, b, sb.radius, margin)
+                                        : box_capsule_manifold(box, b, margin);
   }
-  return swapped(box_sphere_manifold({b.position, b.rotation, sb.half_size}, a, sa.radius, margin));
+  if (sb.kind == ShapeKind::box) return swapped(pair_manifold(b, a, margin));
+  return round_round_manifold(a, b, margin);
 }
 
 }  // namespace tumble::physics

@@ -1,6 +1,7 @@
 // The contact of two bodies of any shapes (narrow phase): the manifold of a pair, by the pair of
 // shapes — two boxes by the separating-axis test (physics/box_box.hpp), a sphere and a box or two
-// spheres in closed form. Pure geometry, as box_box.hpp.
+// spheres in closed form, a capsule with anything by its segment (physics/capsule_contact.hpp).
+// Pure geometry, as box_box.hpp.
 #pragma once
 
 #include "physics/box_box.hpp"
@@ -25,6 +26,16 @@ PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin
 // touching; `margin` or more otherwise: two boxes by the separating-axis test (the axis's
 // separation), any other pair by its manifold's deepest point.
 double pair_separation(const ShapePose& a, const ShapePose& b, double margin);
+
+// The manifold of one point at world `at` (m), `gap` apart along `normal` (from A towards B).
+PairManifold one_point(const ShapePose& a, const ShapePose& b, const Vec3& normal, const Vec3& at,
+                       double gap, std::uint32_t feature);
+// One point more of the same kind (m.count < kMaxManifoldPoints).
+void add_point(PairManifold& m, const ShapePose& a, const ShapePose& b, const Vec3& at, double gap,
+               std::uint32_t feature);
+// The manifold of B against A made from A against B's: the normal turned round, the anchors
+// swapped.
+PairManifold swapped(PairManifold m);
 
 // Two spheres of radii `ra`, `rb` (m) centred at `a`, `b` (rotations body to world): the normal
 // along the line of centres (+y when the centres coincide), feature 0.

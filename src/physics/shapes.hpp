@@ -2,6 +2,7 @@
 // and the surface material that a contact between two shapes combines.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "physics/rigid_body.hpp"
@@ -24,36 +25,74 @@ struct Material {
 // rolling resistance = max(a, b) (as Box3D mixes it).
 Material combine(const Material& a, const Material& b);
 
-// What a body is, for contact: a box, or a round shape (a sphere) that is a core (a point) with
-// `radius` of rounding around it, as Box2D and Box3D model rounded shapes. The shape is in the
-// body frame, centred on the centre of mass.
-enum class ShapeKind : std::uint8_t { box, sphere };
+// What a body is, for contact: a box, or a round shape that is a core with `radius` of rounding
+// around it, as Box2D and Box3D model rounded shapes: a sphere (its core a point) or a capsule (its
+// core a segment of `half_length` either side of the centre along the body's y axis). The shape is
+// in the body frame, centred on the centre of mass.
+enum class ShapeKind : std::uint8_t { box, sphere, capsule };
 
 struct Shape {
   ShapeKind kind = ShapeKind::box;
   // Half the edges of the box the shape fits in, along the body axes (m): the box itself for a
   // box, (r, r, r) for a sphere. Bounds, reaches and swings read it for every shape.
   Vec3 half_size = Vec3::Constant(0.5);
-  double radius = 0.0;  // m: the sphere's; 0 for a box
+  double radius = 0.0;       // m: the sphere's or capsule's rounding; 0 for a box
+  double half_length = 0.0;  // m: half the capsule's core segment, along body y; 0 otherwise
 };
 
-// A box of half edges `half_size` (m), or a sphere of `radius` (m).
+// A box of half edges `half_size` (m), a sphere of `radius` (m), or a capsule of `radius` whose
+// end centres are `half_length` (m) either side of its centre along body y.
 inline Shape box_shape(const Vec3& half_size) {
   return {.kind = ShapeKind::box, .half_size = half_size};
 }
 inline Shape sphere_shape(double radius) {
   return {.kind = ShapeKind::sphere, .half_size = Vec3::Constant(radius), .radius = radius};
 }
+inline Shape capsule_shape(double radius, double half_length) {
+  return {.kind = ShapeKind::capsule,
+          .half_size = Vec3(radius, half_length + radius, radius),
+          .radius = radius,
+          .half_length = half_length};
+}
 
 // The radius of the smallest sphere about the centre that holds the shape (m).
 inline double bounding_radius(const Shape& shape) {
-  return shape.kind == ShapeKind::sphere ? shape.radius : shape.half_size.norm();
+  switch (shape.kind) {
+    case ShapeKind::box:
+      return shape.half_size.norm();
+    case ShapeKind::sphere:
+      return shape.radius;
+    case ShapeKind::capsule:
+      return shape.half_length + shape.radius;
+  }
+  return shape.half_size.norm();
 }
 
-// How far the shape's surface stands out from its core (m): a sphere's radius around its centre;
-// 0 for a box, which is all core.
+// How far the shape's surface stands out from its core (m): a sphere's radius around its centre, a
+// capsule's around its segment; 0 for a box, which is all core.
 inline double rounding(const Shape& shape) {
-  return shape.kind == ShapeKind::sphere ? shape.radius : 0.0;
+  return shape.kind == ShapeKind::box ? 0.0 : shape.radius;
+}
+
+// The point of a round shape's core nearest to `point` (body frame, m): the centre of a sphere, the
+// nearest point of a capsule's segment.
+inline Vec3 nearest_core_point(const Shape& shape, const Vec3& point) {
+  if (shape.kind != ShapeKind::capsule) return Vec3::Zero();
+  return Vec3(0.0, std::clamp(point.y(), -shape.half_length, shape.half_length), 0.0);
+}
+
+// How far the shape's core reaches from its centre (m): a box's half diagonal, a capsule's half
+// length, nothing for a sphere. A turn of the body swings its surface by this times the angle.
+inline double core_reach(const Shape& shape) {
+  switch (shape.kind) {
+    case ShapeKind::box:
+      return shape.half_size.norm();
+    case ShapeKind::sphere:
+      return 0.0;
+    case ShapeKind::capsule:
+      return shape.half_length;
+  }
+  return shape.half_size.norm();
 }
 
 // A static, infinite plane: the half-space n·x >= offset is outside; bodies stay there.

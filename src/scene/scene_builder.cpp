@@ -15,13 +15,24 @@ physics::BodyConstants body_constants(const BodySpec& body) {
       return physics::box_constants(body.mass, body.size);
     case Shape::sphere:
       return physics::sphere_constants(body.mass, body.radius);
+    case Shape::capsule:
+      return physics::constants_from_moments(
+          body.mass, physics::capsule_inertia(body.mass, body.radius, body.length).diagonal());
   }
   return {};
 }
 
 physics::Shape physics_shape(const BodySpec& body) {
-  return body.shape == Shape::sphere ? physics::sphere_shape(body.radius)
-                                     : physics::box_shape(0.5 * body.size);
+  switch (body.shape) {
+    case Shape::sphere:
+      return physics::sphere_shape(body.radius);
+    case Shape::capsule:
+      return physics::capsule_shape(body.radius, 0.5 * body.length);
+    case Shape::cube:
+    case Shape::box:
+      break;
+  }
+  return physics::box_shape(0.5 * body.size);
 }
 
 physics::BodyState initial_state(const BodySpec& body) {

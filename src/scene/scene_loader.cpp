@@ -166,6 +166,7 @@ void refuse_what_the_contact_cannot_hold(TableReader& in, const BodySpec& body,
     }
   };
   if (body.shape == Shape::sphere) fail_unless_impulse("shape", "a sphere");
+  if (body.shape == Shape::capsule) fail_unless_impulse("shape", "a capsule");
   if (body.is_static) fail_unless_impulse("static", "a static body");
   if (in.has("rolling_resistance")) fail_unless_impulse("rolling_resistance", "rolling resistance");
   if (body.is_static && !physics.contact.collide_bodies) {
@@ -180,18 +181,29 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   body.name = in.optional_string("name", "body" + std::to_string(index));
   if (!is_safe_name(body.name)) in.fail("name", kSafeNameRule);
   const std::string shape = in.required_string("shape");
-  if (shape != "cube" && shape != "box" && shape != "sphere") {
-    in.fail("shape", "unknown shape " + in_quotes(shape) + " (expected cube, box or sphere)");
+  if (shape != "cube" && shape != "box" && shape != "sphere" && shape != "capsule") {
+    in.fail("shape",
+            "unknown shape " + in_quotes(shape) + " (expected cube, box, sphere or capsule)");
   }
-  if (shape == "sphere") {
-    body.shape = Shape::sphere;
-    if (in.has("size")) in.fail("size", "a sphere has a radius, not a size");
+  if (shape != "capsule" && in.has("length")) {
+    in.fail("length", "only a capsule has a length (a " + shape + " has " +
+                          (shape == "sphere" ? "a radius)" : "a size)"));
+  }
+  if (shape == "sphere" || shape == "capsule") {
+    body.shape = shape == "sphere" ? Shape::sphere : Shape::capsule;
+    if (in.has("size")) in.fail("size", "a " + shape + " has a radius, not a size");
     body.radius = in.required_number("radius");
     require_positive(in, "radius", body.radius);
-    body.size = Vec3::Constant(2.0 * body.radius);
+    if (body.shape == Shape::capsule) {
+      body.length = in.required_number("length");
+      if (!(body.length >= 0.0)) {
+        in.fail("length", "a capsule's length (between its end centres) must be 0 or more");
+      }
+    }
+    body.size = Vec3(2.0 * body.radius, body.length + 2.0 * body.radius, 2.0 * body.radius);
   } else {
     if (in.has("radius"))
-      in.fail("radius", "only a sphere has a radius (a " + shape + " has a size)");
+      in.fail("radius", "only a sphere or a capsule has a radius (a " + shape + " has a size)");
     const toml::node& size = in.required("size");
     if (shape == "cube") {
       body.shape = Shape::cube;
