@@ -1,4 +1,5 @@
-// A ball: its colour lit per pixel with the sphere's normal (lighting.glsl's shade(), as the
+// A round solid (a ball; a capsule, a cylinder: their vertex shaders give the normal and the
+// point marked): its colour lit per pixel with the surface normal (lighting.glsl's shade(), as the
 // planes), and three dark great circles where the body's axes meet its surface (the planes
 // x = 0, y = 0, z = 0 of its body frame), so that a ball's roll and spin read as a box's edges do.
 in vec3 v_world_position;

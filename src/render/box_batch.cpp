@@ -12,6 +12,8 @@ namespace {
 // bulge in by 0.12% of the radius (1 − cos(π/64)), a tenth of a pixel for a ball 160 px across;
 // the shading's normal is the sphere's own at every pixel (ball.frag).
 constexpr int kBallDivisions = 16;
+// A cylinder's side is a prism of 64 faces, its outline as close to a circle as a ball's.
+constexpr int kCylinderSides = 64;
 
 // Per box, advancing once per instance, at body.vert's locations. A matrix takes one location
 // per column.
@@ -37,11 +39,15 @@ void point_instance_attributes() {
 BoxBatch BoxBatch::create(Solid solid) {
   BoxBatch out;
   out.solid_ = solid;
-  // Positions and normals interleaved: the cube four vertices per face, or the ball.
+  // Positions and normals interleaved: the cube four vertices per face, or the round solid.
   std::vector<GLushort> indices;
   std::vector<CubeVertex> vertices;
   if (solid == Solid::ball) {
     vertices = sphere_vertices(kBallDivisions, indices);
+  } else if (solid == Solid::capsule) {
+    vertices = capsule_vertices(kBallDivisions, indices);
+  } else if (solid == Solid::cylinder) {
+    vertices = cylinder_vertices(kCylinderSides, indices);
   } else {
     vertices = cube_vertices();
     for (GLushort face = 0; face < 6; ++face) {

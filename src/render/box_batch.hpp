@@ -1,7 +1,7 @@
 // Every box of a frame that is one Solid as one instanced draw: the solid's mesh (the unit cube,
-// or the ball inside it), set up once, and one record per box (box_instances.hpp) uploaded in one
-// buffer per frame. Both passes that draw them (the shadow map and the lit solids) draw the same
-// upload. Internal to src/render/; needs a current GL context from create() to destruction.
+// or the round solid inside it), set up once, and one record per box (box_instances.hpp) uploaded
+// in one buffer per frame. Both passes that draw them (the shadow map and the lit solids) draw the
+// same upload. Internal to src/render/; needs a current GL context from create() to destruction.
 #pragma once
 
 #include <vector>

@@ -33,12 +33,14 @@ struct Camera {
   double fov_degrees = 40.0;            // vertical field of view
 };
 
-// What a Box draws: the box itself, or the ball inside it.
+// What a Box draws: the box itself, or the round solid inside it. The round ones are smooth,
+// with dark lines where the planes x = 0, y = 0 and z = 0 of the body meet their surface (a
+// ball's three great circles), so that their turning reads.
 enum class Solid : std::uint8_t {
   box,
-  // The sphere the box holds (its size is the diameter along every axis): smooth, with three dark
-  // great circles fixed in its body so that its turning reads.
-  ball,
+  ball,      // the sphere the box holds: its size is the diameter along every axis
+  capsule,   // along body y: size (2r, length + 2r, 2r), r the radius
+  cylinder,  // along body y: size (2r, length, 2r)
 };
 
 // A box (a cube when the edges are equal) at a pose, or the ball inside it.
@@ -115,9 +117,9 @@ struct RenderSettings : common::RenderSettings {
   // Whether frames may have lines and arrows (FrameView::lines, arrows): only then are their
   // shaders built.
   bool overlays = false;
-  // Whether frames may have balls (Solid::ball): only then is their shader built and their mesh
-  // set up.
-  bool balls = false;
+  // Whether frames may have round solids (Solid::ball, capsule, cylinder): only then are their
+  // shaders built and their meshes set up.
+  bool round_solids = false;
 };
 
 // Changes every frame.

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace tumble::render {
@@ -147,6 +148,87 @@ std::vector<CubeVertex> sphere_vertices(int divisions, std::vector<std::uint16_t
         for (const std::uint16_t k : {at(0, 0), at(1, 0), at(1, 1), at(0, 0), at(1, 1), at(0, 1)}) {
           indices.push_back(k);
         }
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<CubeVertex> capsule_vertices(int divisions, std::vector<std::uint16_t>& indices) {
+  std::vector<std::uint16_t> sphere_indices;
+  const std::vector<CubeVertex> sphere = sphere_vertices(divisions, sphere_indices);
+  std::vector<CubeVertex> out;
+  indices.clear();
+  // The copy of sphere vertex i in the half of sign `half` (0: below, 1: above), made once.
+  std::vector<std::array<int, 2>> copy(sphere.size(), {-1, -1});
+  const auto in_half = [&](std::uint16_t i, int half) {
+    int& at = copy[i][static_cast<std::size_t>(half)];
+    if (at < 0) {
+      CubeVertex v = sphere[i];
+      v.normal[0] = 0.0f;
+      v.normal[1] = half == 1 ? 1.0f : -1.0f;
+      v.normal[2] = 0.0f;
+      at = static_cast<int>(out.size());
+      out.push_back(v);
+    }
+    return static_cast<std::uint16_t>(at);
+  };
+  for (std::size_t t = 0; t < sphere_indices.size(); t += 3) {
+    const std::uint16_t k[3] = {sphere_indices[t], sphere_indices[t + 1], sphere_indices[t + 2]};
+    float y = 0.0f;
+    for (const std::uint16_t i : k) y += sphere[i].position[1];
+    const int half = y > 0.0f ? 1 : 0;  // no cell crosses the equator: its vertices lie on it
+    for (const std::uint16_t i : k) indices.push_back(in_half(i, half));
+    if (half == 0) continue;
+    // An edge of the upper half on the equator: the band below it, wound as the cell across it.
+    for (int e = 0; e < 3; ++e) {
+      const std::uint16_t a = k[e], b = k[(e + 1) % 3];
+      if (sphere[a].position[1] != 0.0f || sphere[b].position[1] != 0.0f) continue;
+      for (const std::uint16_t i : {in_half(b, 1), in_half(a, 1), in_half(a, 0), in_half(b, 1),
+                                    in_half(a, 0), in_half(b, 0)}) {
+        indices.push_back(i);
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<CubeVertex> cylinder_vertices(int sides, std::vector<std::uint16_t>& indices) {
+  std::vector<CubeVertex> out;
+  indices.clear();
+  const auto vertex = [&](float x, float y, float z, float nx, float ny, float nz) {
+    out.push_back(CubeVertex{{x, y, z}, {nx, ny, nz}});
+    return static_cast<std::uint16_t>(out.size() - 1);
+  };
+  const auto ring = [&](int k) {
+    const double angle = 2.0 * 3.14159265358979323846 * k / sides;
+    return std::array<float, 2>{static_cast<float>(std::cos(angle)),
+                                static_cast<float>(std::sin(angle))};
+  };
+  // The side: a quad per face, its edges' normals along the radius.
+  for (int k = 0; k < sides; ++k) {
+    const auto [c0, s0] = ring(k);
+    const auto [c1, s1] = ring(k + 1);
+    const std::uint16_t b0 = vertex(0.5f * c0, -0.5f, 0.5f * s0, c0, 0.0f, s0);
+    const std::uint16_t t0 = vertex(0.5f * c0, 0.5f, 0.5f * s0, c0, 0.0f, s0);
+    const std::uint16_t b1 = vertex(0.5f * c1, -0.5f, 0.5f * s1, c1, 0.0f, s1);
+    const std::uint16_t t1 = vertex(0.5f * c1, 0.5f, 0.5f * s1, c1, 0.0f, s1);
+    // Going round from +x towards +z is clockwise seen from outside (from +x looking in, +z is on
+    // the left): wind b0, t0, t1 and b0, t1, b1.
+    for (const std::uint16_t i : {b0, t0, t1, b0, t1, b1}) indices.push_back(i);
+  }
+  // The caps: a fan about each centre.
+  for (const float side : {-1.0f, 1.0f}) {
+    const std::uint16_t centre = vertex(0.0f, 0.5f * side, 0.0f, 0.0f, side, 0.0f);
+    for (int k = 0; k < sides; ++k) {
+      const auto [c0, s0] = ring(k);
+      const auto [c1, s1] = ring(k + 1);
+      const std::uint16_t a = vertex(0.5f * c0, 0.5f * side, 0.5f * s0, 0.0f, side, 0.0f);
+      const std::uint16_t b = vertex(0.5f * c1, 0.5f * side, 0.5f * s1, 0.0f, side, 0.0f);
+      // Seen from above (+y), +x towards +z turns clockwise: the top winds centre, b, a.
+      for (const std::uint16_t i : side > 0.0f ? std::array<std::uint16_t, 3>{centre, b, a}
+                                               : std::array<std::uint16_t, 3>{centre, a, b}) {
+        indices.push_back(i);
       }
     }
   }

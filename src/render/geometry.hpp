@@ -57,4 +57,15 @@ std::vector<CubeVertex> cube_vertices();
 // `indices`, two triangles a cell, counter-clockwise seen from outside.
 std::vector<CubeVertex> sphere_vertices(int divisions, std::vector<std::uint16_t>& indices);
 
+// A capsule's mesh: sphere_vertices cut at its equator into two halves joined by a band, each
+// vertex's `normal` slot holding not its normal but the way its half moves along the axis,
+// (0, ±1, 0): capsule.glsl stretches the halves apart by the capsule's length (its normal is the
+// sphere's, along the position). Into `indices` as sphere_vertices.
+std::vector<CubeVertex> capsule_vertices(int divisions, std::vector<std::uint16_t>& indices);
+
+// The cylinder of diameter 1 and height 1 along y (in the unit cube): its side of `sides` faces
+// with normals along the radius (smooth when interpolated), and its two flat caps. Into
+// `indices`, counter-clockwise seen from outside.
+std::vector<CubeVertex> cylinder_vertices(int sides, std::vector<std::uint16_t>& indices);
+
 }  // namespace tumble::render

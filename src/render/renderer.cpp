@@ -121,14 +121,18 @@ struct Renderer::Resources {
   RenderSettings settings;
   std::unique_ptr<OffscreenContext> context;
   ShaderProgram body_program;
-  ShaderProgram ball_program;  // only with settings.balls
   ShaderProgram ground_program;
   ShaderProgram shadowed_ground_program;  // the same, receiving shadows
   ShaderProgram shadow_program;           // quads
   ShaderProgram box_shadow_program;       // boxes, instanced
   ShaderProgram plane_program;            // quads
   BoxBatch boxes;                         // every box of the frame, one instanced draw per pass
-  BoxBatch balls;                         // and every ball, with settings.balls
+  // With settings.round_solids: each round solid's program, shadow program and batch.
+  struct RoundSolid {
+    ShaderProgram program, shadow_program;
+    BoxBatch batch;
+  };
+  std::vector<RoundSolid> rounds;
   Framebuffer target;                     // what a frame is drawn into
   Framebuffer resolved;                   // one sample per pixel of a multisampled target
   std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
@@ -202,11 +206,25 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     return built;
 
   boxes = BoxBatch::create(Solid::box);
-  if (settings.balls) {
-    if (Result<void> built = build(ball_program, {"ball.vert"}, {"lighting.glsl", "ball.frag"});
-        !built)
-      return built;
-    balls = BoxBatch::create(Solid::ball);
+  if (settings.round_solids) {
+    struct Sources {
+      Solid solid;
+      std::vector<std::string> vertex, shadow;
+    };
+    const Sources sources[] = {
+        {Solid::ball, {"ball.vert"}, {"box_shadow.vert"}},
+        {Solid::capsule, {"capsule.glsl", "capsule.vert"}, {"capsule.glsl", "capsule_shadow.vert"}},
+        {Solid::cylinder, {"cylinder.vert"}, {"box_shadow.vert"}},
+    };
+    for (const Sources& source : sources) {
+      RoundSolid& round = rounds.emplace_back();
+      if (Result<void> built = build(round.program, source.vertex, {"lighting.glsl", "ball.frag"});
+          !built)
+        return built;
+      if (Result<void> built = build(round.shadow_program, source.shadow, {"shadow.frag"}); !built)
+        return built;
+      round.batch = BoxBatch::create(source.solid);
+    }
   }
 
   // Ground: one square as a triangle strip.
@@ -377,7 +395,12 @@ void Renderer::Resources::draw_shadow_map(const FrameView& view, const FrameSetu
   glUseProgram(box_shadow_program.id());
   set_matrix(box_shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
   boxes.draw();
-  balls.draw();
+  for (const RoundSolid& round : rounds) {
+    glUseProgram(round.shadow_program.id());
+    set_matrix(round.shadow_program.uniform("u_light_view_projection"),
+               frame.light_view_projection);
+    round.batch.draw();
+  }
   if (!view.quads.empty()) {
     glUseProgram(shadow_program.id());
     set_matrix(shadow_program.uniform("u_light_view_projection"), frame.light_view_projection);
@@ -589,10 +612,11 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   const FrameSetup frame = r.setup(view);
 
   r.boxes.upload(view.boxes, view.camera.position);
-  assert((s.balls || std::none_of(view.boxes.begin(), view.boxes.end(),
-                                  [](const Box& b) { return b.solid == Solid::ball; })) &&
-         "Solid::ball needs RenderSettings::balls");
-  if (s.balls) r.balls.upload(view.boxes, view.camera.position);
+  assert((s.round_solids || std::all_of(view.boxes.begin(), view.boxes.end(),
+                                        [](const Box& b) { return b.solid == Solid::box; })) &&
+         "a round Solid needs RenderSettings::round_solids");
+  for (Resources::RoundSolid& round : r.rounds)
+    round.batch.upload(view.boxes, view.camera.position);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);
@@ -608,9 +632,9 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   // none of them: opaque too. Those seen from their back are blended over everything, last.
   r.use(r.body_program, frame, view.camera);
   r.boxes.draw();
-  if (s.balls) {
-    r.use(r.ball_program, frame, view.camera);
-    r.balls.draw();
+  for (const Resources::RoundSolid& round : r.rounds) {
+    r.use(round.program, frame, view.camera);
+    round.batch.draw();
   }
   if (s.ground.enabled && s.shadows) r.draw_ground_shadows(view, frame);
   r.draw_quads(view, frame, false);

@@ -180,6 +180,20 @@ void add_force_visuals(const scene::BodySpec& body, const physics::BodyState& st
   }
 }
 
+// How a body of the shape is drawn.
+render::Solid solid_of(scene::Shape shape) {
+  switch (shape) {
+    case scene::Shape::sphere:
+      return render::Solid::ball;
+    case scene::Shape::capsule:
+      return render::Solid::capsule;
+    case scene::Shape::cube:
+    case scene::Shape::box:
+      break;
+  }
+  return render::Solid::box;
+}
+
 }  // namespace
 
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
@@ -193,9 +207,7 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                                      .orientation = states[i].orientation(),
                                      .size = scene.bodies[i].size,
                                      .color = scene.bodies[i].color,
-                                     .solid = scene.bodies[i].shape == scene::Shape::sphere
-                                                  ? render::Solid::ball
-                                                  : render::Solid::box});
+                                     .solid = solid_of(scene.bodies[i].shape)});
     add_force_visuals(scene.bodies[i], states[i], t, view.boxes);
   }
   return view;
@@ -251,9 +263,9 @@ render::RenderSettings renderer_settings(const scene::Scene& scene, const Framin
                                   overlays_need_font(scene) ? overlay_font(scene) : std::string(),
                                   overlays_need_lines(scene)};
   settings.ground = framing.ground;
-  settings.balls =
+  settings.round_solids =
       std::any_of(scene.bodies.begin(), scene.bodies.end(),
-                  [](const scene::BodySpec& b) { return b.shape == scene::Shape::sphere; });
+                  [](const scene::BodySpec& b) { return solid_of(b.shape) != render::Solid::box; });
   return settings;
 }
 

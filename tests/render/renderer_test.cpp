@@ -327,7 +327,7 @@ TEST(Renderer, ImageIsUprightWithBackgroundAboveAndGroundBelow) {
 // A ball, turned so that its three great circles cross its face, lit and shadowed on the ground.
 TEST(Renderer, BallMatchesGolden) {
   RenderSettings settings = small_settings();
-  settings.balls = true;
+  settings.round_solids = true;
   FrameView view = cube_view(Quat(Eigen::AngleAxisd(0.6, Vec3(1, 0.4, 0.3).normalized())));
   view.boxes[0].solid = Solid::ball;
   view.boxes.push_back(Box{.position = Vec3(-1.3, -0.2, -0.6),
@@ -336,48 +336,99 @@ TEST(Renderer, BallMatchesGolden) {
   expect_matches_golden(draw(settings, view), "ball");
 }
 
-// Seen head-on without ground or shadows, a ball's outline is a circle of the projected radius:
-// at distance d a sphere of radius r subtends asin(r / d), so its picture's radius is
-// (rows / 2) tan(asin(r / d)) / tan(fov / 2) pixels. Its widest row and column, measured
-// against a picture without it, are that diameter within 2 px, and each other within 1.
-TEST(Renderer, ABallSeenHeadOnIsACircleOfItsProjectedSize) {
+// The widest row and column (px) of the pixels where `solid` differs from `empty` by more than
+// 16 in a channel.
+std::pair<int, int> widest_extents(const io::Image& empty, const io::Image& solid) {
+  const int w = empty.width, h = empty.height;
+  const auto differs = [&](int x, int y) {
+    const std::size_t at = 3 * (static_cast<std::size_t>(y) * w + x);
+    for (int c = 0; c < 3; ++c) {
+      if (std::abs(solid.rgb[at + c] - empty.rgb[at + c]) > 16) return true;
+    }
+    return false;
+  };
+  int widest_row = 0, widest_column = 0;
+  for (int y = 0; y < h; ++y) {
+    int row = 0;
+    for (int x = 0; x < w; ++x) row += differs(x, y) ? 1 : 0;
+    widest_row = std::max(widest_row, row);
+  }
+  for (int x = 0; x < w; ++x) {
+    int column = 0;
+    for (int y = 0; y < h; ++y) column += differs(x, y) ? 1 : 0;
+    widest_column = std::max(widest_column, column);
+  }
+  return {widest_row, widest_column};
+}
+
+// A camera 5 m from the origin looking at it, square pictures of 240 px, no ground or shadows.
+FrameView head_on_view() {
+  FrameView view;
+  view.camera.position = Vec3(0.0, 0.0, 5.0);
+  view.camera.look_at = Vec3::Zero();
+  return view;
+}
+RenderSettings head_on_settings() {
   RenderSettings settings = small_settings();
   settings.width = settings.height = 240;
   settings.ground.enabled = false;
   settings.shadows = false;
-  settings.balls = true;
-  FrameView view;
-  view.camera.position = Vec3(0.0, 0.0, 5.0);
-  view.camera.look_at = Vec3::Zero();
+  settings.round_solids = true;
+  return settings;
+}
+
+// The picture's size (px) of an angle off the view's axis: (rows / 2) tan(angle) / tan(fov / 2).
+double pixels_of(double angle, const FrameView& view) {
+  return 120.0 * std::tan(angle) / std::tan(0.5 * view.camera.fov_degrees * M_PI / 180.0);
+}
+
+// Seen head-on, a ball's outline is a circle of the projected radius: at distance d a sphere of
+// radius r subtends asin(r / d). Its widest row and column, measured against a picture without
+// it, are that diameter within 2 px, and each other within 1.
+TEST(Renderer, ABallSeenHeadOnIsACircleOfItsProjectedSize) {
+  const RenderSettings settings = head_on_settings();
+  FrameView view = head_on_view();
   const io::Image empty = draw(settings, view);
   view.boxes.push_back(Box{.orientation = Quat(Eigen::AngleAxisd(0.9, Vec3(0, 1, 1).normalized())),
                            .size = Vec3::Constant(2.0),
                            .solid = Solid::ball});
-  const io::Image ball = draw(settings, view);
-  int widest_row = 0, widest_column = 0;
-  const auto differs = [&](int x, int y) {
-    const std::size_t at = 3 * (static_cast<std::size_t>(y) * 240 + x);
-    for (int c = 0; c < 3; ++c) {
-      if (std::abs(ball.rgb[at + c] - empty.rgb[at + c]) > 16) return true;
-    }
-    return false;
-  };
-  for (int line = 0; line < 240; ++line) {
-    int row = 0, column = 0;
-    for (int k = 0; k < 240; ++k) {
-      row += differs(k, line) ? 1 : 0;
-      column += differs(line, k) ? 1 : 0;
-    }
-    widest_row = std::max(widest_row, row);
-    widest_column = std::max(widest_column, column);
-  }
-  const double diameter = 240.0 * std::tan(std::asin(1.0 / 5.0)) /
-                          std::tan(0.5 * view.camera.fov_degrees * M_PI / 180.0);
+  const auto [widest_row, widest_column] = widest_extents(empty, draw(settings, view));
+  const double diameter = 2.0 * pixels_of(std::asin(1.0 / 5.0), view);
   std::printf("[ measured ] widest row %d px, column %d px, projected diameter %.2f px\n",
               widest_row, widest_column, diameter);
   EXPECT_NEAR(widest_row, diameter, 2.0);
   EXPECT_NEAR(widest_column, diameter, 2.0);
   EXPECT_LE(std::abs(widest_row - widest_column), 1);
+}
+
+// A capsule of radius r = 0.5 and length 2 lying across the view (along x), turned about its
+// axis so its lines show: its height is a cylinder's, 2 asin(r / d) across; its width runs to the
+// tangents of its end spheres (centres at x = ±1): each half atan(1 / d) + asin(r / sqrt(d² + 1)).
+// A cylinder of the same radius and length stood upright: its width is 2 asin(r / d) across too.
+TEST(Renderer, ACapsuleAndACylinderHaveTheirProjectedOutlines) {
+  const RenderSettings settings = head_on_settings();
+  FrameView view = head_on_view();
+  const io::Image empty = draw(settings, view);
+  const double d = 5.0, r = 0.5;
+  view.boxes.push_back(Box{.orientation = Quat(Eigen::AngleAxisd(-M_PI / 2.0, Vec3::UnitZ())) *
+                                          Quat(Eigen::AngleAxisd(0.7, Vec3::UnitY())),
+                           .size = Vec3(2.0 * r, 2.0 + 2.0 * r, 2.0 * r),
+                           .solid = Solid::capsule});
+  const auto [capsule_row, capsule_column] = widest_extents(empty, draw(settings, view));
+  const double height = 2.0 * pixels_of(std::asin(r / d), view);
+  const double width =
+      2.0 * pixels_of(std::atan(1.0 / d) + std::asin(r / std::sqrt(d * d + 1.0)), view);
+  std::printf("[ measured ] capsule %d x %d px, projected %.2f x %.2f px\n", capsule_row,
+              capsule_column, width, height);
+  EXPECT_NEAR(capsule_row, width, 2.0);
+  EXPECT_NEAR(capsule_column, height, 2.0);
+  view.boxes[0] = Box{.orientation = Quat(Eigen::AngleAxisd(0.7, Vec3::UnitY())),
+                      .size = Vec3(2.0 * r, 1.0, 2.0 * r),
+                      .solid = Solid::cylinder};
+  const auto [cylinder_row, cylinder_column] = widest_extents(empty, draw(settings, view));
+  std::printf("[ measured ] cylinder %d px wide, projected %.2f px\n", cylinder_row, height);
+  EXPECT_NEAR(cylinder_row, height, 2.0);
+  EXPECT_GT(cylinder_column, cylinder_row / 2);  // its height: the caps seen past the side
 }
 
 TEST(Renderer, MissingShaderIsAClearErrorNamingTheFile) {
