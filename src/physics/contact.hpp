@@ -99,37 +99,57 @@ using CornerSeparations = std::array<double, 8>;
 CornerSeparations corner_separations(const Mat3& rotation, const Vec3& position,
                                      const Vec3& half_size, const Plane& plane);
 
+// The features whose separation is below `margin` (m), the deepest first, at most four (their
+// body points left for the caller).
+Manifold deepest_features(const CornerSeparations& separations, double margin);
+
 // The corners whose separation is below `margin` (m), the deepest first, at most four.
 Manifold box_plane_manifold(const CornerSeparations& separations, const Vec3& half_size,
                             double margin);
+
+// A cylinder's points against a plane lie on the rims of its ends, along two directions across
+// its axis (body frame): `down`, towards the plane (where the rim is lowest), and `side`, a quarter
+// turn on. Features 0–3 are the −y end's rim at down, side, −down, −side; 4–7 the +y end's. Lying
+// on its side a cylinder touches at its two `down` points; standing on an end, at that end's four
+// (then fixed in the body: down is body x); tilted, at one. The points move on the rim as it rolls:
+// they are found again at each step.
+struct RimFrame {
+  Vec3 down, side;  // unit, body frame, across the axis
+};
+RimFrame rim_frame(const Mat3& rotation, const Vec3& normal);
+Vec3 rim_point(const Shape& cylinder, const RimFrame& frame, int feature);
 
 // The lowest separation of any corner of the box from the plane (m; negative inside).
 double closest_corner_separation(const BodyState& state, const Vec3& half_size, const Plane& plane);
 
 // The same for any shape, indexed by feature: a box's eight corners; a sphere's one point nearest
 // the plane (feature 0; the others +∞); a capsule's nearest points at its two ends (features 0 and
-// 1, the −y and +y ends). `rotation` body to world, `position` the centre (m).
+// 1, the −y and +y ends); a cylinder's eight rim points (RimFrame). `rotation` body to world,
+// `position` the centre (m).
 CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, const Vec3& position,
                                     const Plane& plane);
 
-// The manifold of the shape's points (from plane_separations) below `margin` (m): a box's corners
-// as box_plane_manifold gives them; a round shape's core points (rounded_point: a sphere's centre,
-// a capsule's two end centres), whose touching point stands the radius below each along the plane's
+// The manifold of the shape's points (from plane_separations) below `margin` (m), the body at
+// `rotation` against a plane of unit `normal`: a box's corners as box_plane_manifold gives them; a
+// cylinder's rim points (RimFrame); a round shape's core points (plane_point: a sphere's centre, a
+// capsule's two end centres), whose touching point stands the radius below each along the plane's
 // normal and moves on the surface as the body rolls.
-Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations, double margin);
+Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations,
+                        const Mat3& rotation, const Vec3& normal, double margin);
 
 // The lowest separation of the shape at `state` from the plane (m; negative inside).
 double closest_separation(const BodyState& state, const Shape& shape, const Plane& plane);
 
-// A shape's point `feature` (of plane_separations) as a core point fixed in the body (m, body
-// frame) with `radius` (m) of rounding around it: the point that touches a plane of normal n is
-// core − radius Rᵀn. A box's corners have no rounding; a sphere is its centre and its radius; a
-// capsule's features are its two end centres, each with its radius.
+// A shape's point `feature` (of plane_separations, the body at `rotation` against a plane of unit
+// `normal`) as a core point fixed in the body (m, body frame) with `radius` (m) of rounding around
+// it: the point that touches the plane is core − radius Rᵀn. A box's corners and a cylinder's rim
+// points have no rounding; a sphere is its centre and its radius; a capsule's features are its two
+// end centres, each with its radius.
 struct RoundedPoint {
   Vec3 core = Vec3::Zero();
   double radius = 0.0;
 };
-RoundedPoint rounded_point(const Shape& shape, int feature);
+RoundedPoint plane_point(const Shape& shape, int feature, const Mat3& rotation, const Vec3& normal);
 
 // The body-frame offset of corner `feature` (bit i: sign along body axis i).
 inline Vec3 corner(const Vec3& half_size, int feature) {

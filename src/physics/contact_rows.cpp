@@ -131,6 +131,7 @@ struct PairView {
                    double separation, const Vec3& outward) {
     switch (shape.kind) {
       case ShapeKind::box:
+      case ShapeKind::cylinder:
         return {.arm = rotation * point, .anchor = point, .measured = world_point(base, point)};
       case ShapeKind::sphere:
         return {.arm = base.rotation * point, .anchor = Vec3::Zero(), .measured = base.position};

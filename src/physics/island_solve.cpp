@@ -88,7 +88,8 @@ void write_plane_rows(const StepContext& context, const PlaneRows& rows, const P
   ContactRows& solve = context.scratch.rows;
   const RowSlots at = slots_of(rows);
   Manifold found = plane_manifold(
-      model.shape, plane_separations(model.shape, pose.rotation, pose.position, plane), margin);
+      model.shape, plane_separations(model.shape, pose.rotation, pose.position, plane),
+      pose.rotation, plane.normal, margin);
   found.friction = manifold.friction;
   found.patch = manifold.patch;
   CarriedImpulses carried;

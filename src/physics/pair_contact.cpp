@@ -86,6 +86,60 @@ PairManifold box_sphere_manifold(const BoxPose& box, const ShapePose& sphere, do
   return one_point({box.position, box.rotation, nullptr}, sphere, normal, at, gap, feature);
 }
 
+PairManifold cylinder_sphere_manifold(const ShapePose& cylinder, const ShapePose& sphere,
+                                      double margin) {
+  const double r = cylinder.shape->radius;
+  const double half_length = cylinder.shape->half_length;
+  const Vec3 local = cylinder.rotation.transpose() * (sphere.position - cylinder.position);
+  const double across = std::hypot(local.x(), local.z());  // from the axis
+  // The cylinder's closest point: the centre's height clamped to the ends, its distance from the
+  // axis to the radius.
+  Vec3 surface = local;
+  surface.y() = std::clamp(local.y(), -half_length, half_length);
+  if (across > r) {
+    surface.x() *= r / across;
+    surface.z() *= r / across;
+  }
+  const std::uint32_t along = local.y() < -half_length ? 0 : local.y() > half_length ? 2 : 1;
+  const std::uint32_t feature = 2 * along + (across > r ? 1 : 0);
+  Vec3 normal_local;
+  double gap = 0.0;
+  const Vec3 outside = local - surface;
+  if (outside.squaredNorm() > 0.0) {
+    const double distance = outside.norm();
+    normal_local = outside / distance;
+    gap = distance - sphere.shape->radius;
+  } else {
+    // The centre is inside: out through the side or the end it is nearest (the side on a tie).
+    const double to_side = r - across;
+    const double to_end = half_length - std::abs(local.y());
+    if (to_end < to_side) {
+      const double side = local.y() < 0.0 ? -1.0 : 1.0;
+      normal_local = Vec3(0.0, side, 0.0);
+      surface.y() = side * half_length;
+      gap = -to_end - sphere.shape->radius;
+    } else {
+      normal_local =
+          across > 0.0 ? Vec3(local.x() / across, 0.0, local.z() / across) : Vec3(Vec3::UnitX());
+      surface.x() = r * normal_local.x();
+      surface.z() = r * normal_local.z();
+      gap = -to_side - sphere.shape->radius;
+    }
+  }
+  if (!(gap < margin)) return {};
+  const Vec3 normal = cylinder.rotation * normal_local;
+  const Vec3 at = cylinder.position + cylinder.rotation * surface + 0.5 * gap * normal;
+  return one_point(cylinder, sphere, normal, at, gap, feature);
+}
+
+bool pair_is_built(ShapeKind a, ShapeKind b) {
+  const auto solid = [](ShapeKind k) {
+    return k == ShapeKind::box || k == ShapeKind::capsule || k == ShapeKind::cylinder;
+  };
+  const bool cylinder = a == ShapeKind::cylinder || b == ShapeKind::cylinder;
+  return !(cylinder && solid(a) && solid(b));
+}
+
 double pair_separation(const ShapePose& a, const ShapePose& b, double margin) {
   if (a.shape->kind == ShapeKind::box && b.shape->kind == ShapeKind::box) {
     return box_box_axis({a.position, a.rotation, a.shape->half_size},
@@ -110,6 +164,9 @@ PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin
   if (sa.kind == ShapeKind::sphere && sb.kind == ShapeKind::sphere) {
     return sphere_sphere_manifold(a, sa.radius, b, sb.radius, margin);
   }
+  if (!pair_is_built(sa.kind, sb.kind)) return {};
+  if (sa.kind == ShapeKind::cylinder) return cylinder_sphere_manifold(a, b, margin);
+  if (sb.kind == ShapeKind::cylinder) return swapped(cylinder_sphere_manifold(b, a, margin));
   if (sa.kind == ShapeKind::box) {
     const BoxPose box{a.position, a.rotation, sa.half_size};
     return sb.kind == ShapeKind::sphere ? box_sphere_manifold(box, b, sb.radius, margin)

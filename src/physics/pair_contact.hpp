@@ -50,4 +50,15 @@ PairManifold sphere_sphere_manifold(const ShapePose& a, double ra, const ShapePo
 PairManifold box_sphere_manifold(const BoxPose& box, const ShapePose& sphere, double radius,
                                  double margin);
 
+// A cylinder and a sphere, the normal from the cylinder towards the sphere: from the cylinder's
+// closest point to the centre (on its side, its rim or an end), or, with the centre inside, out
+// through the side or the end it is nearest.
+PairManifold cylinder_sphere_manifold(const ShapePose& cylinder, const ShapePose& sphere,
+                                      double margin);
+
+// Whether pair_manifold finds the contact of two shapes of these kinds. Not yet: a cylinder with
+// a box, a capsule or a cylinder (pair_manifold gives no contact; a scene with such a pair is
+// refused).
+bool pair_is_built(ShapeKind a, ShapeKind b);
+
 }  // namespace tumble::physics

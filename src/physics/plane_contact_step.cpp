@@ -68,7 +68,7 @@ void find_impact_corners(const BodyState& start, const std::vector<CornerSeparat
     for (int feature = 0; feature < 8; ++feature) {
       const auto f = static_cast<std::size_t>(feature);
       if (end[p][f] < 0.0 && before[f] > kTouchingDistance) {
-        const RoundedPoint point = rounded_point(shape, feature);
+        const RoundedPoint point = plane_point(shape, feature, start_rotation, planes[p].normal);
         out.push_back({.plane = p, .body_point = point.core, .radius = point.radius});
       }
     }
@@ -175,7 +175,7 @@ BodyState resolve_impact(const StepContext& context, std::uint32_t body, const B
   for (std::uint32_t p = 0; p < context.planes.size(); ++p) {
     const Plane& plane = context.planes[p];
     const Manifold found =
-        plane_manifold(model.shape, separations[p], kTouchingDistance);
+        plane_manifold(model.shape, separations[p], rotation, plane.normal, kTouchingDistance);
     if (found.count == 0) continue;
     append_rows({.manifold = found,
                  .plane = plane,
@@ -273,7 +273,7 @@ void append_plane_rows(const StepContext& context, const BodyInRows& body, doubl
     const Plane& plane = context.planes[p];
     Manifold& manifold = manifolds[p];
     Manifold found =
-        plane_manifold(model.shape, separations[p], margin);
+        plane_manifold(model.shape, separations[p], body.rotation, plane.normal, margin);
     // Warm start from the last step's impulses of the same corners, and of the same plane's
     // friction.
     if (found.count > 0 && manifold.count > 0) {

@@ -27,17 +27,18 @@ Material combine(const Material& a, const Material& b);
 
 // What a body is, for contact: a box, or a round shape that is a core with `radius` of rounding
 // around it, as Box2D and Box3D model rounded shapes: a sphere (its core a point) or a capsule (its
-// core a segment of `half_length` either side of the centre along the body's y axis). The shape is
-// in the body frame, centred on the centre of mass.
-enum class ShapeKind : std::uint8_t { box, sphere, capsule };
+// core a segment of `half_length` either side of the centre along the body's y axis); or a
+// cylinder of `radius` along body y, its flat ends `half_length` either side of the centre. The
+// shape is in the body frame, centred on the centre of mass.
+enum class ShapeKind : std::uint8_t { box, sphere, capsule, cylinder };
 
 struct Shape {
   ShapeKind kind = ShapeKind::box;
   // Half the edges of the box the shape fits in, along the body axes (m): the box itself for a
   // box, (r, r, r) for a sphere. Bounds, reaches and swings read it for every shape.
   Vec3 half_size = Vec3::Constant(0.5);
-  double radius = 0.0;       // m: the sphere's or capsule's rounding; 0 for a box
-  double half_length = 0.0;  // m: half the capsule's core segment, along body y; 0 otherwise
+  double radius = 0.0;       // m: the sphere's, capsule's or cylinder's; 0 for a box
+  double half_length = 0.0;  // m: half a capsule's core segment or a cylinder's length, along y
 };
 
 // A box of half edges `half_size` (m), a sphere of `radius` (m), or a capsule of `radius` whose
@@ -47,6 +48,12 @@ inline Shape box_shape(const Vec3& half_size) {
 }
 inline Shape sphere_shape(double radius) {
   return {.kind = ShapeKind::sphere, .half_size = Vec3::Constant(radius), .radius = radius};
+}
+inline Shape cylinder_shape(double radius, double half_length) {
+  return {.kind = ShapeKind::cylinder,
+          .half_size = Vec3(radius, half_length, radius),
+          .radius = radius,
+          .half_length = half_length};
 }
 inline Shape capsule_shape(double radius, double half_length) {
   return {.kind = ShapeKind::capsule,
@@ -59,6 +66,7 @@ inline Shape capsule_shape(double radius, double half_length) {
 inline double bounding_radius(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::box:
+    case ShapeKind::cylinder:
       return shape.half_size.norm();
     case ShapeKind::sphere:
       return shape.radius;
@@ -69,9 +77,9 @@ inline double bounding_radius(const Shape& shape) {
 }
 
 // How far the shape's surface stands out from its core (m): a sphere's radius around its centre, a
-// capsule's around its segment; 0 for a box, which is all core.
+// capsule's around its segment; 0 for a box or a cylinder, which are all core.
 inline double rounding(const Shape& shape) {
-  return shape.kind == ShapeKind::box ? 0.0 : shape.radius;
+  return shape.kind == ShapeKind::sphere || shape.kind == ShapeKind::capsule ? shape.radius : 0.0;
 }
 
 // The point of a round shape's core nearest to `point` (body frame, m): the centre of a sphere, the
@@ -81,11 +89,13 @@ inline Vec3 nearest_core_point(const Shape& shape, const Vec3& point) {
   return Vec3(0.0, std::clamp(point.y(), -shape.half_length, shape.half_length), 0.0);
 }
 
-// How far the shape's core reaches from its centre (m): a box's half diagonal, a capsule's half
-// length, nothing for a sphere. A turn of the body swings its surface by this times the angle.
+// How far the shape's core reaches from its centre (m): a box's or cylinder's half diagonal, a
+// capsule's half length, nothing for a sphere. A turn of the body swings its surface by this times
+// the angle.
 inline double core_reach(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::box:
+    case ShapeKind::cylinder:
       return shape.half_size.norm();
     case ShapeKind::sphere:
       return 0.0;

@@ -18,16 +18,17 @@
 
 namespace tumble::scene {
 
-enum class Shape { cube, box, sphere, capsule };
+enum class Shape { cube, box, sphere, capsule, cylinder };
 
 struct BodySpec {
   std::string name;
   Shape shape = Shape::cube;
   // Edge lengths along the body axes (m); for a round shape, those of the box around it (a
-  // sphere's 2r each; a capsule's 2r, length + 2r, 2r).
+  // sphere's 2r each; a capsule's 2r, length + 2r, 2r; a cylinder's 2r, length, 2r).
   physics::Vec3 size = physics::Vec3::Ones();
-  double radius = 0.0;                                     // a sphere's or capsule's (m)
-  double length = 0.0;  // a capsule's, between its end centres along body y (m)
+  double radius = 0.0;  // a sphere's, capsule's or cylinder's (m)
+  // Along body y (m): a capsule's between its end centres, a cylinder's between its ends.
+  double length = 0.0;
   double mass = 1.0;                                       // kg
   physics::Vec3 position = physics::Vec3::Zero();          // world frame (m)
   physics::Vec3 velocity = physics::Vec3::Zero();          // world frame (m/s)

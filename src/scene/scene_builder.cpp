@@ -18,6 +18,9 @@ physics::BodyConstants body_constants(const BodySpec& body) {
     case Shape::capsule:
       return physics::constants_from_moments(
           body.mass, physics::capsule_inertia(body.mass, body.radius, body.length).diagonal());
+    case Shape::cylinder:
+      return physics::constants_from_moments(
+          body.mass, physics::cylinder_inertia(body.mass, body.radius, body.length).diagonal());
   }
   return {};
 }
@@ -28,6 +31,8 @@ physics::Shape physics_shape(const BodySpec& body) {
       return physics::sphere_shape(body.radius);
     case Shape::capsule:
       return physics::capsule_shape(body.radius, 0.5 * body.length);
+    case Shape::cylinder:
+      return physics::cylinder_shape(body.radius, 0.5 * body.length);
     case Shape::cube:
     case Shape::box:
       break;

@@ -167,6 +167,7 @@ void refuse_what_the_contact_cannot_hold(TableReader& in, const BodySpec& body,
   };
   if (body.shape == Shape::sphere) fail_unless_impulse("shape", "a sphere");
   if (body.shape == Shape::capsule) fail_unless_impulse("shape", "a capsule");
+  if (body.shape == Shape::cylinder) fail_unless_impulse("shape", "a cylinder");
   if (body.is_static) fail_unless_impulse("static", "a static body");
   if (in.has("rolling_resistance")) fail_unless_impulse("rolling_resistance", "rolling resistance");
   if (body.is_static && !physics.contact.collide_bodies) {
@@ -181,16 +182,20 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   body.name = in.optional_string("name", "body" + std::to_string(index));
   if (!is_safe_name(body.name)) in.fail("name", kSafeNameRule);
   const std::string shape = in.required_string("shape");
-  if (shape != "cube" && shape != "box" && shape != "sphere" && shape != "capsule") {
-    in.fail("shape",
-            "unknown shape " + in_quotes(shape) + " (expected cube, box, sphere or capsule)");
+  if (shape != "cube" && shape != "box" && shape != "sphere" && shape != "capsule" &&
+      shape != "cylinder") {
+    in.fail("shape", "unknown shape " + in_quotes(shape) +
+                         " (expected cube, box, sphere, capsule or cylinder)");
   }
-  if (shape != "capsule" && in.has("length")) {
-    in.fail("length", "only a capsule has a length (a " + shape + " has " +
+  const bool round = shape == "sphere" || shape == "capsule" || shape == "cylinder";
+  if (shape != "capsule" && shape != "cylinder" && in.has("length")) {
+    in.fail("length", "only a capsule or a cylinder has a length (a " + shape + " has " +
                           (shape == "sphere" ? "a radius)" : "a size)"));
   }
-  if (shape == "sphere" || shape == "capsule") {
-    body.shape = shape == "sphere" ? Shape::sphere : Shape::capsule;
+  if (round) {
+    body.shape = shape == "sphere"    ? Shape::sphere
+                 : shape == "capsule" ? Shape::capsule
+                                      : Shape::cylinder;
     if (in.has("size")) in.fail("size", "a " + shape + " has a radius, not a size");
     body.radius = in.required_number("radius");
     require_positive(in, "radius", body.radius);
@@ -200,10 +205,16 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
         in.fail("length", "a capsule's length (between its end centres) must be 0 or more");
       }
     }
-    body.size = Vec3(2.0 * body.radius, body.length + 2.0 * body.radius, 2.0 * body.radius);
+    if (body.shape == Shape::cylinder) {
+      body.length = in.required_number("length");
+      require_positive(in, "length", body.length);
+    }
+    const double ends = body.shape == Shape::cylinder ? 0.0 : 2.0 * body.radius;
+    body.size = Vec3(2.0 * body.radius, body.length + ends, 2.0 * body.radius);
   } else {
     if (in.has("radius"))
-      in.fail("radius", "only a sphere or a capsule has a radius (a " + shape + " has a size)");
+      in.fail("radius",
+              "only a sphere, a capsule or a cylinder has a radius (a " + shape + " has a size)");
     const toml::node& size = in.required("size");
     if (shape == "cube") {
       body.shape = Shape::cube;
@@ -352,6 +363,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     fail_on_dt(what);
   }
   read_planes(in, scene);
+  refuse_unbuilt_pairs(in, scene);
   refuse_overlapping_bodies(in, scene);
   read_render_tables(in, scene);
   read_overlays(in, scene);

@@ -187,6 +187,8 @@ render::Solid solid_of(scene::Shape shape) {
       return render::Solid::ball;
     case scene::Shape::capsule:
       return render::Solid::capsule;
+    case scene::Shape::cylinder:
+      return render::Solid::cylinder;
     case scene::Shape::cube:
     case scene::Shape::box:
       break;

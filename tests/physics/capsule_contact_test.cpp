@@ -76,13 +76,13 @@ TEST(CapsuleGeometry, OnAPlaneItsEndsTouchARadiusBelowThem) {
   const CornerSeparations seps = plane_separations(s, turn, centre, floor);
   EXPECT_NEAR(std::min(seps[0], seps[1]), 0.02, 1e-15);
   EXPECT_NEAR(std::max(seps[0], seps[1]), 0.52, 1e-15);
-  const Manifold m = plane_manifold(s, seps, 0.1);
+  const Manifold m = plane_manifold(s, seps, turn, floor.normal, 0.1);
   ASSERT_EQ(m.count, 1);
   EXPECT_NEAR((turn * m.points[0].body_point + centre).y(), 0.12, 1e-15);
-  EXPECT_EQ(rounded_point(s, m.points[0].feature).radius, 0.1);
+  EXPECT_EQ(plane_point(s, m.points[0].feature, turn, floor.normal).radius, 0.1);
   // Lying flat: both ends.
   const Mat3 flat = kLying.toRotationMatrix();
-  EXPECT_EQ(plane_manifold(s, plane_separations(s, flat, Vec3(0, 0.1, 0), floor), 0.01).count, 2);
+  EXPECT_EQ(plane_manifold(s, plane_separations(s, flat, Vec3(0, 0.1, 0), floor), flat, floor.normal, 0.01).count, 2);
 }
 
 TEST(CapsuleGeometry, CapsulesCrossedTouchAtOnePointAndSideBySideAtTwo) {

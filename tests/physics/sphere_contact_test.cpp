@@ -95,12 +95,12 @@ TEST(SphereGeometry, ABallOnAPlaneTouchesBelowItsCentre) {
   const Mat3 turn = Eigen::AngleAxisd(1.1, Vec3(1, 1, 0).normalized()).toRotationMatrix();
   const CornerSeparations seps = plane_separations(s, turn, Vec3(2, 0.35, 1), floor);
   EXPECT_NEAR(seps[0], 0.05, 1e-15);
-  const Manifold m = plane_manifold(s, seps, 0.1);
+  const Manifold m = plane_manifold(s, seps, turn, floor.normal, 0.1);
   ASSERT_EQ(m.count, 1);
   // The point is the core's (the centre): it touches the radius below it, whichever way it turned.
   EXPECT_EQ(m.points[0].body_point, Vec3::Zero());
-  EXPECT_EQ(rounded_point(s, m.points[0].feature).radius, 0.3);
-  EXPECT_EQ(plane_manifold(s, seps, 0.04).count, 0);
+  EXPECT_EQ(plane_point(s, m.points[0].feature, turn, floor.normal).radius, 0.3);
+  EXPECT_EQ(plane_manifold(s, seps, turn, floor.normal, 0.04).count, 0);
 }
 
 // Dropped from 1 m (its lowest point) with e = 0.5 onto a floor of e = 0.5: the n-th bounce rises
