@@ -173,29 +173,22 @@ ContactCase rest() {
   };
 }
 
-// A ball let go on a 30° slope with friction 0.5 (more than 2/7 tan 30°): it rolls without
-// slipping, down ½ (5/7 g sin θ) t² = 4.378 m in 2 s. Impulse contact only.
-ContactCase roll() {
+// A round body of radius 0.25 m let go on a 30° slope with friction 0.5 (more than enough to roll):
+// it rolls without slipping, down ½ (f g sin θ) t² in 2 s, f = 1 / (1 + I / (m r²)) about its
+// rolling axis. Impulse contact only. `lying` turns the body's y axis across the slope.
+ContactCase rolling(const char* name, const char* summary, const char* note,
+                    const physics::BodyModel& model, double fraction, const Quat& lying) {
   constexpr double kRadius = 0.25, kDuration = 2.0;
   const double theta = std::numbers::pi / 6;
   const Vec3 n(std::sin(theta), std::cos(theta), 0.0), down(std::cos(theta), -std::sin(theta), 0.0);
-  const physics::Material material{.restitution = 0.0, .friction = 0.5};
-  const physics::BodyModel model{.constants = physics::sphere_constants(1.0, kRadius),
-                                 .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
-                                 .shape = physics::sphere_shape(kRadius),
-                                 .material = material};
+  const physics::Material& material = model.material;
   const Vec3 start = kRadius * n;
   return {
-      .name = "roll",
-      .summary =
-          "A 1 kg ball of radius 0.25 m let go on a 30° slope, friction 0.5, 2 s "
-          "(impulse contact only)",
-      .measure_note =
-          "the distance rolled down the slope by the end against "
-          "½ (5/7 g sin θ) t² = 4.378 m, and the contact point's fastest slip",
+      .name = name,
+      .summary = summary,
+      .measure_note = note,
       .model = model,
-      .initial =
-          physics::make_state(model.constants, start, Vec3::Zero(), Quat::Identity(), Vec3::Zero()),
+      .initial = physics::make_state(model.constants, start, Vec3::Zero(), lying, Vec3::Zero()),
       // A floor 10 m below first, never reached: the energy the bench bounds is measured above
       // it (energy_above_rest), and a run that rolls without losing or gaining any keeps it.
       .planes = {physics::Plane{.normal = Vec3::UnitY(), .offset = -10.0, .material = material},
@@ -208,7 +201,7 @@ ContactCase roll() {
       .judge =
           [=](const std::vector<BodyState>& states, double dt) {
             const double t = dt * static_cast<double>(states.size() - 1);  // s
-            const double exact = 0.5 * 5.0 / 7.0 * kG * std::sin(theta) * t * t;
+            const double exact = 0.5 * fraction * kG * std::sin(theta) * t * t;
             double slip = 0.0;  // m/s
             for (const BodyState& s : states) {
               slip =
@@ -220,10 +213,43 @@ ContactCase roll() {
   };
 }
 
+const physics::Material kRollingMaterial{.restitution = 0.0, .friction = 0.5};
+
+// A ball: f = 5/7.
+ContactCase roll() {
+  return rolling("roll",
+                 "A 1 kg ball of radius 0.25 m let go on a 30° slope, friction 0.5, 2 s "
+                 "(impulse contact only)",
+                 "the distance rolled down the slope by the end against "
+                 "½ (5/7 g sin θ) t² = 4.378 m, and the contact point's fastest slip",
+                 {.constants = physics::sphere_constants(1.0, 0.25),
+                  .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
+                  .shape = physics::sphere_shape(0.25),
+                  .material = kRollingMaterial},
+                 5.0 / 7.0, Quat::Identity());
+}
+
+// A solid cylinder lying across the slope: f = 2/3. Its points are rim points found at each step,
+// where the ball's is its centre's.
+ContactCase roll_cylinder() {
+  return rolling("roll_cylinder",
+                 "A 1 kg solid cylinder of radius 0.25 m and length 0.5 m let go lying across a "
+                 "30° slope, friction 0.5, 2 s (impulse contact only)",
+                 "the distance rolled down the slope by the end against "
+                 "½ (2/3 g sin θ) t² = 4.087 m, and the contact point's fastest slip",
+                 {.constants = physics::constants_from_moments(
+                      1.0, physics::cylinder_inertia(1.0, 0.25, 0.5).diagonal()),
+                  .forces = {physics::Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
+                  .shape = physics::cylinder_shape(0.25, 0.25),
+                  .material = kRollingMaterial},
+                 2.0 / 3.0, Quat(Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX())));
+}
+
 }  // namespace
 
 const std::vector<ContactCase>& contact_cases() {
-  static const std::vector<ContactCase> cases = {bounce(), slide(), rest(), roll()};
+  static const std::vector<ContactCase> cases = {bounce(), slide(), rest(), roll(),
+                                                 roll_cylinder()};
   return cases;
 }
 
