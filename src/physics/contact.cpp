@@ -111,12 +111,38 @@ Vec3 rim_point(const Shape& cylinder, const RimFrame& frame, int feature) {
   return out;
 }
 
+HullRanks lowest_hull_corners(const ConvexHull& hull, const Mat3& rotation, const Vec3& normal) {
+  const Vec3 reach = rotation.transpose() * normal;
+  HullRanks out;
+  out.corner.fill(-1);
+  out.height.fill(std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < hull.vertices.size(); ++i) {
+    const double h = reach.dot(hull.vertices[i]);
+    // Insertion into the eight lowest, lowest first (a tie keeps the lower index first).
+    if (!(h < out.height[7])) continue;
+    int at = 7;
+    for (; at > 0 && h < out.height[static_cast<std::size_t>(at - 1)]; --at) {
+      out.height[static_cast<std::size_t>(at)] = out.height[static_cast<std::size_t>(at - 1)];
+      out.corner[static_cast<std::size_t>(at)] = out.corner[static_cast<std::size_t>(at - 1)];
+    }
+    out.height[static_cast<std::size_t>(at)] = h;
+    out.corner[static_cast<std::size_t>(at)] = static_cast<int>(i);
+  }
+  return out;
+}
+
 CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, const Vec3& position,
                                     const Plane& plane) {
   if (shape.kind == ShapeKind::box) {
     return corner_separations(rotation, position, shape.half_size, plane);
   }
   CornerSeparations out;
+  if (shape.kind == ShapeKind::hull) {
+    const HullRanks ranks = lowest_hull_corners(*shape.hull, rotation, plane.normal);
+    const double centre = separation(plane, position);
+    for (std::size_t k = 0; k < 8; ++k) out[k] = centre + ranks.height[k];
+    return out;
+  }
   if (shape.kind == ShapeKind::cylinder) {
     const RimFrame frame = rim_frame(rotation, plane.normal);
     const Vec3 reach = rotation.transpose() * plane.normal;
@@ -137,9 +163,72 @@ CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, co
   return out;
 }
 
+Manifold hull_plane_manifold(const ConvexHull& hull, const CornerSeparations& separations,
+                             const Mat3& rotation, const Vec3& normal, double margin) {
+  const HullRanks ranks = lowest_hull_corners(hull, rotation, normal);
+  int count = 0;
+  while (count < 8 && separations[static_cast<std::size_t>(count)] < margin) ++count;
+  // More than four within the margin (a face of five corners or more flat on the plane): the
+  // deepest, then each time the one that widens the patch most (farthest from the one picked,
+  // then farthest from their line, then on the far side of the three), so that the points hold
+  // the body as its face does.
+  std::array<int, 4> picked{};
+  int kept = 0;
+  const auto corner = [&](int k) {
+    return hull.vertices[static_cast<std::size_t>(ranks.corner[static_cast<std::size_t>(k)])];
+  };
+  if (count <= kMaxManifoldPoints) {
+    for (int k = 0; k < count; ++k) picked[static_cast<std::size_t>(kept++)] = k;
+  } else {
+    picked[0] = 0;
+    kept = 1;
+    const Vec3 n = rotation.transpose() * normal;  // body frame
+    const auto best = [&](auto score) {
+      int at = -1;
+      double most = 0.0;
+      for (int k = 1; k < count; ++k) {
+        if (std::find(picked.begin(), picked.begin() + kept, k) != picked.begin() + kept) continue;
+        const double value = score(corner(k));
+        if (value > most) {
+          most = value;
+          at = k;
+        }
+      }
+      if (at >= 0) picked[static_cast<std::size_t>(kept++)] = at;
+    };
+    const Vec3 a = corner(0);
+    best([&](const Vec3& p) { return (p - a).squaredNorm(); });
+    if (kept == 2) {
+      const Vec3 b = corner(picked[1]);
+      best([&](const Vec3& p) { return std::abs(n.dot((b - a).cross(p - a))); });
+    }
+    if (kept == 3) {
+      const Vec3 b = corner(picked[1]), c = corner(picked[2]);
+      const double side = n.dot((b - a).cross(c - a));
+      // Beyond the edge of the triangle it faces most: the largest area outside it.
+      best([&](const Vec3& p) {
+        return std::max({-side * n.dot((b - a).cross(p - a)), -side * n.dot((c - b).cross(p - b)),
+                         -side * n.dot((a - c).cross(p - c))});
+      });
+    }
+  }
+  Manifold out;
+  out.count = kept;
+  for (int i = 0; i < kept; ++i) {
+    const int k = picked[static_cast<std::size_t>(i)];
+    ContactPoint& point = out.points[static_cast<std::size_t>(i)];
+    point.feature = ranks.corner[static_cast<std::size_t>(k)];
+    point.body_point = corner(k);
+    point.separation = separations[static_cast<std::size_t>(k)];
+  }
+  return out;
+}
+
 Manifold plane_manifold(const Shape& shape, const CornerSeparations& separations,
                         const Mat3& rotation, const Vec3& normal, double margin) {
   if (shape.kind == ShapeKind::box) return box_plane_manifold(separations, shape.half_size, margin);
+  if (shape.kind == ShapeKind::hull)
+    return hull_plane_manifold(*shape.hull, separations, rotation, normal, margin);
   if (shape.kind == ShapeKind::cylinder) {
     Manifold out = deepest_features(separations, margin);
     const RimFrame frame = rim_frame(rotation, normal);
@@ -177,6 +266,11 @@ RoundedPoint plane_point(const Shape& shape, int feature, const Mat3& rotation,
   if (shape.kind == ShapeKind::box) return {.core = corner(shape.half_size, feature)};
   if (shape.kind == ShapeKind::cylinder) {
     return {.core = rim_point(shape, rim_frame(rotation, normal), feature)};
+  }
+  if (shape.kind == ShapeKind::hull) {
+    const int corner = lowest_hull_corners(*shape.hull, rotation, normal)
+                           .corner[static_cast<std::size_t>(feature)];
+    return {.core = shape.hull->vertices[static_cast<std::size_t>(std::max(corner, 0))]};
   }
   if (shape.kind == ShapeKind::capsule) {
     return {.core = Vec3(0.0, feature == 0 ? -shape.half_length : shape.half_length, 0.0),

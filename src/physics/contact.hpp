@@ -119,13 +119,28 @@ struct RimFrame {
 RimFrame rim_frame(const Mat3& rotation, const Vec3& normal);
 Vec3 rim_point(const Shape& cylinder, const RimFrame& frame, int feature);
 
+// A hull's corners against a plane of unit `normal`, the body at `rotation`: the eight lowest
+// (fewer for a hull of fewer corners: −1 past them), lowest first, a tie in index order, and their
+// heights along the normal above the centre (m; +∞ past the corners). plane_separations gives a
+// hull's features in this order; a manifold's points are named by their corner's index.
+struct HullRanks {
+  std::array<int, 8> corner;
+  std::array<double, 8> height;
+};
+HullRanks lowest_hull_corners(const ConvexHull& hull, const Mat3& rotation, const Vec3& normal);
+
+// A hull's manifold against a plane from its separations in rank order: those below `margin`, at
+// most four (the deepest, then those that widen the patch most).
+Manifold hull_plane_manifold(const ConvexHull& hull, const CornerSeparations& separations,
+                             const Mat3& rotation, const Vec3& normal, double margin);
+
 // The lowest separation of any corner of the box from the plane (m; negative inside).
 double closest_corner_separation(const BodyState& state, const Vec3& half_size, const Plane& plane);
 
 // The same for any shape, indexed by feature: a box's eight corners; a sphere's one point nearest
 // the plane (feature 0; the others +∞); a capsule's nearest points at its two ends (features 0 and
-// 1, the −y and +y ends); a cylinder's eight rim points (RimFrame). `rotation` body to world,
-// `position` the centre (m).
+// 1, the −y and +y ends); a cylinder's eight rim points (RimFrame); a hull's eight lowest corners
+// (HullRanks). `rotation` body to world, `position` the centre (m).
 CornerSeparations plane_separations(const Shape& shape, const Mat3& rotation, const Vec3& position,
                                     const Plane& plane);
 

@@ -132,6 +132,7 @@ struct PairView {
     switch (shape.kind) {
       case ShapeKind::box:
       case ShapeKind::cylinder:
+      case ShapeKind::hull:
         return {.arm = rotation * point, .anchor = point, .measured = world_point(base, point)};
       case ShapeKind::sphere:
         return {.arm = base.rotation * point, .anchor = Vec3::Zero(), .measured = base.position};

@@ -133,6 +133,7 @@ PairManifold cylinder_sphere_manifold(const ShapePose& cylinder, const ShapePose
 }
 
 bool pair_is_built(ShapeKind a, ShapeKind b) {
+  if (a == ShapeKind::hull || b == ShapeKind::hull) return false;
   const auto solid = [](ShapeKind k) {
     return k == ShapeKind::box || k == ShapeKind::capsule || k == ShapeKind::cylinder;
   };

@@ -57,8 +57,8 @@ PairManifold cylinder_sphere_manifold(const ShapePose& cylinder, const ShapePose
                                       double margin);
 
 // Whether pair_manifold finds the contact of two shapes of these kinds. Not yet: a cylinder with
-// a box, a capsule or a cylinder (pair_manifold gives no contact; a scene with such a pair is
-// refused).
+// a box, a capsule or a cylinder, and a hull with any body (pair_manifold gives no contact; a
+// scene with such a pair is refused).
 bool pair_is_built(ShapeKind a, ShapeKind b);
 
 }  // namespace tumble::physics

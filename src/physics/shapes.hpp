@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 
+#include "physics/convex_hull.hpp"
 #include "physics/rigid_body.hpp"
 
 namespace tumble::physics {
@@ -28,9 +30,10 @@ Material combine(const Material& a, const Material& b);
 // What a body is, for contact: a box, or a round shape that is a core with `radius` of rounding
 // around it, as Box2D and Box3D model rounded shapes: a sphere (its core a point) or a capsule (its
 // core a segment of `half_length` either side of the centre along the body's y axis); or a
-// cylinder of `radius` along body y, its flat ends `half_length` either side of the centre. The
-// shape is in the body frame, centred on the centre of mass.
-enum class ShapeKind : std::uint8_t { box, sphere, capsule, cylinder };
+// cylinder of `radius` along body y, its flat ends `half_length` either side of the centre; or a
+// convex hull (physics/hull_shape.hpp). The shape is in the body frame, centred on the centre of
+// mass.
+enum class ShapeKind : std::uint8_t { box, sphere, capsule, cylinder, hull };
 
 struct Shape {
   ShapeKind kind = ShapeKind::box;
@@ -39,6 +42,8 @@ struct Shape {
   Vec3 half_size = Vec3::Constant(0.5);
   double radius = 0.0;       // m: the sphere's, capsule's or cylinder's; 0 for a box
   double half_length = 0.0;  // m: half a capsule's core segment or a cylinder's length, along y
+  // A hull's corners, faces and their normals, body frame (shared by the bodies made from it).
+  std::shared_ptr<const ConvexHull> hull = nullptr;
 };
 
 // A box of half edges `half_size` (m), a sphere of `radius` (m), or a capsule of `radius` whose
@@ -55,6 +60,11 @@ inline Shape cylinder_shape(double radius, double half_length) {
           .radius = radius,
           .half_length = half_length};
 }
+inline Shape hull_shape(std::shared_ptr<const ConvexHull> hull) {
+  Vec3 reach = Vec3::Zero();
+  for (const Vec3& v : hull->vertices) reach = reach.cwiseMax(v.cwiseAbs());
+  return {.kind = ShapeKind::hull, .half_size = reach, .hull = std::move(hull)};
+}
 inline Shape capsule_shape(double radius, double half_length) {
   return {.kind = ShapeKind::capsule,
           .half_size = Vec3(radius, half_length + radius, radius),
@@ -67,6 +77,7 @@ inline double bounding_radius(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::box:
     case ShapeKind::cylinder:
+    case ShapeKind::hull:
       return shape.half_size.norm();
     case ShapeKind::sphere:
       return shape.radius;
@@ -96,6 +107,7 @@ inline double core_reach(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::box:
     case ShapeKind::cylinder:
+    case ShapeKind::hull:
       return shape.half_size.norm();
     case ShapeKind::sphere:
       return 0.0;
