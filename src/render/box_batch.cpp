@@ -78,6 +78,38 @@ BoxBatch BoxBatch::create(Solid solid) {
   return out;
 }
 
+BoxBatch BoxBatch::create_hull(const HullMesh& mesh, const Vec3& size, std::uint32_t index) {
+  BoxBatch out;
+  out.solid_ = Solid::hull;
+  out.mesh_ = index;
+  std::vector<GLushort> indices;
+  const std::vector<HullVertex> vertices = hull_vertices(mesh, size, indices);
+  out.indices_ = static_cast<GLsizei>(indices.size());
+  glGenVertexArrays(1, out.vao_.out());
+  glBindVertexArray(out.vao_.get());
+  glGenBuffers(1, out.cube_vbo_.out());
+  glBindBuffer(GL_ARRAY_BUFFER, out.cube_vbo_.get());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(HullVertex)),
+               vertices.data(), GL_STATIC_DRAW);
+  glGenBuffers(1, out.cube_ebo_.out());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, out.cube_ebo_.get());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLushort)),
+               indices.data(), GL_STATIC_DRAW);
+  const auto attribute = [](GLuint location, std::size_t offset) {
+    glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, sizeof(HullVertex),
+                          reinterpret_cast<const void*>(offset));
+    glEnableVertexAttribArray(location);
+  };
+  attribute(0, offsetof(HullVertex, position));
+  attribute(1, offsetof(HullVertex, normal));
+  attribute(11, offsetof(HullVertex, edge));  // past the instance attributes (2 to 10)
+  glGenBuffers(1, out.instance_vbo_.out());
+  glBindBuffer(GL_ARRAY_BUFFER, out.instance_vbo_.get());
+  point_instance_attributes();
+  glBindVertexArray(0);
+  return out;
+}
+
 BoxBatch::~BoxBatch() {
   const GLuint vao = vao_.get();
   if (vao == 0) return;
@@ -87,7 +119,7 @@ BoxBatch::~BoxBatch() {
 }
 
 void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye) {
-  const std::vector<BoxInstance> instances = box_instances(boxes, eye, solid_);
+  const std::vector<BoxInstance> instances = box_instances(boxes, eye, solid_, mesh_);
   count_ = static_cast<GLsizei>(instances.size());
   glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_.get());
   // A fresh store each frame, so the driver need not wait for the last frame's draws.

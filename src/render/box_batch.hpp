@@ -16,6 +16,9 @@ class BoxBatch {
  public:
   BoxBatch() = default;  // no GL objects: for a renderer whose set-up failed
   static BoxBatch create(Solid solid);
+  // The batch of the hull `mesh` (its index among RenderSettings::hulls), drawn in a box of
+  // `size` (m).
+  static BoxBatch create_hull(const HullMesh& mesh, const Vec3& size, std::uint32_t index);
   ~BoxBatch();
   BoxBatch(BoxBatch&& other) noexcept = default;
   BoxBatch& operator=(BoxBatch&& other) noexcept = default;
@@ -32,8 +35,9 @@ class BoxBatch {
  private:
   GlName vao_, cube_vbo_, cube_ebo_, instance_vbo_;
   Solid solid_ = Solid::box;
-  GLsizei indices_ = 0;  // of the mesh
-  GLsizei count_ = 0;    // boxes uploaded
+  std::uint32_t mesh_ = 0;  // Solid::hull's
+  GLsizei indices_ = 0;     // of the mesh
+  GLsizei count_ = 0;       // boxes uploaded
 };
 
 }  // namespace tumble::render

@@ -6,13 +6,15 @@
 
 namespace tumble::render {
 
-std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye,
-                                       Solid solid) {
+std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye, Solid solid,
+                                       std::uint32_t mesh) {
   std::vector<double> distance(boxes.size());  // squared, from the eye to the centre (m²)
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     distance[i] = (boxes[i].position - eye).squaredNorm();
-    if (boxes[i].solid == solid) order.push_back(i);
+    if (boxes[i].solid == solid && (solid != Solid::hull || boxes[i].mesh == mesh)) {
+      order.push_back(i);
+    }
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });

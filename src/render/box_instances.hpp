@@ -22,7 +22,8 @@ struct BoxInstance {
 // (llvmpipe tests depth before shading when the shader writes no depth and discards nothing). The
 // picture is the same in any order (opaque boxes, GL_LESS) but where faces of two boxes meet at
 // exactly equal depth.
+// A hull's batch takes the boxes of its `mesh` only.
 std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye,
-                                       Solid solid = Solid::box);
+                                       Solid solid = Solid::box, std::uint32_t mesh = 0);
 
 }  // namespace tumble::render

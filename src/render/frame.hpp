@@ -41,6 +41,17 @@ enum class Solid : std::uint8_t {
   ball,      // the sphere the box holds: its size is the diameter along every axis
   capsule,   // along body y: size (2r, length + 2r, 2r), r the radius
   cylinder,  // along body y: size (2r, length, 2r)
+  // A convex hull (RenderSettings::hulls[Box::mesh]), its size the box around it: flat-shaded per
+  // face, with dark edges.
+  hull,
+};
+
+// A convex hull's surface, body frame (m): its corners, its faces as polygons wound
+// counter-clockwise seen from outside, and their outward normals.
+struct HullMesh {
+  std::vector<Vec3> corners;
+  std::vector<std::vector<std::uint32_t>> faces;
+  std::vector<Vec3> normals;
 };
 
 // A box (a cube when the edges are equal) at a pose, or the ball inside it.
@@ -50,6 +61,7 @@ struct Box {
   Vec3 size = Vec3::Ones();              // edge lengths along the body axes (m)
   Color color = Color(0.85, 0.35, 0.2);  // sRGB
   Solid solid = Solid::box;
+  std::uint32_t mesh = 0;  // Solid::hull: its index in RenderSettings::hulls
 };
 
 // A finite piece of a plane (a wall, a slope, a raised floor): matte, gridded, framed by a dark
@@ -120,6 +132,10 @@ struct RenderSettings : common::RenderSettings {
   // Whether frames may have round solids (Solid::ball, capsule, cylinder): only then are their
   // shaders built and their meshes set up.
   bool round_solids = false;
+  // The hulls frames may have (Solid::hull), with the size of the box each is drawn in (m): each
+  // is one mesh, set up once, drawn instanced for every body of it.
+  std::vector<HullMesh> hulls = {};
+  std::vector<Vec3> hull_sizes = {};
 };
 
 // Changes every frame.

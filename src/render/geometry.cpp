@@ -193,6 +193,37 @@ std::vector<CubeVertex> capsule_vertices(int divisions, std::vector<std::uint16_
   return out;
 }
 
+std::vector<HullVertex> hull_vertices(const HullMesh& mesh, const Vec3& size,
+                                      std::vector<std::uint16_t>& indices) {
+  std::vector<HullVertex> out;
+  indices.clear();
+  constexpr float kInside = 1e3f;  // never near 0: a side inside the face is no edge
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const std::vector<std::uint32_t>& face = mesh.faces[f];
+    const Vec3& n = mesh.normals[f];
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) {
+      // The fan's triangle (0, k, k + 1): its side opposite corner 0 (k to k + 1) is the face's
+      // edge; the side opposite k + 1 (0 to k) is one when k = 1, opposite k (0 to k + 1) when
+      // k + 1 is the last corner.
+      const std::uint32_t corners[3] = {face[0], face[k], face[k + 1]};
+      const bool edge[3] = {true, k + 1 == face.size() - 1, k == 1};
+      for (int c = 0; c < 3; ++c) {
+        HullVertex v{};
+        const Vec3 p = mesh.corners[corners[c]].cwiseQuotient(size);
+        for (int i = 0; i < 3; ++i) {
+          v.position[i] = static_cast<float>(p[i]);
+          v.normal[i] = static_cast<float>(n[i]);
+          v.edge[i] = i == c ? 1.0f : 0.0f;
+          if (!edge[i]) v.edge[i] = kInside;
+        }
+        indices.push_back(static_cast<std::uint16_t>(out.size()));
+        out.push_back(v);
+      }
+    }
+  }
+  return out;
+}
+
 std::vector<CubeVertex> cylinder_vertices(int sides, std::vector<std::uint16_t>& indices) {
   std::vector<CubeVertex> out;
   indices.clear();

@@ -63,6 +63,19 @@ std::vector<CubeVertex> sphere_vertices(int divisions, std::vector<std::uint16_t
 // sphere's, along the position). Into `indices` as sphere_vertices.
 std::vector<CubeVertex> capsule_vertices(int divisions, std::vector<std::uint16_t>& indices);
 
+// A hull's vertex: where it is in the unit box the hull's size scales, its face's normal (body
+// frame), and how far it is from the face's edges: each triangle of a face's fan has (1, 0, 0),
+// (0, 1, 0), (0, 0, 1) at its corners, a component the distance from the side opposite its corner,
+// and a large value instead where that side is inside the face, so that hull.frag darkens the
+// face's own edges only.
+struct HullVertex {
+  float position[3];
+  float normal[3];
+  float edge[3];
+};
+std::vector<HullVertex> hull_vertices(const HullMesh& mesh, const Vec3& size,
+                                      std::vector<std::uint16_t>& indices);
+
 // The cylinder of diameter 1 and height 1 along y (in the unit cube): its side of `sides` faces
 // with normals along the radius (smooth when interpolated), and its two flat caps. Into
 // `indices`, counter-clockwise seen from outside.

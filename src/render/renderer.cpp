@@ -226,6 +226,20 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
       round.batch = BoxBatch::create(source.solid);
     }
   }
+  for (std::uint32_t k = 0; k < settings.hulls.size(); ++k) {
+    {
+      RoundSolid& hull = rounds.emplace_back();
+      // Each hull its own program objects: the same two sources, built once per mesh (a scene
+      // has a few).
+      if (Result<void> built = build(hull.program, {"hull.vert"}, {"lighting.glsl", "hull.frag"});
+          !built)
+        return built;
+      if (Result<void> built = build(hull.shadow_program, {"box_shadow.vert"}, {"shadow.frag"});
+          !built)
+        return built;
+      hull.batch = BoxBatch::create_hull(settings.hulls[k], settings.hull_sizes[k], k);
+    }
+  }
 
   // Ground: one square as a triangle strip.
   const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};

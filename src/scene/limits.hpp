@@ -29,6 +29,8 @@ inline constexpr std::int64_t kMaxBodySteps = 1'000'000'000;
 inline constexpr std::int64_t kMaxForcesPerBody = 100;
 // Every body is tested against every plane at each step: a room and a few ramps need a dozen.
 inline constexpr std::int64_t kMaxPlanes = 64;
+// Points written for one hull (a mesh may have any number of vertices: its hull is reduced).
+inline constexpr std::size_t kMostHullPoints = 10'000;
 // Scene files are read whole.
 inline constexpr std::int64_t kMaxSceneFileBytes = 16 * 1024 * 1024;
 

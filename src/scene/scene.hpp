@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,12 +14,13 @@
 #include "physics/forces.hpp"
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
+#include "physics/hull_shape.hpp"
 #include "physics/shapes.hpp"
 #include "scene/overlays.hpp"
 
 namespace tumble::scene {
 
-enum class Shape { cube, box, sphere, capsule, cylinder };
+enum class Shape { cube, box, sphere, capsule, cylinder, hull };
 
 struct BodySpec {
   std::string name;
@@ -29,6 +31,10 @@ struct BodySpec {
   double radius = 0.0;  // a sphere's, capsule's or cylinder's (m)
   // Along body y (m): a capsule's between its end centres, a cylinder's between its ends.
   double length = 0.0;
+  // A hull's: its corners about its centre of mass and its constants (physics/hull_shape.hpp),
+  // made once when the scene is read. `position` places its centre of mass and `orientation`
+  // turns its body axes (its principal axes: the loader folds the turn from the points' frame in).
+  std::shared_ptr<const physics::HullBody> hull;
   double mass = 1.0;                                       // kg
   physics::Vec3 position = physics::Vec3::Zero();          // world frame (m)
   physics::Vec3 velocity = physics::Vec3::Zero();          // world frame (m/s)

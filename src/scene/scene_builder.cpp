@@ -21,6 +21,8 @@ physics::BodyConstants body_constants(const BodySpec& body) {
     case Shape::cylinder:
       return physics::constants_from_moments(
           body.mass, physics::cylinder_inertia(body.mass, body.radius, body.length).diagonal());
+    case Shape::hull:
+      return body.hull->constants;
   }
   return {};
 }
@@ -33,6 +35,8 @@ physics::Shape physics_shape(const BodySpec& body) {
       return physics::capsule_shape(body.radius, 0.5 * body.length);
     case Shape::cylinder:
       return physics::cylinder_shape(body.radius, 0.5 * body.length);
+    case Shape::hull:
+      return physics::hull_shape(body.hull->hull);
     case Shape::cube:
     case Shape::box:
       break;

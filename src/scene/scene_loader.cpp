@@ -1,6 +1,8 @@
 #include "scene/scene_loader.hpp"
 
 #include "scene/key_depth.hpp"
+#include "scene/limits.hpp"
+#include "scene/mesh_file.hpp"
 #include "scene/overlay_tables.hpp"
 #include "scene/plane_tables.hpp"
 #include "scene/render_tables.hpp"
@@ -168,6 +170,7 @@ void refuse_what_the_contact_cannot_hold(TableReader& in, const BodySpec& body,
   if (body.shape == Shape::sphere) fail_unless_impulse("shape", "a sphere");
   if (body.shape == Shape::capsule) fail_unless_impulse("shape", "a capsule");
   if (body.shape == Shape::cylinder) fail_unless_impulse("shape", "a cylinder");
+  if (body.shape == Shape::hull) fail_unless_impulse("shape", "a hull");
   if (body.is_static) fail_unless_impulse("static", "a static body");
   if (in.has("rolling_resistance")) fail_unless_impulse("rolling_resistance", "rolling resistance");
   if (body.is_static && !physics.contact.collide_bodies) {
@@ -177,22 +180,67 @@ void refuse_what_the_contact_cannot_hold(TableReader& in, const BodySpec& body,
   }
 }
 
+// A hull body's corners, from `points` or the vertices of `mesh` (relative to the scene file)
+// times `scale`, made a hull of the body's mass; its size the box around it.
+void read_hull(TableReader& in, const std::string& file, BodySpec& body) {
+  const bool has_points = in.has("points"), has_mesh = in.has("mesh");
+  if (has_points == has_mesh) {
+    in.fail(has_points ? "mesh" : "shape",
+            "a hull takes `points` (its corners, m) or `mesh` (an OBJ or STL file), one of them");
+  }
+  std::vector<Vec3> points;
+  const char* key = has_points ? "points" : "mesh";
+  if (has_points) {
+    if (in.has("scale")) in.fail("scale", "`scale` applies to a mesh's vertices");
+    const toml::array* list = in.table().get("points")->as_array();
+    if (!list) in.fail("points", "expected an array of points [[x, y, z], ...]");
+    if (list->size() > kMostHullPoints) {
+      in.fail("points", "at most " + std::to_string(kMostHullPoints) + " points");
+    }
+    for (const toml::node& point : *list) points.push_back(in.vector("points", point));
+  } else {
+    const double scale = in.optional_number("scale", 1.0);
+    require_positive(in, "scale", scale);
+    const std::string mesh = in.required_string("mesh");
+    const std::filesystem::path at = std::filesystem::path(file).parent_path() / mesh;
+    Result<std::vector<Vec3>> read = read_mesh_vertices(at.string(), scale);
+    if (!read) in.fail("mesh", read.error());
+    points = std::move(read).value();
+  }
+  Result<physics::HullBody> made = physics::hull_body(points, body.mass > 0.0 ? body.mass : 1.0);
+  if (!made) in.fail(key, made.error());
+  body.hull = std::make_shared<const physics::HullBody>(std::move(made).value());
+  Vec3 reach = Vec3::Zero();
+  for (const Vec3& v : body.hull->hull->vertices) reach = reach.cwiseMax(v.cwiseAbs());
+  body.size = 2.0 * reach;
+}
+
 BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) {
   BodySpec body;
   body.name = in.optional_string("name", "body" + std::to_string(index));
   if (!is_safe_name(body.name)) in.fail("name", kSafeNameRule);
   const std::string shape = in.required_string("shape");
   if (shape != "cube" && shape != "box" && shape != "sphere" && shape != "capsule" &&
-      shape != "cylinder") {
+      shape != "cylinder" && shape != "hull") {
     in.fail("shape", "unknown shape " + in_quotes(shape) +
-                         " (expected cube, box, sphere, capsule or cylinder)");
+                         " (expected cube, box, sphere, capsule, cylinder or hull)");
+  }
+  if (shape != "hull") {
+    for (const char* key : {"points", "mesh", "scale"}) {
+      if (in.has(key)) in.fail(key, std::string("only a hull takes ") + key);
+    }
   }
   const bool round = shape == "sphere" || shape == "capsule" || shape == "cylinder";
   if (shape != "capsule" && shape != "cylinder" && in.has("length")) {
     in.fail("length", "only a capsule or a cylinder has a length (a " + shape + " has " +
                           (shape == "sphere" ? "a radius)" : "a size)"));
   }
-  if (round) {
+  if (shape == "hull") {
+    body.shape = Shape::hull;
+    for (const char* key : {"size", "radius", "length"}) {
+      if (in.has(key)) in.fail(key, std::string("a hull has points or a mesh, not a ") + key);
+    }
+  } else if (round) {
     body.shape = shape == "sphere"    ? Shape::sphere
                  : shape == "capsule" ? Shape::capsule
                                       : Shape::cylinder;
@@ -244,6 +292,7 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
     body.mass = in.required_number("mass");
     require_positive(in, "mass", body.mass);
   }
+  if (body.shape == Shape::hull) read_hull(in, file, body);
   const physics::BodyConstants constants = body_constants(body);
   if (!(std::isfinite(constants.inverse_mass) && constants.inverse_inertia.allFinite() &&
         constants.inertia.allFinite())) {
@@ -252,6 +301,8 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   body.position = in.optional_vector("position", Vec3::Zero());
   body.velocity = in.optional_vector("velocity", Vec3::Zero());
   body.orientation = in.optional_quaternion("orientation");
+  // A hull's body axes are its principal axes, turned from the frame its points were given in.
+  if (body.hull) body.orientation = (body.orientation * Quat(body.hull->axes)).normalized();
   body.angular_velocity = in.optional_vector("angular_velocity", Vec3::Zero());
   vector_within(in, "position", body.position, sim::kMaxPosition, "m");
   vector_within(in, "velocity", body.velocity, sim::kMaxSpeed, "m/s");

@@ -189,6 +189,8 @@ render::Solid solid_of(scene::Shape shape) {
       return render::Solid::capsule;
     case scene::Shape::cylinder:
       return render::Solid::cylinder;
+    case scene::Shape::hull:
+      return render::Solid::hull;
     case scene::Shape::cube:
     case scene::Shape::box:
       break;
@@ -204,12 +206,14 @@ render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
   view.camera = camera_at(scene.camera, framing.camera, framing.follow_index, states, t);
   view.quads = framing.quads;
   view.boxes.reserve(states.size());
+  std::uint32_t hulls = 0;  // before body i: its mesh's index (render_settings lists them so)
   for (std::size_t i = 0; i < states.size(); ++i) {
     view.boxes.push_back(render::Box{.position = states[i].position(),
                                      .orientation = states[i].orientation(),
                                      .size = scene.bodies[i].size,
                                      .color = scene.bodies[i].color,
-                                     .solid = solid_of(scene.bodies[i].shape)});
+                                     .solid = solid_of(scene.bodies[i].shape),
+                                     .mesh = scene.bodies[i].hull ? hulls++ : 0});
     add_force_visuals(scene.bodies[i], states[i], t, view.boxes);
   }
   return view;
@@ -266,8 +270,17 @@ render::RenderSettings renderer_settings(const scene::Scene& scene, const Framin
                                   overlays_need_lines(scene)};
   settings.ground = framing.ground;
   settings.round_solids =
-      std::any_of(scene.bodies.begin(), scene.bodies.end(),
-                  [](const scene::BodySpec& b) { return solid_of(b.shape) != render::Solid::box; });
+      std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const scene::BodySpec& b) {
+        return solid_of(b.shape) != render::Solid::box && solid_of(b.shape) != render::Solid::hull;
+      });
+  // Each hull body's mesh, in body order (frame_view numbers them so).
+  for (const scene::BodySpec& body : scene.bodies) {
+    if (!body.hull) continue;
+    const physics::ConvexHull& hull = *body.hull->hull;
+    settings.hulls.push_back(
+        {.corners = hull.vertices, .faces = hull.faces, .normals = hull.normals});
+    settings.hull_sizes.push_back(body.size);
+  }
   return settings;
 }
 

@@ -329,6 +329,9 @@ TEST_F(RenderCommand, TheReportIsValidJsonWhateverTheSceneFileIsCalled) {
 TEST_F(RenderCommand, EveryExampleSceneRenders) {
   int scenes = 0;
   fs::create_directories(path("copies"));
+  // The meshes the scenes name, relative to them.
+  fs::copy(fs::path(TUMBLE_SOURCE_DIR) / "scenes" / "models", path("copies/models"),
+           fs::copy_options::recursive);
   for (const auto& entry : fs::directory_iterator(fs::path(TUMBLE_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() != ".toml") continue;
     ++scenes;
