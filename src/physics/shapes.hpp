@@ -72,21 +72,6 @@ inline Shape capsule_shape(double radius, double half_length) {
           .half_length = half_length};
 }
 
-// The radius of the smallest sphere about the centre that holds the shape (m).
-inline double bounding_radius(const Shape& shape) {
-  switch (shape.kind) {
-    case ShapeKind::box:
-    case ShapeKind::cylinder:
-    case ShapeKind::hull:
-      return shape.half_size.norm();
-    case ShapeKind::sphere:
-      return shape.radius;
-    case ShapeKind::capsule:
-      return shape.half_length + shape.radius;
-  }
-  return shape.half_size.norm();
-}
-
 // How far the shape's surface stands out from its core (m): a sphere's radius around its centre, a
 // capsule's around its segment; 0 for a box or a cylinder, which are all core.
 inline double rounding(const Shape& shape) {
@@ -115,6 +100,13 @@ inline double core_reach(const Shape& shape) {
       return shape.half_length;
   }
   return shape.half_size.norm();
+}
+
+// The radius of a sphere about the centre that holds the shape (m): its core's reach and its
+// rounding (the smallest such sphere for a box, a ball or a capsule; for a cylinder or a hull, the
+// one about the box they fit in).
+inline double bounding_radius(const Shape& shape) {
+  return core_reach(shape) + rounding(shape);
 }
 
 // A static, infinite plane: the half-space n·x >= offset is outside; bodies stay there.

@@ -55,26 +55,8 @@ BoxBatch BoxBatch::create(Solid solid) {
       for (const GLushort corner : {0, 1, 2, 0, 2, 3}) indices.push_back(base + corner);
     }
   }
-  out.indices_ = static_cast<GLsizei>(indices.size());
-  glGenVertexArrays(1, out.vao_.out());
-  glBindVertexArray(out.vao_.get());
-  glGenBuffers(1, out.cube_vbo_.out());
-  glBindBuffer(GL_ARRAY_BUFFER, out.cube_vbo_.get());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(CubeVertex)),
-               vertices.data(), GL_STATIC_DRAW);
-  glGenBuffers(1, out.cube_ebo_.out());
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, out.cube_ebo_.get());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLushort)),
-               indices.data(), GL_STATIC_DRAW);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex), nullptr);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(CubeVertex),
-                        reinterpret_cast<const void*>(offsetof(CubeVertex, normal)));
-  glEnableVertexAttribArray(1);
-  glGenBuffers(1, out.instance_vbo_.out());
-  glBindBuffer(GL_ARRAY_BUFFER, out.instance_vbo_.get());
-  point_instance_attributes();
-  glBindVertexArray(0);
+  out.set_up(vertices, indices,
+             {{0, offsetof(CubeVertex, position)}, {1, offsetof(CubeVertex, normal)}});
   return out;
 }
 
@@ -84,30 +66,38 @@ BoxBatch BoxBatch::create_hull(const HullMesh& mesh, const Vec3& size, std::uint
   out.mesh_ = index;
   std::vector<GLushort> indices;
   const std::vector<HullVertex> vertices = hull_vertices(mesh, size, indices);
-  out.indices_ = static_cast<GLsizei>(indices.size());
-  glGenVertexArrays(1, out.vao_.out());
-  glBindVertexArray(out.vao_.get());
-  glGenBuffers(1, out.cube_vbo_.out());
-  glBindBuffer(GL_ARRAY_BUFFER, out.cube_vbo_.get());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(HullVertex)),
+  // The edge attribute past the instance attributes (2 to 10).
+  out.set_up(vertices, indices,
+             {{0, offsetof(HullVertex, position)},
+              {1, offsetof(HullVertex, normal)},
+              {11, offsetof(HullVertex, edge)}});
+  return out;
+}
+
+template <class Vertex>
+void BoxBatch::set_up(const std::vector<Vertex>& vertices, const std::vector<GLushort>& indices,
+                      std::initializer_list<std::pair<GLuint, std::size_t>> attributes) {
+  indices_ = static_cast<GLsizei>(indices.size());
+  glGenVertexArrays(1, vao_.out());
+  glBindVertexArray(vao_.get());
+  glGenBuffers(1, cube_vbo_.out());
+  glBindBuffer(GL_ARRAY_BUFFER, cube_vbo_.get());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
                vertices.data(), GL_STATIC_DRAW);
-  glGenBuffers(1, out.cube_ebo_.out());
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, out.cube_ebo_.get());
+  glGenBuffers(1, cube_ebo_.out());
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, cube_ebo_.get());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLushort)),
                indices.data(), GL_STATIC_DRAW);
-  const auto attribute = [](GLuint location, std::size_t offset) {
-    glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, sizeof(HullVertex),
+  // Each per-vertex attribute: three floats at its offset in Vertex.
+  for (const auto& [location, offset] : attributes) {
+    glVertexAttribPointer(location, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
                           reinterpret_cast<const void*>(offset));
     glEnableVertexAttribArray(location);
-  };
-  attribute(0, offsetof(HullVertex, position));
-  attribute(1, offsetof(HullVertex, normal));
-  attribute(11, offsetof(HullVertex, edge));  // past the instance attributes (2 to 10)
-  glGenBuffers(1, out.instance_vbo_.out());
-  glBindBuffer(GL_ARRAY_BUFFER, out.instance_vbo_.get());
+  }
+  glGenBuffers(1, instance_vbo_.out());
+  glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_.get());
   point_instance_attributes();
   glBindVertexArray(0);
-  return out;
 }
 
 BoxBatch::~BoxBatch() {

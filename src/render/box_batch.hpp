@@ -4,6 +4,9 @@
 // same upload. Internal to src/render/; needs a current GL context from create() to destruction.
 #pragma once
 
+#include <cstddef>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 #include "render/frame.hpp"
@@ -33,6 +36,11 @@ class BoxBatch {
   void draw() const;
 
  private:
+  // The mesh's buffers and vertex layout, and the instance buffer, into a new vertex array.
+  template <class Vertex>
+  void set_up(const std::vector<Vertex>& vertices, const std::vector<GLushort>& indices,
+              std::initializer_list<std::pair<GLuint, std::size_t>> attributes);
+
   GlName vao_, cube_vbo_, cube_ebo_, instance_vbo_;
   Solid solid_ = Solid::box;
   std::uint32_t mesh_ = 0;  // Solid::hull's
