@@ -3,8 +3,8 @@
 // which the scene never includes (cmake/check_layers.cmake).
 #pragma once
 
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,9 +12,9 @@
 #include "common/video_format.hpp"
 #include "physics/contact.hpp"
 #include "physics/forces.hpp"
+#include "physics/hull_shape.hpp"
 #include "physics/integrators.hpp"
 #include "physics/rigid_body.hpp"
-#include "physics/hull_shape.hpp"
 #include "physics/shapes.hpp"
 #include "scene/overlays.hpp"
 

@@ -82,7 +82,10 @@ TEST(CapsuleGeometry, OnAPlaneItsEndsTouchARadiusBelowThem) {
   EXPECT_EQ(plane_point(s, m.points[0].feature, turn, floor.normal).radius, 0.1);
   // Lying flat: both ends.
   const Mat3 flat = kLying.toRotationMatrix();
-  EXPECT_EQ(plane_manifold(s, plane_separations(s, flat, Vec3(0, 0.1, 0), floor), flat, floor.normal, 0.01).count, 2);
+  EXPECT_EQ(plane_manifold(s, plane_separations(s, flat, Vec3(0, 0.1, 0), floor), flat,
+                           floor.normal, 0.01)
+                .count,
+            2);
 }
 
 TEST(CapsuleGeometry, CapsulesCrossedTouchAtOnePointAndSideBySideAtTwo) {
