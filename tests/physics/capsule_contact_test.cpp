@@ -46,9 +46,9 @@ BodyState state_of(const BodyModel& model, const Vec3& position, const Quat& q =
 
 double kinetic_energy(const std::vector<BodyState>& states) {
   double e = 0.0;
-  for (const BodyState& s : states) {
-    e += 0.5 * (s.momentum().dot(s.velocity()) + s.angular_momentum().dot(s.angular_velocity()));
-  }
+  for (const BodyState& s : states) e += physics::kinetic_energy(s);
+  return e;
+}
   return e;
 }
 
