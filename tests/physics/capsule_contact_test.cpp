@@ -49,8 +49,6 @@ double kinetic_energy(const std::vector<BodyState>& states) {
   for (const BodyState& s : states) e += physics::kinetic_energy(s);
   return e;
 }
-  return e;
-}
 
 TEST(CapsuleGeometry, ClosestPointsOfSegments) {
   // Crossed: x from −1 to 1 at y = 0 and z from −1 to 1 at y = 1, meeting over the origin.
