@@ -98,9 +98,14 @@ void add_plane(BulletWorld& bullet, const physics::Plane& plane) {
   bullet.world.addRigidBody(bullet.planes.emplace_back(std::make_unique<btRigidBody>(info)).get());
 }
 
-// The body's shape in Bullet: a btBoxShape, or a btSphereShape for a ball (its radius is all
-// margin: it collides as the sphere given).
+// The body's shape in Bullet: a btBoxShape, a btSphereShape for a ball (its radius is all
+// margin: it collides as the sphere given), or a btCapsuleShape (along y; its height the length
+// between its end centres, as tumble's).
 std::unique_ptr<btCollisionShape> bullet_shape(const PileBox& box) {
+  if (box.length > 0.0) {
+    return std::make_unique<btCapsuleShape>(static_cast<btScalar>(box.radius),
+                                            static_cast<btScalar>(box.length));
+  }
   if (box.radius > 0.0) return std::make_unique<btSphereShape>(static_cast<btScalar>(box.radius));
   const physics::Vec3 half_size = 0.5 * box.size;  // m
   auto shape = std::make_unique<btBoxShape>(to_bullet(half_size));

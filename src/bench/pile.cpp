@@ -81,9 +81,11 @@ std::string summary(int bodies, std::uint64_t seed, const Pile& pile, PileShapes
                 "%d %s (seed %llu), %s %.1f-%.1f m, %.0f kg/m3, restitution %.2f, friction "
                 "%.2f, bin %.0f x %.0f m, dt 1/%.0f s, %d steps",
                 bodies, pile_shapes_name(shapes), static_cast<unsigned long long>(seed),
-                shapes == PileShapes::balls ? "diameters" : "edges", kMinEdge, kMaxEdge, kDensity,
-                kRestitution, kFriction, 2 * kBinHalfWidth, 2 * kBinHalfWidth, 1.0 / kStep,
-                pile.steps);
+                shapes == PileShapes::balls   ? "diameters"
+                : shapes == PileShapes::mixed ? "boxes, balls and capsules in turn, edges"
+                                              : "edges",
+                kMinEdge, kMaxEdge, kDensity, kRestitution, kFriction, 2 * kBinHalfWidth,
+                2 * kBinHalfWidth, 1.0 / kStep, pile.steps);
   return text;
 }
 
@@ -116,10 +118,17 @@ Pile make_pile(int bodies, std::uint64_t seed, double seconds, PileShapes shapes
     const double x = random.uniform(kMinEdge, kMaxEdge);
     const double y = random.uniform(kMinEdge, kMaxEdge);
     const double z = random.uniform(kMinEdge, kMaxEdge);
-    if (shapes == PileShapes::balls) {  // the same draws: a ball of the first edge's diameter
+    const int kind = shapes == PileShapes::mixed ? i % 3 : shapes == PileShapes::balls ? 1 : 0;
+    if (kind == 1) {  // the same draws: a ball of the first edge's diameter
       box.radius = 0.5 * x;
       box.size = Vec3::Constant(x);
       box.mass = kDensity * std::numbers::pi / 6.0 * x * x * x;
+    } else if (kind == 2) {  // a capsule: diameter x / 2, length y between its end centres
+      box.radius = 0.25 * x;
+      box.length = y;
+      box.size = Vec3(2.0 * box.radius, y + 2.0 * box.radius, 2.0 * box.radius);
+      const double r = box.radius;
+      box.mass = kDensity * std::numbers::pi * r * r * (y + 4.0 / 3.0 * r);
     } else {
       box.size = Vec3(x, y, z);
       box.mass = kDensity * x * y * z;
@@ -140,14 +149,19 @@ bool inside_bin(const Pile& pile, const physics::Vec3& centre) {
 }
 
 const char* pile_shapes_name(PileShapes shapes) {
-  return shapes == PileShapes::balls ? "balls" : "boxes";
+  return shapes == PileShapes::balls ? "balls" : shapes == PileShapes::mixed ? "mixed" : "boxes";
 }
 
 physics::Shape shape_of(const PileBox& box) {
+  if (box.length > 0.0) return physics::capsule_shape(box.radius, 0.5 * box.length);
   return box.radius > 0.0 ? physics::sphere_shape(box.radius) : physics::box_shape(0.5 * box.size);
 }
 
 physics::BodyConstants constants_of(const PileBox& box) {
+  if (box.length > 0.0) {
+    return physics::constants_from_moments(
+        box.mass, physics::capsule_inertia(box.mass, box.radius, box.length).diagonal());
+  }
   if (box.radius > 0.0) {
     return physics::sphere_constants(box.mass, box.radius);
   }

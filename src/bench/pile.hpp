@@ -16,22 +16,24 @@
 
 namespace tumble::bench {
 
-// What a pile is poured of: boxes, or balls (spheres of the same size range: diameters 0.2 to
-// 0.6 m).
-enum class PileShapes { boxes, balls };
+// What a pile is poured of: boxes, balls (spheres of the same size range: diameters 0.2 to
+// 0.6 m), or mixed: a box, a ball and a capsule in turn (the capsule's diameter half the first
+// edge drawn, its length between its end centres the second).
+enum class PileShapes { boxes, balls, mixed };
 // Their names on command lines and in the pile's summary.
-inline const std::map<std::string, PileShapes> kPileShapesByName = {{"boxes", PileShapes::boxes},
-                                                                    {"balls", PileShapes::balls}};
+inline const std::map<std::string, PileShapes> kPileShapesByName = {
+    {"boxes", PileShapes::boxes}, {"balls", PileShapes::balls}, {"mixed", PileShapes::mixed}};
 const char* pile_shapes_name(PileShapes shapes);
 
 // One box (or ball) at the start of the pour.
 struct PileBox {
-  physics::Vec3 size;              // edge lengths along the body axes (m); a ball's cube
-  double radius = 0.0;             // m: a ball's; 0 for a box
-  double mass = 0.0;               // kg
-  physics::Vec3 position;          // centre of mass, world frame (m)
-  physics::Quat orientation;       // body-to-world rotation, unit, (w, x, y, z)
-  physics::Vec3 velocity;          // world frame (m/s)
+  physics::Vec3 size;         // edge lengths along the body axes (m); a ball's or capsule's box
+  double radius = 0.0;        // m: a ball's or a capsule's; 0 for a box
+  double length = 0.0;        // m: a capsule's, between its end centres (0: not a capsule)
+  double mass = 0.0;          // kg
+  physics::Vec3 position;     // centre of mass, world frame (m)
+  physics::Quat orientation;  // body-to-world rotation, unit, (w, x, y, z)
+  physics::Vec3 velocity;     // world frame (m/s)
   physics::Vec3 angular_velocity;  // world frame (rad/s)
 };
 

@@ -440,7 +440,9 @@ void add_bench_contact(CLI::App& bench, Commands& commands) {
   command
       ->add_option("--seed", options->seed, "Seed of the boxes' sizes, orientations and velocities")
       ->capture_default_str();
-  command->add_option("--shape", options->shapes, "What the pile is poured of: boxes or balls")
+  command
+      ->add_option("--shape", options->shapes,
+                   "What the pile is poured of: boxes, balls, or mixed (box, ball, capsule)")
       ->transform(CLI::CheckedTransformer(bench::kPileShapesByName))
       ->capture_default_str();
   command

@@ -74,6 +74,36 @@ TEST(Pile, BoxesHaveTheStatedSizesMassesAndMotion) {
   EXPECT_GT(largest, 0.59);
 }
 
+// A mixed pile: a box, a ball and a capsule in turn, each of the same draws as the box pile's, its
+// mass from its own volume (a capsule's: π r² l + 4/3 π r³); a capsule reaches at most half the
+// drawn box's x edge past its y edge, at most 0.9 m end to end, inside the 1.04 m diagonal of the
+// largest box its start cell is made for.
+TEST(Pile, AMixedPileIsBoxesBallsAndCapsulesInTurn) {
+  const Pile boxes = make_pile(300, 4);
+  const Pile mixed = make_pile(300, 4, 20.0, PileShapes::mixed);
+  ASSERT_EQ(mixed.boxes.size(), 300u);
+  for (std::size_t i = 0; i < mixed.boxes.size(); ++i) {
+    const PileBox& box = mixed.boxes[i];
+    const PileBox& drawn = boxes.boxes[i];
+    EXPECT_EQ(box.position, drawn.position);
+    if (i % 3 == 0) {
+      EXPECT_EQ(box.radius, 0.0);
+      EXPECT_EQ(box.size, drawn.size);
+    } else if (i % 3 == 1) {
+      EXPECT_EQ(box.radius, 0.5 * drawn.size.x());
+      EXPECT_EQ(box.length, 0.0);
+    } else {
+      const double r = 0.25 * drawn.size.x(), l = drawn.size.y();
+      EXPECT_EQ(box.radius, r);
+      EXPECT_EQ(box.length, l);
+      EXPECT_NEAR(box.mass, 500.0 * std::numbers::pi * r * r * (l + 4.0 / 3.0 * r), 1e-12);
+      EXPECT_LE(box.size.y(), drawn.size.y() + drawn.size.x() / 2.0 + 1e-15);
+      EXPECT_EQ(shape_of(box).kind, physics::ShapeKind::capsule);
+    }
+  }
+  EXPECT_NE(mixed.summary.find("mixed"), std::string::npos) << mixed.summary;
+}
+
 TEST(Pile, TheBinIsAFloorAndFourWallsThreeMetresOut) {
   const Pile pile = make_pile(10, 1);
   ASSERT_EQ(pile.planes.size(), 5u);
