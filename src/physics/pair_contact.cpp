@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
+#include <vector>
 
 namespace tumble::physics {
 PairManifold one_point(const ShapePose& a, const ShapePose& b, const Vec3& normal, const Vec3& at,
@@ -132,8 +134,80 @@ PairManifold cylinder_sphere_manifold(const ShapePose& cylinder, const ShapePose
   return one_point(cylinder, sphere, normal, at, gap, feature);
 }
 
+PairManifold hull_sphere_manifold(const ShapePose& hull, const ShapePose& sphere, double margin) {
+  const ConvexHull& h = *hull.shape->hull;
+  const Vec3 c = hull.rotation.transpose() * (sphere.position - hull.position);
+  // The face the centre stands furthest out of (or least deep inside).
+  std::size_t out_face = 0;
+  double out_distance = -std::numeric_limits<double>::infinity();
+  std::vector<double> distance(h.faces.size());
+  for (std::size_t f = 0; f < h.faces.size(); ++f) {
+    distance[f] = h.normals[f].dot(c - h.vertices[h.faces[f][0]]);
+    if (distance[f] > out_distance) {
+      out_distance = distance[f];
+      out_face = f;
+    }
+  }
+  Vec3 surface = c, normal_local = Vec3::UnitY();
+  double gap = 0.0;
+  std::uint32_t feature = static_cast<std::uint32_t>(out_face);
+  if (!(out_distance > 0.0)) {
+    // Inside: out through the face it is nearest.
+    normal_local = h.normals[out_face];
+    surface = c - out_distance * normal_local;
+    gap = out_distance - sphere.shape->radius;
+  } else {
+    // Outside: the nearest point of the faces it stands out of, on a face or on its edges.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t f = 0; f < h.faces.size(); ++f) {
+      if (!(distance[f] > 0.0)) continue;
+      const std::vector<std::uint32_t>& face = h.faces[f];
+      const Vec3 q = c - distance[f] * h.normals[f];
+      bool inside = true;
+      for (std::size_t k = 0; k < face.size() && inside; ++k) {
+        const Vec3& a = h.vertices[face[k]];
+        const Vec3& b = h.vertices[face[(k + 1) % face.size()]];
+        inside = (b - a).cross(q - a).dot(h.normals[f]) >= 0.0;
+      }
+      if (inside) {
+        if (distance[f] < nearest) {
+          nearest = distance[f];
+          surface = q;
+          feature = static_cast<std::uint32_t>(f);
+        }
+        continue;
+      }
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        const std::uint32_t i = face[k], j = face[(k + 1) % face.size()];
+        const Vec3& a = h.vertices[i];
+        const Vec3 ab = h.vertices[j] - a;
+        const double t = std::clamp((c - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+        const Vec3 p = a + t * ab;
+        const double d = (c - p).norm();
+        if (d < nearest) {
+          nearest = d;
+          surface = p;
+          // An edge by its two corners, a corner by itself (past the faces' numbers).
+          const std::uint32_t lo = std::min(i, j), hi = std::max(i, j);
+          feature = t <= 0.0   ? 1'000'000 + i
+                    : t >= 1.0 ? 1'000'000 + j
+                               : 2'000'000 + 4096 * lo + hi;
+        }
+      }
+    }
+    normal_local = (c - surface) / nearest;
+    gap = nearest - sphere.shape->radius;
+  }
+  if (!(gap < margin)) return {};
+  const Vec3 normal = hull.rotation * normal_local;
+  const Vec3 at = hull.position + hull.rotation * surface + 0.5 * gap * normal;
+  return one_point(hull, sphere, normal, at, gap, feature);
+}
+
 bool pair_is_built(ShapeKind a, ShapeKind b) {
-  if (a == ShapeKind::hull || b == ShapeKind::hull) return false;
+  if (a == ShapeKind::hull || b == ShapeKind::hull) {
+    return a == ShapeKind::sphere || b == ShapeKind::sphere;
+  }
   const auto solid = [](ShapeKind k) {
     return k == ShapeKind::box || k == ShapeKind::capsule || k == ShapeKind::cylinder;
   };
@@ -166,6 +240,8 @@ PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin
     return sphere_sphere_manifold(a, sa.radius, b, sb.radius, margin);
   }
   if (!pair_is_built(sa.kind, sb.kind)) return {};
+  if (sa.kind == ShapeKind::hull) return hull_sphere_manifold(a, b, margin);
+  if (sb.kind == ShapeKind::hull) return swapped(hull_sphere_manifold(b, a, margin));
   if (sa.kind == ShapeKind::cylinder) return cylinder_sphere_manifold(a, b, margin);
   if (sb.kind == ShapeKind::cylinder) return swapped(cylinder_sphere_manifold(b, a, margin));
   if (sa.kind == ShapeKind::box) {

@@ -56,9 +56,14 @@ PairManifold box_sphere_manifold(const BoxPose& box, const ShapePose& sphere, do
 PairManifold cylinder_sphere_manifold(const ShapePose& cylinder, const ShapePose& sphere,
                                       double margin);
 
+// A hull and a sphere, the normal from the hull towards the sphere: from the nearest point of the
+// hull's faces (on a face, an edge or a corner; the feature names which) to the centre, or, with
+// the centre inside, out of the face it is nearest.
+PairManifold hull_sphere_manifold(const ShapePose& hull, const ShapePose& sphere, double margin);
+
 // Whether pair_manifold finds the contact of two shapes of these kinds. Not yet: a cylinder with
-// a box, a capsule or a cylinder, and a hull with any body (pair_manifold gives no contact; a
-// scene with such a pair is refused).
+// a box, a capsule or a cylinder, and a hull with anything but a sphere (pair_manifold gives no
+// contact; a scene with such a pair is refused).
 bool pair_is_built(ShapeKind a, ShapeKind b);
 
 }  // namespace tumble::physics

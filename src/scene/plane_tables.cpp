@@ -224,8 +224,8 @@ void refuse_unbuilt_pairs(const TableReader& root, const Scene& scene) {
       TableReader(*bodies[a].as_table(), "bodies[" + std::to_string(a) + "]", root.file())
           .fail("shape", "the contact of bodies " + in_quotes(first.name) + " and " +
                              in_quotes(second.name) +
-                             " is not built yet: a cylinder touches planes and spheres only, a "
-                             "hull planes only (give one of them `collide = false`)");
+                             " is not built yet: a cylinder or a hull touches planes and spheres "
+                             "only (give one of them `collide = false`)");
     }
   }
 }

@@ -13,6 +13,7 @@
 
 #include "physics/free_rigid_body.hpp"
 #include "physics/mass_properties.hpp"
+#include "physics/pair_contact.hpp"
 #include "sim/simulation.hpp"
 
 namespace tumble::physics {
@@ -104,6 +105,70 @@ TEST(HullBody, AHullOfManyCornersIsReduced) {
     EXPECT_LT(hull.constants.inertia[k], 0.1);
     EXPECT_GT(hull.constants.inertia[k], 0.09);
   }
+}
+
+// A ball against the hull of a box's corners touches as against the box (box_sphere_manifold,
+// closed form): off a face, an edge, a corner, and with its centre inside; the same normal and
+// separation to 1e-15, from either side.
+TEST(HullGeometry, ABallTouchesTheHullOfABoxAsTheBox) {
+  const Vec3 size(1.0, 0.6, 0.8);
+  const HullBody hull = hull_body(box_corners(size), 1.0).value();
+  const Shape as_hull = hull_shape(hull.hull);
+  const Shape ball = sphere_shape(0.2);
+  const Mat3 turn = Eigen::AngleAxisd(0.5, Vec3(1, 1, 0).normalized()).toRotationMatrix();
+  const Vec3 at(0.3, -0.1, 0.2);
+  for (const Vec3& local :
+       {Vec3(0.1, 0.45, 0.05), Vec3(0.6, 0.4, 0.0), Vec3(0.62, 0.4, -0.5), Vec3(0.3, 0.1, 0.05)}) {
+    SCOPED_TRACE(local.transpose());
+    const ShapePose ball_pose{at + turn * local, Mat3::Identity(), &ball};
+    const PairManifold box =
+        box_sphere_manifold({at, turn, 0.5 * size}, ball_pose, ball.radius, 1.0);
+    const PairManifold m = pair_manifold({at, turn, &as_hull}, ball_pose, 1.0);
+    ASSERT_EQ(box.count, 1);
+    ASSERT_EQ(m.count, 1);
+    EXPECT_NEAR(m.points[0].separation, box.points[0].separation, 1e-15);
+    EXPECT_NEAR((m.normal - box.normal).norm(), 0.0, 1e-15);
+    const PairManifold back = pair_manifold(ball_pose, {at, turn, &as_hull}, 1.0);
+    ASSERT_EQ(back.count, 1);
+    EXPECT_NEAR((back.normal + box.normal).norm(), 0.0, 1e-15);
+  }
+}
+
+// A ball dropped onto the flat top of a static frustum (a square of 2 m below, of 1 m on top,
+// 0.5 m up) comes to rest on it, its centre its radius above the top, within 1e-6 m.
+TEST(HullWorld, ABallRestsOnAStaticHull) {
+  std::vector<Vec3> corners;
+  for (const double x : {-1.0, 1.0}) {
+    for (const double z : {-1.0, 1.0}) {
+      corners.push_back(Vec3(x, 0.0, z));
+      corners.push_back(Vec3(0.5 * x, 0.5, 0.5 * z));
+    }
+  }
+  const HullBody hull = hull_body(corners, 1.0).value();
+  const BodyModel fixed{.constants = static_constants(),
+                        .forces = {},
+                        .shape = hull_shape(hull.hull),
+                        .material = {.friction = 0.8},
+                        .is_static = true};
+  const BodyModel ball{.constants = sphere_constants(0.2, 0.1),
+                       .forces = {Gravity{.acceleration = Vec3(0, -kG, 0)}},
+                       .shape = sphere_shape(0.1),
+                       .material = {.restitution = 0.0, .friction = 0.8}};
+  // The hull's body frame is its principal one, about its centre of mass: placed so that its
+  // points are where they were written.
+  sim::Simulation world(
+      {fixed, ball},
+      {make_state(fixed.constants, hull.centre, Vec3::Zero(), Quat(hull.axes), Vec3::Zero()),
+       make_state(ball.constants, Vec3(0.1, 0.9, -0.2), Vec3::Zero(), Quat::Identity(),
+                  Vec3::Zero())},
+      Integrator::rk4, 1.0 / 60, {}, {.sleep = false});
+  while (world.time() < 3.0 - 1e-12) world.step();
+  const BodyState& s = world.current()[1];
+  std::printf(
+      "[ measured ] a ball on a static hull's top: centre at %.9f m (0.5 + 0.1), |v| %.1e\n",
+      s.position().y(), s.velocity().norm());
+  EXPECT_NEAR(s.position().y(), 0.6, 1e-6);
+  EXPECT_LT(s.velocity().norm(), 1e-6);
 }
 
 // Tumbling free for 10 s (rk4, 1/60 s), the hull of a box follows the box within 1e-12 m; dropped
