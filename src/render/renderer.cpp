@@ -626,9 +626,11 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   const FrameSetup frame = r.setup(view);
 
   r.boxes.upload(view.boxes, view.camera.position);
-  assert((s.round_solids || std::all_of(view.boxes.begin(), view.boxes.end(),
-                                        [](const Box& b) { return b.solid == Solid::box; })) &&
-         "a round Solid needs RenderSettings::round_solids");
+  // A round solid needs RenderSettings::round_solids, a hull its mesh among RenderSettings::hulls.
+  assert(std::all_of(view.boxes.begin(), view.boxes.end(), [&](const Box& b) {
+    return b.solid == Solid::box ||
+           (b.solid == Solid::hull ? b.mesh < s.hulls.size() : s.round_solids);
+  }));
   for (Resources::RoundSolid& round : r.rounds)
     round.batch.upload(view.boxes, view.camera.position);
   glEnable(GL_DEPTH_TEST);
