@@ -38,7 +38,9 @@ BodyState state_of(const BodyModel& model, const Vec3& position, const Quat& q =
   return make_state(model.constants, position, velocity, q, angular_velocity);
 }
 
-double energy(const BodyState& s, double g_height) { return kinetic_energy(s) + g_height; }
+double energy(const BodyState& s, double g_height) {
+  return kinetic_energy(s) + g_height;
+}
 
 TEST(CylinderGeometry, OnAPlaneItTouchesAtItsRims) {
   const Shape s = cylinder_shape(0.5, 0.2);  // 0.4 long
