@@ -138,13 +138,17 @@ PairManifold hull_sphere_manifold(const ShapePose& hull, const ShapePose& sphere
   const ConvexHull& h = *hull.shape->hull;
   const Vec3 c = hull.rotation.transpose() * (sphere.position - hull.position);
   // The face the centre stands furthest out of (or least deep inside).
+  // How far the centre stands out of face f's plane (m; negative inside it): recomputed where
+  // needed rather than kept, so that a step's contact allocates nothing.
+  const auto out_of = [&](std::size_t f) {
+    return h.normals[f].dot(c - h.vertices[h.faces[f][0]]);
+  };
   std::size_t out_face = 0;
   double out_distance = -std::numeric_limits<double>::infinity();
-  std::vector<double> distance(h.faces.size());
   for (std::size_t f = 0; f < h.faces.size(); ++f) {
-    distance[f] = h.normals[f].dot(c - h.vertices[h.faces[f][0]]);
-    if (distance[f] > out_distance) {
-      out_distance = distance[f];
+    const double d = out_of(f);
+    if (d > out_distance) {
+      out_distance = d;
       out_face = f;
     }
   }
@@ -160,9 +164,10 @@ PairManifold hull_sphere_manifold(const ShapePose& hull, const ShapePose& sphere
     // Outside: the nearest point of the faces it stands out of, on a face or on its edges.
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t f = 0; f < h.faces.size(); ++f) {
-      if (!(distance[f] > 0.0)) continue;
+      const double d = out_of(f);
+      if (!(d > 0.0)) continue;
       const std::vector<std::uint32_t>& face = h.faces[f];
-      const Vec3 q = c - distance[f] * h.normals[f];
+      const Vec3 q = c - d * h.normals[f];
       bool inside = true;
       for (std::size_t k = 0; k < face.size() && inside; ++k) {
         const Vec3& a = h.vertices[face[k]];
@@ -170,8 +175,8 @@ PairManifold hull_sphere_manifold(const ShapePose& hull, const ShapePose& sphere
         inside = (b - a).cross(q - a).dot(h.normals[f]) >= 0.0;
       }
       if (inside) {
-        if (distance[f] < nearest) {
-          nearest = distance[f];
+        if (d < nearest) {
+          nearest = d;
           surface = q;
           feature = static_cast<std::uint32_t>(f);
         }
