@@ -37,6 +37,10 @@ struct PairPoint {
   Vec3 point_b = Vec3::Zero();  // the same point relative to B's centre, B's body frame (m)
   double separation = 0.0;      // along the normal, negative when overlapping (m)
   Impulses impulses;            // for warm starting; the narrow phase leaves them zero
+  // Bit 0: the point lies on A's side as a cylinder's side touches, along a line across its axis
+  // (anchored on the axis, as a capsule's point on its segment, so that it stays under the contact
+  // as the cylinder rolls); bit 1: on B's.
+  std::uint8_t on_axis = 0;
 };
 
 struct PairManifold {

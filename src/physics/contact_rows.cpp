@@ -91,10 +91,10 @@ struct PairView {
   RowPoint point(std::uint32_t k) const {
     const PairPoint& point = in.manifold.points[k];
     const Vec3& normal = in.manifold.normal;
-    const Side a =
-        side(in.a_base, in.a_rotation, point.point_a, in.a_shape, point.separation, normal);
-    const Side b =
-        side(in.b_base, in.b_rotation, point.point_b, in.b_shape, point.separation, -normal);
+    const Side a = side(in.a_base, in.a_rotation, point.point_a, in.a_shape, point.separation,
+                        normal, (point.on_axis & 1) != 0);
+    const Side b = side(in.b_base, in.b_rotation, point.point_b, in.b_shape, point.separation,
+                        -normal, (point.on_axis & 2) != 0);
     const double speculative_speed =
         in.speculative_step > 0.0 ? std::max(point.separation, 0.0) / in.speculative_step : 0.0;
     if (b_static) {
@@ -128,10 +128,20 @@ struct PairView {
     Vec3 arm, anchor, measured;
   };
   static Side side(const PoseRef& base, const Mat3& rotation, const Vec3& point, const Shape& shape,
-                   double separation, const Vec3& outward) {
+                   double separation, const Vec3& outward, bool on_axis) {
     switch (shape.kind) {
-      case ShapeKind::box:
       case ShapeKind::cylinder:
+        if (on_axis) {
+          // On its side: anchored on the axis under the contact, as a capsule's point.
+          const Vec3 over =
+              (shape.radius + 0.5 * separation) * (base.rotation.transpose() * outward);
+          const Vec3 core(
+              0.0, std::clamp((point - over).y(), -shape.half_length, shape.half_length), 0.0);
+          return {
+              .arm = base.rotation * point, .anchor = core, .measured = world_point(base, core)};
+        }
+        [[fallthrough]];
+      case ShapeKind::box:
       case ShapeKind::hull:
         return {.arm = rotation * point, .anchor = point, .measured = world_point(base, point)};
       case ShapeKind::sphere:

@@ -1,6 +1,7 @@
 #include "physics/pair_contact.hpp"
 
 #include "physics/capsule_contact.hpp"
+#include "physics/convex_manifold.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +32,7 @@ PairManifold swapped(PairManifold m) {
   for (int k = 0; k < m.count; ++k) {
     PairPoint& p = m.points[static_cast<std::size_t>(k)];
     std::swap(p.point_a, p.point_b);
+    p.on_axis = static_cast<std::uint8_t>((p.on_axis & 1) << 1 | (p.on_axis & 2) >> 1);
   }
   return m;
 }
@@ -209,17 +211,6 @@ PairManifold hull_sphere_manifold(const ShapePose& hull, const ShapePose& sphere
   return one_point(hull, sphere, normal, at, gap, feature);
 }
 
-bool pair_is_built(ShapeKind a, ShapeKind b) {
-  if (a == ShapeKind::hull || b == ShapeKind::hull) {
-    return a == ShapeKind::sphere || b == ShapeKind::sphere;
-  }
-  const auto solid = [](ShapeKind k) {
-    return k == ShapeKind::box || k == ShapeKind::capsule || k == ShapeKind::cylinder;
-  };
-  const bool cylinder = a == ShapeKind::cylinder || b == ShapeKind::cylinder;
-  return !(cylinder && solid(a) && solid(b));
-}
-
 double pair_separation(const ShapePose& a, const ShapePose& b, double margin) {
   if (a.shape->kind == ShapeKind::box && b.shape->kind == ShapeKind::box) {
     return box_box_axis({a.position, a.rotation, a.shape->half_size},
@@ -244,18 +235,28 @@ PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin
   if (sa.kind == ShapeKind::sphere && sb.kind == ShapeKind::sphere) {
     return sphere_sphere_manifold(a, sa.radius, b, sb.radius, margin);
   }
-  if (!pair_is_built(sa.kind, sb.kind)) return {};
-  if (sa.kind == ShapeKind::hull) return hull_sphere_manifold(a, b, margin);
-  if (sb.kind == ShapeKind::hull) return swapped(hull_sphere_manifold(b, a, margin));
-  if (sa.kind == ShapeKind::cylinder) return cylinder_sphere_manifold(a, b, margin);
-  if (sb.kind == ShapeKind::cylinder) return swapped(cylinder_sphere_manifold(b, a, margin));
-  if (sa.kind == ShapeKind::box) {
-    const BoxPose box{a.position, a.rotation, sa.half_size};
-    return sb.kind == ShapeKind::sphere ? box_sphere_manifold(box, b, sb.radius, margin)
-                                        : box_capsule_manifold(box, b, margin);
+  const auto round = [](ShapeKind k) { return k == ShapeKind::sphere || k == ShapeKind::capsule; };
+  if (round(sa.kind) && round(sb.kind)) return round_round_manifold(a, b, margin);
+  if (sa.kind == ShapeKind::sphere ||
+      (sa.kind == ShapeKind::capsule && sb.kind == ShapeKind::box)) {
+    return swapped(pair_manifold(b, a, margin));
   }
-  if (sb.kind == ShapeKind::box) return swapped(pair_manifold(b, a, margin));
-  return round_round_manifold(a, b, margin);
+  if (sb.kind == ShapeKind::sphere) {
+    switch (sa.kind) {
+      case ShapeKind::box:
+        return box_sphere_manifold({a.position, a.rotation, sa.half_size}, b, sb.radius, margin);
+      case ShapeKind::cylinder:
+        return cylinder_sphere_manifold(a, b, margin);
+      case ShapeKind::hull:
+        return hull_sphere_manifold(a, b, margin);
+      default:
+        break;
+    }
+  }
+  if (sa.kind == ShapeKind::box && sb.kind == ShapeKind::capsule) {
+    return box_capsule_manifold({a.position, a.rotation, sa.half_size}, b, margin);
+  }
+  return convex_manifold(a, b, margin);
 }
 
 }  // namespace tumble::physics

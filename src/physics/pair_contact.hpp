@@ -1,7 +1,8 @@
 // The contact of two bodies of any shapes (narrow phase): the manifold of a pair, by the pair of
-// shapes — two boxes by the separating-axis test (physics/box_box.hpp), a sphere and a box or two
-// spheres in closed form, a capsule with anything by its segment (physics/capsule_contact.hpp).
-// Pure geometry, as box_box.hpp.
+// shapes — two boxes by the separating-axis test (physics/box_box.hpp); a sphere with a sphere, a
+// box, a cylinder or a hull in closed form; a capsule with a sphere, a capsule or a box by its
+// segment (physics/capsule_contact.hpp); any other pair by GJK and EPA with a manifold builder
+// (physics/convex_manifold.hpp). Pure geometry, as box_box.hpp.
 #pragma once
 
 #include "physics/box_box.hpp"
@@ -60,10 +61,5 @@ PairManifold cylinder_sphere_manifold(const ShapePose& cylinder, const ShapePose
 // hull's faces (on a face, an edge or a corner; the feature names which) to the centre, or, with
 // the centre inside, out of the face it is nearest.
 PairManifold hull_sphere_manifold(const ShapePose& hull, const ShapePose& sphere, double margin);
-
-// Whether pair_manifold finds the contact of two shapes of these kinds. Not yet: a cylinder with
-// a box, a capsule or a cylinder, and a hull with anything but a sphere (pair_manifold gives no
-// contact; a scene with such a pair is refused).
-bool pair_is_built(ShapeKind a, ShapeKind b);
 
 }  // namespace tumble::physics

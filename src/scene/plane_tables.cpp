@@ -210,24 +210,4 @@ void read_planes(TableReader& root, Scene& scene) {
   refuse_bodies_inside(root, scene);
 }
 
-void refuse_unbuilt_pairs(const TableReader& root, const Scene& scene) {
-  if (!scene.physics.contact.collide_bodies) return;
-  const toml::array& bodies = *root.table().get("bodies")->as_array();
-  for (std::size_t a = 0; a < scene.bodies.size(); ++a) {
-    const BodySpec& first = scene.bodies[a];
-    if (!first.collide) continue;
-    const physics::ShapeKind kind = physics_shape(first).kind;
-    for (std::size_t b = a + 1; b < scene.bodies.size(); ++b) {
-      const BodySpec& second = scene.bodies[b];
-      if (!second.collide || (first.is_static && second.is_static)) continue;
-      if (physics::pair_is_built(kind, physics_shape(second).kind)) continue;
-      TableReader(*bodies[a].as_table(), "bodies[" + std::to_string(a) + "]", root.file())
-          .fail("shape", "the contact of bodies " + in_quotes(first.name) + " and " +
-                             in_quotes(second.name) +
-                             " is not built yet: a cylinder or a hull touches planes and spheres "
-                             "only (give one of them `collide = false`)");
-    }
-  }
-}
-
 }  // namespace tumble::scene::detail

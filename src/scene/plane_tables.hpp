@@ -22,8 +22,5 @@ void read_planes(TableReader& root, Scene& scene);
 // Refuses two colliding bodies whose boxes overlap at the start, naming both. Needs scene.bodies
 // and scene.physics read.
 void refuse_overlapping_bodies(const TableReader& root, const Scene& scene);
-// Refuses, at the first one's `shape`, two colliding bodies whose shapes' contact is not built yet
-// (physics::pair_is_built: a cylinder with a box, a capsule or a cylinder).
-void refuse_unbuilt_pairs(const TableReader& root, const Scene& scene);
 
 }  // namespace tumble::scene::detail

@@ -414,7 +414,6 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     fail_on_dt(what);
   }
   read_planes(in, scene);
-  refuse_unbuilt_pairs(in, scene);
   refuse_overlapping_bodies(in, scene);
   read_render_tables(in, scene);
   read_overlays(in, scene);
