@@ -160,7 +160,9 @@ bool grow_to_tetrahedron(const ShapePose& a, const ShapePose& b, Simplex& s) {
   return true;
 }
 
-constexpr int kMostVertices = 4 + kMostIterations;
+// EPA adds a corner a round; a hull's difference with another may need many.
+constexpr int kMostExpansions = 128;
+constexpr int kMostVertices = 4 + kMostExpansions;
 constexpr int kMostFaces = 2 * kMostVertices;
 
 struct Face {
@@ -178,7 +180,28 @@ Face make_face(const std::array<Vertex, kMostVertices>& v, int i, int j, int k) 
   return {{i, j, k}, n, n.dot(v[static_cast<std::size_t>(i)].w)};
 }
 
-// The expanding polytope algorithm from a tetrahedron holding the origin.
+// The depth, normal and deepest points that a face of the polytope gives: the origin's projection
+// on it, by its barycentric weights.
+CoreDistance through(const std::array<Vertex, kMostVertices>& v, const Face& face) {
+  const Vertex& p0 = v[static_cast<std::size_t>(face.corner[0])];
+  const Vertex& p1 = v[static_cast<std::size_t>(face.corner[1])];
+  const Vertex& p2 = v[static_cast<std::size_t>(face.corner[2])];
+  const Vec3 x = face.distance * face.normal;
+  const double whole = (p1.w - p0.w).cross(p2.w - p0.w).dot(face.normal);
+  const double l1 = (x - p0.w).cross(p2.w - p0.w).dot(face.normal) / whole;
+  const double l2 = (p1.w - p0.w).cross(x - p0.w).dot(face.normal) / whole;
+  const double l0 = 1.0 - l1 - l2;
+  return {.distance = -face.distance,
+          .normal = face.normal,
+          .on_a = l0 * p0.a + l1 * p1.a + l2 * p2.a,
+          .on_b = l0 * p0.b + l1 * p1.b + l2 * p2.b};
+}
+
+// The expanding polytope algorithm from a tetrahedron holding the origin: its face nearest the
+// origin, grown towards until the difference's support along it is no farther (within
+// kTolerance). Should round-off turn a new face inwards (nearer the origin than the face it grew
+// from, which exact arithmetic never does), or the corners run out, the last good face is the
+// answer: its depth is then short of the true one.
 CoreDistance expand(const ShapePose& a, const ShapePose& b, const Simplex& s) {
   std::array<Vertex, kMostVertices> v;
   int vertices = 4;
@@ -191,28 +214,27 @@ CoreDistance expand(const ShapePose& a, const ShapePose& b, const Simplex& s) {
        {std::array<int, 3>{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}) {
     faces[static_cast<std::size_t>(count++)] = make_face(v, f[0], f[1], f[2]);
   }
-  int best = 0;
-  for (int iteration = 0;; ++iteration) {
-    best = 0;
+  std::array<std::array<int, 2>, kMostFaces> horizon;
+  std::array<bool, kMostFaces> seen;
+  while (true) {
+    int best = 0;
     for (int f = 1; f < count; ++f) {
       if (faces[static_cast<std::size_t>(f)].distance <
           faces[static_cast<std::size_t>(best)].distance) {
         best = f;
       }
     }
-    const Face& closest = faces[static_cast<std::size_t>(best)];
-    if (iteration >= kMostIterations || vertices == kMostVertices) break;
+    const Face closest = faces[static_cast<std::size_t>(best)];
+    if (vertices == kMostVertices) return through(v, closest);
     const Vertex w = support_vertex(a, b, closest.normal);
-    if (!(w.w.dot(closest.normal) - closest.distance > kTolerance)) break;
-    // The faces the new point sees go; the edges between them and the rest (the horizon) each
-    // make a face with it.
-    std::array<std::array<int, 2>, kMostFaces> horizon;
+    if (!(w.w.dot(closest.normal) - closest.distance > kTolerance)) return through(v, closest);
+    // The faces the new point sees go (those it lies in the plane of, to within the tolerance,
+    // stay); the edges between them and the rest (the horizon) each make a face with it.
     int edges = 0;
-    std::array<bool, kMostFaces> seen{};
     for (int f = 0; f < count; ++f) {
       const Face& face = faces[static_cast<std::size_t>(f)];
       const Vec3& corner = v[static_cast<std::size_t>(face.corner[0])].w;
-      seen[static_cast<std::size_t>(f)] = face.normal.dot(w.w - corner) > 0.0;
+      seen[static_cast<std::size_t>(f)] = face.normal.dot(w.w - corner) > kTolerance;
       if (!seen[static_cast<std::size_t>(f)]) continue;
       for (int e = 0; e < 3; ++e) {
         const std::array<int, 2> edge{face.corner[static_cast<std::size_t>(e)],
@@ -237,30 +259,17 @@ CoreDistance expand(const ShapePose& a, const ShapePose& b, const Simplex& s) {
         faces[static_cast<std::size_t>(kept++)] = faces[static_cast<std::size_t>(f)];
       }
     }
-    if (kept + edges > kMostFaces) break;  // (cannot happen: a polytope of V corners has ≤ 2V − 4)
+    if (kept + edges > kMostFaces) return through(v, closest);  // (a polytope has ≤ 2V − 4)
     v[static_cast<std::size_t>(vertices)] = w;
     for (int h = 0; h < edges; ++h) {
-      faces[static_cast<std::size_t>(kept++)] =
-          make_face(v, horizon[static_cast<std::size_t>(h)][0],
-                    horizon[static_cast<std::size_t>(h)][1], vertices);
+      const Face face = make_face(v, horizon[static_cast<std::size_t>(h)][0],
+                                  horizon[static_cast<std::size_t>(h)][1], vertices);
+      if (face.distance < closest.distance - kTolerance) return through(v, closest);
+      faces[static_cast<std::size_t>(kept++)] = face;
     }
     ++vertices;
     count = kept;
   }
-  const Face& face = faces[static_cast<std::size_t>(best)];
-  const Vertex& p0 = v[static_cast<std::size_t>(face.corner[0])];
-  const Vertex& p1 = v[static_cast<std::size_t>(face.corner[1])];
-  const Vertex& p2 = v[static_cast<std::size_t>(face.corner[2])];
-  // The origin's projection on the face, by its barycentric weights.
-  const Vec3 x = face.distance * face.normal;
-  const double whole = (p1.w - p0.w).cross(p2.w - p0.w).dot(face.normal);
-  const double l1 = (x - p0.w).cross(p2.w - p0.w).dot(face.normal) / whole;
-  const double l2 = (p1.w - p0.w).cross(x - p0.w).dot(face.normal) / whole;
-  const double l0 = 1.0 - l1 - l2;
-  return {.distance = -face.distance,
-          .normal = face.normal,
-          .on_a = l0 * p0.a + l1 * p1.a + l2 * p2.a,
-          .on_b = l0 * p0.b + l1 * p1.b + l2 * p2.b};
 }
 
 }  // namespace
