@@ -99,14 +99,31 @@ void add_plane(BulletWorld& bullet, const physics::Plane& plane) {
 }
 
 // The body's shape in Bullet: a btBoxShape, a btSphereShape for a ball (its radius is all
-// margin: it collides as the sphere given), or a btCapsuleShape (along y; its height the length
-// between its end centres, as tumble's).
+// margin: it collides as the sphere given), a btCapsuleShape (along y; its height the length
+// between its end centres, as tumble's), a btCylinderShape (along y; its margin inside, as a
+// box's), or a btConvexHullShape of the hull's corners (body frame). A hull's margin lies outside
+// its corners: 5 mm here, where Bullet's default 4 cm would grow a 0.2 m hull by 40 %.
 std::unique_ptr<btCollisionShape> bullet_shape(const PileBox& box) {
-  if (box.length > 0.0) {
-    return std::make_unique<btCapsuleShape>(static_cast<btScalar>(box.radius),
-                                            static_cast<btScalar>(box.length));
+  switch (box.kind) {
+    case PileKind::capsule:
+      return std::make_unique<btCapsuleShape>(static_cast<btScalar>(box.radius),
+                                              static_cast<btScalar>(box.length));
+    case PileKind::ball:
+      return std::make_unique<btSphereShape>(static_cast<btScalar>(box.radius));
+    case PileKind::cylinder:
+      return std::make_unique<btCylinderShape>(to_bullet(0.5 * box.size));
+    case PileKind::hull: {
+      auto shape = std::make_unique<btConvexHullShape>();
+      for (const physics::Vec3& corner : box.hull->hull->vertices) {
+        shape->addPoint(to_bullet(corner), false);
+      }
+      shape->recalcLocalAabb();
+      shape->setMargin(static_cast<btScalar>(0.005));
+      return shape;
+    }
+    case PileKind::box:
+      break;
   }
-  if (box.radius > 0.0) return std::make_unique<btSphereShape>(static_cast<btScalar>(box.radius));
   const physics::Vec3 half_size = 0.5 * box.size;  // m
   auto shape = std::make_unique<btBoxShape>(to_bullet(half_size));
   // btBoxShape keeps its 0.04 m margin inside the box: it stores half extents minus the margin

@@ -82,7 +82,7 @@ std::string summary(int bodies, std::uint64_t seed, const Pile& pile, PileShapes
                 "%.2f, bin %.0f x %.0f m, dt 1/%.0f s, %d steps",
                 bodies, pile_shapes_name(shapes), static_cast<unsigned long long>(seed),
                 shapes == PileShapes::balls   ? "diameters"
-                : shapes == PileShapes::mixed ? "boxes, balls and capsules in turn, edges"
+                : shapes == PileShapes::mixed ? "boxes, balls, capsules, cylinders and hulls in turn, edges"
                                               : "edges",
                 kMinEdge, kMaxEdge, kDensity, kRestitution, kFriction, 2 * kBinHalfWidth,
                 2 * kBinHalfWidth, 1.0 / kStep, pile.steps);
@@ -118,20 +118,49 @@ Pile make_pile(int bodies, std::uint64_t seed, double seconds, PileShapes shapes
     const double x = random.uniform(kMinEdge, kMaxEdge);
     const double y = random.uniform(kMinEdge, kMaxEdge);
     const double z = random.uniform(kMinEdge, kMaxEdge);
-    const int kind = shapes == PileShapes::mixed ? i % 3 : shapes == PileShapes::balls ? 1 : 0;
-    if (kind == 1) {  // the same draws: a ball of the first edge's diameter
-      box.radius = 0.5 * x;
-      box.size = Vec3::Constant(x);
-      box.mass = kDensity * std::numbers::pi / 6.0 * x * x * x;
-    } else if (kind == 2) {  // a capsule: diameter x / 2, length y between its end centres
-      box.radius = 0.25 * x;
-      box.length = y;
-      box.size = Vec3(2.0 * box.radius, y + 2.0 * box.radius, 2.0 * box.radius);
-      const double r = box.radius;
-      box.mass = kDensity * std::numbers::pi * r * r * (y + 4.0 / 3.0 * r);
-    } else {
-      box.size = Vec3(x, y, z);
-      box.mass = kDensity * x * y * z;
+    box.kind = shapes == PileShapes::mixed   ? static_cast<PileKind>(i % 5)
+               : shapes == PileShapes::balls ? PileKind::ball
+                                             : PileKind::box;
+    switch (box.kind) {
+      case PileKind::ball:  // a ball of the first edge's diameter
+        box.radius = 0.5 * x;
+        box.size = Vec3::Constant(x);
+        box.mass = kDensity * std::numbers::pi / 6.0 * x * x * x;
+        break;
+      case PileKind::capsule: {  // diameter x / 2, length y between its end centres
+        box.radius = 0.25 * x;
+        box.length = y;
+        box.size = Vec3(2.0 * box.radius, y + 2.0 * box.radius, 2.0 * box.radius);
+        const double r = box.radius;
+        box.mass = kDensity * std::numbers::pi * r * r * (y + 4.0 / 3.0 * r);
+        break;
+      }
+      case PileKind::cylinder:  // diameter x, length y
+        box.radius = 0.5 * x;
+        box.length = y;
+        box.size = Vec3(x, y, x);
+        box.mass = kDensity * std::numbers::pi * box.radius * box.radius * y;
+        break;
+      case PileKind::hull: {  // the box's cuboctahedron: 5/6 of its volume
+        box.size = Vec3(x, y, z);
+        box.mass = kDensity * 5.0 / 6.0 * x * y * z;
+        const Vec3 h = 0.5 * box.size;
+        std::vector<Vec3> middles;
+        for (const double s : {-1.0, 1.0}) {
+          for (const double t : {-1.0, 1.0}) {
+            middles.push_back(Vec3(s * h.x(), t * h.y(), 0.0));
+            middles.push_back(Vec3(s * h.x(), 0.0, t * h.z()));
+            middles.push_back(Vec3(0.0, s * h.y(), t * h.z()));
+          }
+        }
+        box.hull = std::make_shared<const physics::HullBody>(
+            physics::hull_body(middles, box.mass).value());
+        break;
+      }
+      case PileKind::box:
+        box.size = Vec3(x, y, z);
+        box.mass = kDensity * x * y * z;
+        break;
     }
     box.position = cell_centre(i);
     box.orientation = random_orientation(random);
@@ -153,17 +182,35 @@ const char* pile_shapes_name(PileShapes shapes) {
 }
 
 physics::Shape shape_of(const PileBox& box) {
-  if (box.length > 0.0) return physics::capsule_shape(box.radius, 0.5 * box.length);
-  return box.radius > 0.0 ? physics::sphere_shape(box.radius) : physics::box_shape(0.5 * box.size);
+  switch (box.kind) {
+    case PileKind::ball:
+      return physics::sphere_shape(box.radius);
+    case PileKind::capsule:
+      return physics::capsule_shape(box.radius, 0.5 * box.length);
+    case PileKind::cylinder:
+      return physics::cylinder_shape(box.radius, 0.5 * box.length);
+    case PileKind::hull:
+      return physics::hull_shape(box.hull->hull);
+    case PileKind::box:
+      break;
+  }
+  return physics::box_shape(0.5 * box.size);
 }
 
 physics::BodyConstants constants_of(const PileBox& box) {
-  if (box.length > 0.0) {
-    return physics::constants_from_moments(
-        box.mass, physics::capsule_inertia(box.mass, box.radius, box.length).diagonal());
-  }
-  if (box.radius > 0.0) {
-    return physics::sphere_constants(box.mass, box.radius);
+  switch (box.kind) {
+    case PileKind::ball:
+      return physics::sphere_constants(box.mass, box.radius);
+    case PileKind::capsule:
+      return physics::constants_from_moments(
+          box.mass, physics::capsule_inertia(box.mass, box.radius, box.length).diagonal());
+    case PileKind::cylinder:
+      return physics::constants_from_moments(
+          box.mass, physics::cylinder_inertia(box.mass, box.radius, box.length).diagonal());
+    case PileKind::hull:
+      return box.hull->constants;
+    case PileKind::box:
+      break;
   }
   return physics::box_constants(box.mass, box.size);
 }

@@ -5,11 +5,13 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "physics/box_box.hpp"
+#include "physics/hull_shape.hpp"
 #include "physics/broad_phase.hpp"
 #include "physics/rigid_body.hpp"
 #include "physics/shapes.hpp"
@@ -17,19 +19,26 @@
 namespace tumble::bench {
 
 // What a pile is poured of: boxes, balls (spheres of the same size range: diameters 0.2 to
-// 0.6 m), or mixed: a box, a ball and a capsule in turn (the capsule's diameter half the first
-// edge drawn, its length between its end centres the second).
+// 0.6 m), or mixed: a box, a ball, a capsule, a cylinder and a hull in turn, each from the same
+// three edges drawn (the capsule's diameter half the first edge, its length between its end
+// centres the second; the cylinder's diameter the first, its length the second; the hull the
+// cuboctahedron of the box: the hull of its edges' midpoints, 12 corners, 14 faces).
 enum class PileShapes { boxes, balls, mixed };
 // Their names on command lines and in the pile's summary.
 inline const std::map<std::string, PileShapes> kPileShapesByName = {
     {"boxes", PileShapes::boxes}, {"balls", PileShapes::balls}, {"mixed", PileShapes::mixed}};
 const char* pile_shapes_name(PileShapes shapes);
 
-// One box (or ball) at the start of the pour.
+enum class PileKind : std::uint8_t { box, ball, capsule, cylinder, hull };
+
+// One body at the start of the pour.
 struct PileBox {
-  physics::Vec3 size;         // edge lengths along the body axes (m); a ball's or capsule's box
-  double radius = 0.0;        // m: a ball's or a capsule's; 0 for a box
-  double length = 0.0;        // m: a capsule's, between its end centres (0: not a capsule)
+  PileKind kind = PileKind::box;
+  physics::Vec3 size;         // edge lengths along the body axes (m); the box another shape fits
+  double radius = 0.0;        // m: a ball's, a capsule's or a cylinder's
+  double length = 0.0;        // m: a capsule's (between its end centres) or a cylinder's
+  // A hull's corners and constants (body frame: its centre of mass, its principal axes).
+  std::shared_ptr<const physics::HullBody> hull;
   double mass = 0.0;          // kg
   physics::Vec3 position;     // centre of mass, world frame (m)
   physics::Quat orientation;  // body-to-world rotation, unit, (w, x, y, z)

@@ -74,11 +74,12 @@ TEST(Pile, BoxesHaveTheStatedSizesMassesAndMotion) {
   EXPECT_GT(largest, 0.59);
 }
 
-// A mixed pile: a box, a ball and a capsule in turn, each of the same draws as the box pile's, its
-// mass from its own volume (a capsule's: π r² l + 4/3 π r³); a capsule reaches at most half the
-// drawn box's x edge past its y edge, at most 0.9 m end to end, inside the 1.04 m diagonal of the
-// largest box its start cell is made for.
-TEST(Pile, AMixedPileIsBoxesBallsAndCapsulesInTurn) {
+// A mixed pile: a box, a ball, a capsule, a cylinder and a hull in turn, each of the same draws
+// as the box pile's, its mass from its own volume (a capsule's: π r² l + 4/3 π r³; a cylinder's
+// π r² l; the hull's, the box's cuboctahedron, 5/6 of the box's); a capsule reaches at most half
+// the drawn box's x edge past its y edge, at most 0.9 m end to end, inside the 1.04 m diagonal of
+// the largest box its start cell is made for; the others fit in the drawn box.
+TEST(Pile, AMixedPileIsEveryShapeInTurn) {
   const Pile boxes = make_pile(300, 4);
   const Pile mixed = make_pile(300, 4, 20.0, PileShapes::mixed);
   ASSERT_EQ(mixed.boxes.size(), 300u);
@@ -86,19 +87,42 @@ TEST(Pile, AMixedPileIsBoxesBallsAndCapsulesInTurn) {
     const PileBox& box = mixed.boxes[i];
     const PileBox& drawn = boxes.boxes[i];
     EXPECT_EQ(box.position, drawn.position);
-    if (i % 3 == 0) {
-      EXPECT_EQ(box.radius, 0.0);
-      EXPECT_EQ(box.size, drawn.size);
-    } else if (i % 3 == 1) {
-      EXPECT_EQ(box.radius, 0.5 * drawn.size.x());
-      EXPECT_EQ(box.length, 0.0);
-    } else {
-      const double r = 0.25 * drawn.size.x(), l = drawn.size.y();
-      EXPECT_EQ(box.radius, r);
-      EXPECT_EQ(box.length, l);
-      EXPECT_NEAR(box.mass, 500.0 * std::numbers::pi * r * r * (l + 4.0 / 3.0 * r), 1e-12);
-      EXPECT_LE(box.size.y(), drawn.size.y() + drawn.size.x() / 2.0 + 1e-15);
-      EXPECT_EQ(shape_of(box).kind, physics::ShapeKind::capsule);
+    const Vec3& d = drawn.size;
+    switch (i % 5) {
+      case 0:
+        EXPECT_EQ(shape_of(box).kind, physics::ShapeKind::box);
+        EXPECT_EQ(box.size, d);
+        break;
+      case 1:
+        EXPECT_EQ(shape_of(box).kind, physics::ShapeKind::sphere);
+        EXPECT_EQ(box.radius, 0.5 * d.x());
+        break;
+      case 2: {
+        const double r = 0.25 * d.x(), l = d.y();
+        EXPECT_EQ(shape_of(box).kind, physics::ShapeKind::capsule);
+        EXPECT_EQ(box.radius, r);
+        EXPECT_EQ(box.length, l);
+        EXPECT_NEAR(box.mass, 500.0 * std::numbers::pi * r * r * (l + 4.0 / 3.0 * r), 1e-12);
+        EXPECT_LE(box.size.y(), d.y() + d.x() / 2.0 + 1e-15);
+        break;
+      }
+      case 3: {
+        const double r = 0.5 * d.x(), l = d.y();
+        EXPECT_EQ(shape_of(box).kind, physics::ShapeKind::cylinder);
+        EXPECT_NEAR(box.mass, 500.0 * std::numbers::pi * r * r * l, 1e-12);
+        EXPECT_NEAR(constants_of(box).inertia.y(), 0.5 * box.mass * r * r, 1e-15);
+        break;
+      }
+      default: {
+        EXPECT_EQ(shape_of(box).kind, physics::ShapeKind::hull);
+        ASSERT_NE(box.hull, nullptr);
+        EXPECT_EQ(box.hull->hull->vertices.size(), 12u);
+        EXPECT_EQ(box.hull->hull->faces.size(), 14u);
+        EXPECT_NEAR(box.mass, 500.0 * 5.0 / 6.0 * d.x() * d.y() * d.z(), 1e-12);
+        EXPECT_LT(box.hull->centre.norm(), 1e-12);
+        for (const Vec3& c : box.hull->hull->vertices) EXPECT_LE(c.norm(), 0.5 * d.norm());
+        break;
+      }
     }
   }
   EXPECT_NE(mixed.summary.find("mixed"), std::string::npos) << mixed.summary;
@@ -189,6 +213,7 @@ TEST(Pile, DepthIsTheDeepestOverlapOfThePoses) {
       {.position = Vec3(3.05 - std::sqrt(0.5), 1.0, 1.5), .rotation = turned, .half_size = half});
   EXPECT_NEAR(depth(pile, poses), 0.05, 1e-12);
   // The fourth a ball of radius 0.5 instead, 0.1 m into the third's top face.
+  pile.boxes[3].kind = PileKind::ball;
   pile.boxes[3].radius = 0.5;
   poses[3] = {.position = Vec3(0.0, 1.38, -1.5), .half_size = half};
   EXPECT_NEAR(depth(pile, poses), 0.1, 1e-12);
