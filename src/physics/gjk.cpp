@@ -1,14 +1,16 @@
 #include "physics/gjk.hpp"
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <limits>
 
 namespace tumble::physics {
 namespace {
 
-// GJK stops when the distance is known to within this (m), EPA when the depth is.
+// GJK stops when the distance is known to within kSettled (m), EPA when the depth is (a curved
+// cylinder's needs more rounds the closer: 15 on average at 1e-8 m in the mixed pour, 20 at
+// 1e-10). kTolerance is what tells points apart: a new corner from the simplex's, a face's plane.
+constexpr double kSettled = 1e-8;
 constexpr double kTolerance = 1e-10;
 constexpr int kMostIterations = 64;
 
@@ -68,34 +70,39 @@ bool affine_nearest(const std::array<const Vec3*, 4>& p, int k, std::array<doubl
   return true;
 }
 
-// Reduces the simplex to the fewest of its points whose hull holds its point nearest the origin
-// (Johnson's subset test, smaller subsets first) and returns that point.
+// Reduces the simplex, its newest point last, to the fewest of its points whose hull holds its
+// point nearest the origin, and returns that point. Johnson's subset test, over the subsets that
+// hold the newest point (the point nearest the origin moved towards it: it is in the answer),
+// smaller subsets first.
 Vec3 reduce(Simplex& s) {
+  static constexpr std::array<std::array<int, 8>, 5> kSubsets{{{0, 0, 0, 0, 0, 0, 0, 0},
+                                                               {1, 0, 0, 0, 0, 0, 0, 0},
+                                                               {2, 3, 0, 0, 0, 0, 0, 0},
+                                                               {4, 5, 6, 7, 0, 0, 0, 0},
+                                                               {8, 9, 10, 12, 11, 13, 14, 15}}};
   double best = std::numeric_limits<double>::infinity();
-  int best_mask = 1;
+  int best_mask = 1 << (s.n - 1);
   std::array<double, 4> best_lambda{1.0, 0.0, 0.0, 0.0};
-  for (int size = 1; size <= s.n; ++size) {
-    for (int mask = 1; mask < (1 << s.n); ++mask) {
-      if (std::popcount(static_cast<unsigned>(mask)) != size) continue;
-      std::array<const Vec3*, 4> p{};
-      int k = 0;
-      for (int i = 0; i < s.n; ++i) {
-        if (mask & (1 << i)) p[static_cast<std::size_t>(k++)] = &s.v[static_cast<std::size_t>(i)].w;
-      }
-      std::array<double, 4> lambda{1.0, 0.0, 0.0, 0.0};
-      if (k > 1 && !affine_nearest(p, k, lambda)) continue;
-      bool inside = true;
-      Vec3 x = Vec3::Zero();
-      for (int i = 0; i < k; ++i) {
-        inside = inside && lambda[static_cast<std::size_t>(i)] > 0.0;
-        x += lambda[static_cast<std::size_t>(i)] * *p[static_cast<std::size_t>(i)];
-      }
-      if (!inside) continue;
-      if (x.squaredNorm() < best) {
-        best = x.squaredNorm();
-        best_mask = mask;
-        best_lambda = lambda;
-      }
+  for (int m = 0; m < (1 << (s.n - 1)); ++m) {
+    const int mask = kSubsets[static_cast<std::size_t>(s.n)][static_cast<std::size_t>(m)];
+    std::array<const Vec3*, 4> p{};
+    int k = 0;
+    for (int i = 0; i < s.n; ++i) {
+      if (mask & (1 << i)) p[static_cast<std::size_t>(k++)] = &s.v[static_cast<std::size_t>(i)].w;
+    }
+    std::array<double, 4> lambda{1.0, 0.0, 0.0, 0.0};
+    if (k > 1 && !affine_nearest(p, k, lambda)) continue;
+    bool inside = true;
+    Vec3 x = Vec3::Zero();
+    for (int i = 0; i < k; ++i) {
+      inside = inside && lambda[static_cast<std::size_t>(i)] > 0.0;
+      x += lambda[static_cast<std::size_t>(i)] * *p[static_cast<std::size_t>(i)];
+    }
+    if (!inside) continue;
+    if (x.squaredNorm() < best) {
+      best = x.squaredNorm();
+      best_mask = mask;
+      best_lambda = lambda;
     }
   }
   Simplex out;
@@ -199,7 +206,7 @@ CoreDistance through(const std::array<Vertex, kMostVertices>& v, const Face& fac
 
 // The expanding polytope algorithm from a tetrahedron holding the origin: its face nearest the
 // origin, grown towards until the difference's support along it is no farther (within
-// kTolerance). Should round-off turn a new face inwards (nearer the origin than the face it grew
+// kSettled). Should round-off turn a new face inwards (nearer the origin than the face it grew
 // from, which exact arithmetic never does), or the corners run out, the last good face is the
 // answer: its depth is then short of the true one.
 CoreDistance expand(const ShapePose& a, const ShapePose& b, const Simplex& s) {
@@ -227,7 +234,7 @@ CoreDistance expand(const ShapePose& a, const ShapePose& b, const Simplex& s) {
     const Face closest = faces[static_cast<std::size_t>(best)];
     if (vertices == kMostVertices) return through(v, closest);
     const Vertex w = support_vertex(a, b, closest.normal);
-    if (!(w.w.dot(closest.normal) - closest.distance > kTolerance)) return through(v, closest);
+    if (!(w.w.dot(closest.normal) - closest.distance > kSettled)) return through(v, closest);
     // The faces the new point sees go (those it lies in the plane of, to within the tolerance,
     // stay); the edges between them and the rest (the horizon) each make a face with it.
     int edges = 0;
@@ -289,7 +296,7 @@ Vec3 core_support(const ShapePose& pose, const Vec3& direction) {
       break;
     case ShapeKind::cylinder: {
       local.y() = d.y() >= 0.0 ? shape.half_length : -shape.half_length;
-      const double across = std::hypot(d.x(), d.z());
+      const double across = std::sqrt(d.x() * d.x() + d.z() * d.z());
       if (across > 0.0) {
         local.x() = shape.radius * d.x() / across;
         local.z() = shape.radius * d.z() / across;
@@ -323,7 +330,7 @@ CoreDistance core_distance(const ShapePose& a, const ShapePose& b) {
   for (int iteration = 0; !overlap && iteration < kMostIterations; ++iteration) {
     const Vertex w = support_vertex(a, b, -v);
     // |v| bounds the distance from above, v·w / |v| from below.
-    if (vv - v.dot(w.w) <= kTolerance * std::sqrt(vv)) break;
+    if (vv - v.dot(w.w) <= kSettled * std::sqrt(vv)) break;
     bool known = false;
     for (int i = 0; i < s.n; ++i) known = known || s.v[static_cast<std::size_t>(i)].w == w.w;
     if (known) break;

@@ -23,8 +23,9 @@ struct CoreDistance {
 };
 
 // The signed distance between the cores of two shapes, at least one of them a solid (a box, a
-// cylinder or a hull: the difference of the cores then has a volume). Separated, exact to about
-// 1e-10 m (polytopes: to round-off); overlapping, the depth to about 1e-10 m.
+// cylinder or a hull: the difference of the cores then has a volume). Separated or overlapping,
+// to within 1e-8 m (a curved cylinder's; polytopes' mostly to round-off), short of the true depth
+// where EPA runs out of corners (the test of random pairs: within 1e-5 m).
 CoreDistance core_distance(const ShapePose& a, const ShapePose& b);
 
 }  // namespace tumble::physics

@@ -59,7 +59,7 @@ TEST(ConvexGeometry, DistanceAndDepthOfACylinderOverABox) {
     for (const double gap : {0.05, 1e-4, -1e-4, -0.02}) {
       const ShapePose b{Vec3(0.1, 0.5 + below + gap, -0.2), turn, &can};
       const CoreDistance d = core_distance(a, b);
-      EXPECT_NEAR(d.distance, gap, 1e-9) << "tilt " << tilt << " gap " << gap;
+      EXPECT_NEAR(d.distance, gap, 1e-8) << "tilt " << tilt << " gap " << gap;
       EXPECT_NEAR((d.normal - Vec3::UnitY()).norm(), 0.0, 1e-6) << tilt << " " << gap;
       const PairManifold m = convex_manifold(a, b, 0.1);
       ASSERT_GE(m.count, 1);
