@@ -356,13 +356,14 @@ void reduce_to_four(Found4& found, const Vec3& normal) {
 
 }  // namespace
 
-PairManifold convex_manifold(const ShapePose& a, const ShapePose& b, double margin) {
+PairManifold convex_manifold(const ShapePose& a, const ShapePose& b, double margin,
+                             const Vec3& guess) {
   const double ra = rounding(*a.shape), rb = rounding(*b.shape);
   if (!((b.position - a.position).norm() - bounding_radius(*a.shape) - bounding_radius(*b.shape) <
         margin)) {
     return {};
   }
-  const CoreDistance core = core_distance(a, b);
+  const CoreDistance core = core_distance(a, b, guess);
   const double s = core.distance - ra - rb;
   if (!(s < margin)) return {};
   const Vec3& n = core.normal;

@@ -23,6 +23,8 @@ namespace tumble::physics {
 // The contact of two shapes whose closest features are within `margin` (m) of touching, the normal
 // from A towards B: up to four points with separation below `margin`; count 0 otherwise. Any pair
 // but two spheres or two capsules (at least one of them a box, a cylinder or a hull).
-PairManifold convex_manifold(const ShapePose& a, const ShapePose& b, double margin);
+// `guess`: the normal the pair had lately (core_distance's), or zero.
+PairManifold convex_manifold(const ShapePose& a, const ShapePose& b, double margin,
+                             const Vec3& guess = Vec3::Zero());
 
 }  // namespace tumble::physics

@@ -318,10 +318,12 @@ Vec3 core_support(const ShapePose& pose, const Vec3& direction) {
   return pose.position + pose.rotation * local;
 }
 
-CoreDistance core_distance(const ShapePose& a, const ShapePose& b) {
+CoreDistance core_distance(const ShapePose& a, const ShapePose& b, const Vec3& guess) {
   Simplex s;
-  // The difference of the centres is a point of A − B (each centre lies in its core).
-  s.v[0] = {a.position - b.position, a.position, b.position};
+  // The support points along the guess, or the difference of the centres: a point of A − B (each
+  // centre lies in its core).
+  s.v[0] = guess.squaredNorm() > 0.0 ? support_vertex(a, b, guess)
+                                     : Vertex{a.position - b.position, a.position, b.position};
   s.lambda[0] = 1.0;
   s.n = 1;
   Vec3 v = s.v[0].w;

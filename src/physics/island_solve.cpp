@@ -60,7 +60,7 @@ void refind_pair(const StepContext& context, const PairRows& rows, double left) 
   const Mat3 a_rotation = a_state.rotation(), b_rotation = b_state.rotation();
   PairManifold found = pair_manifold(pose_of(a_state, a_rotation, model_a.shape),
                                      pose_of(b_state, b_rotation, model_b.shape),
-                                     kTouchingDistance + left * rows.reach);
+                                     kTouchingDistance + left * rows.reach, pair.manifold.normal);
   // A point found again keeps its impulse.
   ContactRows& solve = context.scratch.rows;
   const RowSlots at = slots_of(rows);

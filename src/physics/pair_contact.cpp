@@ -225,7 +225,8 @@ double pair_separation(const ShapePose& a, const ShapePose& b, double margin) {
   return deepest;
 }
 
-PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin) {
+PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin,
+                           const Vec3& guess) {
   const Shape& sa = *a.shape;
   const Shape& sb = *b.shape;
   if (sa.kind == ShapeKind::box && sb.kind == ShapeKind::box) {
@@ -239,7 +240,7 @@ PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin
   if (round(sa.kind) && round(sb.kind)) return round_round_manifold(a, b, margin);
   if (sa.kind == ShapeKind::sphere ||
       (sa.kind == ShapeKind::capsule && sb.kind == ShapeKind::box)) {
-    return swapped(pair_manifold(b, a, margin));
+    return swapped(pair_manifold(b, a, margin, -guess));
   }
   if (sb.kind == ShapeKind::sphere) {
     switch (sa.kind) {
@@ -256,7 +257,7 @@ PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin
   if (sa.kind == ShapeKind::box && sb.kind == ShapeKind::capsule) {
     return box_capsule_manifold({a.position, a.rotation, sa.half_size}, b, margin);
   }
-  return convex_manifold(a, b, margin);
+  return convex_manifold(a, b, margin, guess);
 }
 
 }  // namespace tumble::physics

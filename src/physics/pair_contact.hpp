@@ -21,7 +21,10 @@ struct ShapePose {
 // kMaxManifoldPoints points with separation below `margin`, the normal from A towards B; count 0
 // otherwise. A sphere touches at one point, the middle of the gap (or overlap) between the two
 // surfaces along the normal.
-PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin);
+// `guess`: the normal the pair had lately (from A towards B), or zero; only pairs without a closed
+// form use it (convex_manifold.hpp), to start their search from it.
+PairManifold pair_manifold(const ShapePose& a, const ShapePose& b, double margin,
+                           const Vec3& guess = Vec3::Zero());
 
 // How far apart two shapes are (m; negative: how deep they overlap), if within `margin` of
 // touching; `margin` or more otherwise: two boxes by the separating-axis test (the axis's

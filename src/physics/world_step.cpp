@@ -145,9 +145,10 @@ void find_pairs(const StepContext& context) {
       scratch.found.push_back(pair);
       continue;
     }
-    pair.manifold = pair_manifold(pose_of(in[a], scratch.start_rotations[a], models[a].shape),
-                                  pose_of(in[b], scratch.start_rotations[b], models[b].shape),
-                                  margin + kReuseDistance);
+    pair.manifold =
+        pair_manifold(pose_of(in[a], scratch.start_rotations[a], models[a].shape),
+                      pose_of(in[b], scratch.start_rotations[b], models[b].shape),
+                      margin + kReuseDistance, before ? before->manifold.normal : Vec3::Zero());
     if (pair.manifold.count == 0) continue;
     stamp(context, margin + kReuseDistance, pair);
     if (before) {
