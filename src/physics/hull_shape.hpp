@@ -22,6 +22,9 @@ struct HullBody {
   Vec3 centre = Vec3::Zero();     // its centre of mass in the points' frame (m)
   Mat3 axes = Mat3::Identity();   // its body axes in the points' frame (columns)
   std::size_t given_corners = 0;  // the corners of the hull of all the points, before reducing
+
+  // A point given in the points' frame (m) in the body frame.
+  Vec3 body_point(const Vec3& given) const { return axes.transpose() * (given - centre); }
 };
 
 // The hull of `points` (m, any frame) as a body of `mass` (kg): an error when fewer than four of

@@ -132,6 +132,12 @@ std::vector<std::size_t> read_laws(TableReader& in, const BodySpec& body) {
   return laws;
 }
 
+// A `point` given on a hull is in the frame of its points (m), as they are; left out, the centre
+// of mass.
+physics::Vec3 on_body(TableReader& in, const BodySpec& body, const physics::Vec3& point) {
+  return body.hull && in.has("point") ? body.hull->body_point(point) : point;
+}
+
 VectorOverlay read_vector(TableReader& in, const Scene& scene) {
   VectorOverlay out;
   out.body = read_body(in, scene);
@@ -165,6 +171,7 @@ VectorOverlay read_vector(TableReader& in, const Scene& scene) {
   }
   out.point =
       vector_within(in, "point", in.optional_vector("point", out.point), sim::kMaxPosition, "m");
+  out.point = on_body(in, scene.bodies[out.body], out.point);
   out.scale = in.optional_number("scale", out.scale);
   require_positive(in, "scale", out.scale);
   out.color = in.optional_rgba("color", color);
@@ -177,6 +184,7 @@ TrailOverlay read_trail(TableReader& in, const Scene& scene) {
   out.body = read_body(in, scene);
   out.point =
       vector_within(in, "point", in.optional_vector("point", out.point), sim::kMaxPosition, "m");
+  out.point = on_body(in, scene.bodies[out.body], out.point);
   out.length = in.optional_number("length", out.length);
   if (!(out.length > 0.0 && out.length <= kMaxTrailLength)) {
     in.fail("length", "must be more than 0 and at most " + format_number(kMaxTrailLength) +

@@ -334,6 +334,16 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
       if (!table) in.fail_at((*forces)[i].source(), path, "expected a table");
       TableReader force(*table, path, file);
       body.forces.push_back(read_force(force));
+      // A hull's points on it are given in the frame of its points, as they are.
+      if (body.hull) {
+        if (auto* push = std::get_if<physics::ForceAtPoint>(&body.forces.back())) {
+          push->point = body.hull->body_point(push->point);
+        }
+        auto* spring = std::get_if<physics::Spring>(&body.forces.back());
+        if (spring && force.has("attachment")) {
+          spring->attachment = body.hull->body_point(spring->attachment);
+        }
+      }
     }
   }
   in.reject_unknown_keys();

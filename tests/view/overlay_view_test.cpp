@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 #include <variant>
 
@@ -210,6 +211,95 @@ label = "v中"
   ASSERT_EQ(warnings.size(), 1u);  // 中 once, though written twice
   EXPECT_NE(warnings[0].find("U+4E2D"), std::string::npos) << warnings[0];
   EXPECT_TRUE(missing_character_warnings(scene, nullptr).empty());
+}
+
+// Axes, vectors and trails on every shape: a ball, a capsule, a cylinder and a hull (a
+// tetrahedron turned 30° about z, its points' centre of mass at (1/4, 1/4, 1/4) of their frame),
+// spinning in place with no gravity. At the start each body's axes start at its centre; a vector
+// or trail without `point` starts at the centre of mass, and one with a `point` on the hull starts
+// where that point of the hull's own frame is, `position` + R (p − c), within 1e-12 m.
+TEST(OverlayView, AxesVectorsAndTrailsWorkOnEveryShape) {
+  using physics::Vec3;
+  const std::string text = R"(name = "shapes"
+duration = 1.0
+[physics]
+dt = 0.01
+[[bodies]]
+name = "ball"
+shape = "sphere"
+radius = 0.3
+mass = 1.0
+position = [-3.0, 0.0, 0.0]
+angular_velocity = [0.0, 1.0, 0.0]
+[[bodies]]
+name = "capsule"
+shape = "capsule"
+radius = 0.2
+length = 0.6
+mass = 1.0
+position = [-1.0, 0.0, 0.0]
+angular_velocity = [0.0, 1.0, 0.0]
+[[bodies]]
+name = "cylinder"
+shape = "cylinder"
+radius = 0.3
+length = 0.4
+mass = 1.0
+position = [1.0, 0.0, 0.0]
+angular_velocity = [0.0, 1.0, 0.0]
+[[bodies]]
+name = "hull"
+shape = "hull"
+points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+mass = 1.0
+position = [3.0, 0.0, 0.0]
+orientation = [0.9659258262890683, 0.0, 0.0, 0.25881904510252074]
+angular_velocity = [0.0, 1.0, 0.0]
+[camera]
+position = [0.0, 2.0, 9.0]
+look_at = [0.0, 0.0, 0.0]
+)";
+  std::string overlays;
+  for (const char* body : {"ball", "capsule", "cylinder", "hull"}) {
+    overlays += std::string("[[overlays]]\nkind = \"axes\"\nbody = \"") + body + "\"\n";
+    overlays += std::string("[[overlays]]\nkind = \"vector\"\nbody = \"") + body +
+                "\"\nquantity = \"angular_velocity\"\n";
+    overlays += std::string("[[overlays]]\nkind = \"trail\"\nbody = \"") + body + "\"\n";
+  }
+  overlays +=
+      "[[overlays]]\nkind = \"vector\"\nbody = \"hull\"\nquantity = \"velocity\"\n"
+      "point = [1.0, 0.0, 0.0]\n";
+  overlays += "[[overlays]]\nkind = \"trail\"\nbody = \"hull\"\npoint = [1.0, 0.0, 0.0]\n";
+  Result<scene::Scene> parsed = scene::parse_scene(text + overlays, "shapes.toml");
+  ASSERT_TRUE(parsed) << parsed.error();
+  const scene::Scene& scene = *parsed;
+  const Result<Framing> framing = frame_scene(scene, 120, [] { return false; });
+  ASSERT_TRUE(framing) << (framing ? "" : framing.error());
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  const Result<render::FrameView> view = source.view(0);
+  ASSERT_TRUE(view) << (view ? "" : view.error());
+  // Per body: three axes and one ω vector; then the hull's v at its corner.
+  ASSERT_EQ(view->arrows.size(), 4u * 4u + 1u);
+  const std::array<double, 4> x{-3.0, -1.0, 1.0, 3.0};
+  for (std::size_t body = 0; body < 4; ++body) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      const render::Arrow& arrow = view->arrows[4 * body + k];
+      EXPECT_NEAR((arrow.from - Vec3(x[body], 0.0, 0.0)).norm(), 0.0, 1e-12)
+          << "body " << body << " arrow " << k;
+    }
+    // ω along +y, 1 m long at scale 1.
+    EXPECT_NEAR((view->arrows[4 * body + 3].to - Vec3(x[body], 1.0, 0.0)).norm(), 0.0, 1e-12);
+  }
+  const Eigen::Matrix3d turn =
+      Eigen::Quaterniond(0.9659258262890683, 0.0, 0.0, 0.25881904510252074).toRotationMatrix();
+  const Vec3 corner = Vec3(3.0, 0.0, 0.0) + turn * (Vec3(1.0, 0.0, 0.0) - Vec3::Constant(0.25));
+  EXPECT_NEAR((view->arrows.back().from - corner).norm(), 0.0, 1e-12);
+  ASSERT_EQ(view->lines.size(), 5u);
+  for (std::size_t body = 0; body < 4; ++body) {
+    ASSERT_FALSE(view->lines[body].points.empty());
+    EXPECT_NEAR((view->lines[body].points.back() - Vec3(x[body], 0.0, 0.0)).norm(), 0.0, 1e-12);
+  }
+  EXPECT_NEAR((view->lines[4].points.back() - corner).norm(), 0.0, 1e-12);
 }
 
 TEST(OverlayView, OnlyWhatTheOverlaysDrawIsSetUp) {
