@@ -1,5 +1,7 @@
 #include "scene/stability_report.hpp"
 
+#include <string>
+
 #include "scene/scene_builder.hpp"
 #include "sim/contact_advice.hpp"
 #include "sim/stability.hpp"
@@ -32,6 +34,13 @@ std::vector<std::string> stability_warnings(const scene::Scene& scene) {
   std::vector<physics::Plane> planes;
   for (const scene::PlaneSpec& spec : scene.planes) planes.push_back(scene::plane(spec));
   for (const scene::BodySpec& body : scene.bodies) {
+    if (body.hull && body.hull->given_corners > body.hull->hull->vertices.size()) {
+      lines.push_back("body \"" + body.name + "\": the hull of its points has " +
+                      std::to_string(body.hull->given_corners) + " corners; tumble keeps " +
+                      std::to_string(body.hull->hull->vertices.size()) +
+                      " of them (picked farthest first), and it touches and is drawn as the "
+                      "hull of those: features between them are cut off");
+    }
     for (const sim::StepWarning& warning : body_warnings(scene, body)) {
       lines.push_back("body \"" + body.name + "\": " + warning.message);
     }

@@ -1,6 +1,7 @@
 // End-to-end tests of `tumble check` and of the same stability warnings from `tumble simulate`.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -39,6 +40,28 @@ TEST_F(CheckCommand, EveryExampleSceneIsValidWithoutWarnings) {
     EXPECT_NE(run.out.find("; 0 warnings"), std::string::npos) << run.out;
     EXPECT_EQ(run.err, "");
   }
+}
+
+// A hull of a 100-gon prism has 200 corners: tumble keeps 64, and says so.
+TEST_F(CheckCommand, SaysAHullOfManyCornersIsReduced) {
+  std::string text =
+      "duration = 1.0\n[[bodies]]\nname = \"drum\"\nshape = \"hull\"\nmass = 1.0\n"
+      "points = [";
+  for (int k = 0; k < 100; ++k) {
+    const double angle = 2.0 * 3.141592653589793 * k / 100.0;
+    for (const double y : {-0.2, 0.2}) {
+      text += (k > 0 || y > 0.0 ? ", [" : "[") + std::to_string(std::cos(angle)) + ", " +
+              std::to_string(y) + ", " + std::to_string(std::sin(angle)) + "]";
+    }
+  }
+  text += "]\n";
+  const Outcome run = tumble("check " + write("drum.toml", text).string());
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("tumble: warning: body \"drum\": the hull of its points has 200 corners; "
+                         "tumble keeps 64 of them (picked farthest first)"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("; 1 warning\n"), std::string::npos) << run.out;
 }
 
 TEST_F(CheckCommand, PrintsTheWarningsOfAValidSceneAndExitsZero) {
