@@ -431,6 +431,36 @@ TEST(Renderer, ACapsuleAndACylinderHaveTheirProjectedOutlines) {
   EXPECT_GT(cylinder_column, cylinder_row / 2);  // its height: the caps seen past the side
 }
 
+// The hull of a unit cube's corners, turned to show three faces, has the cube's outline: its
+// widest row and column within 1 px of the cube's.
+TEST(Renderer, TheHullOfACubesCornersHasTheCubesOutline) {
+  RenderSettings settings = head_on_settings();
+  HullMesh cube;
+  for (int k = 0; k < 8; ++k) {
+    cube.corners.push_back(Vec3(k & 1 ? 0.5 : -0.5, k & 2 ? 0.5 : -0.5, k & 4 ? 0.5 : -0.5));
+  }
+  // Each face counter-clockwise seen from outside: −x, +x, −y, +y, −z, +z.
+  cube.faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  cube.normals = {-Vec3::UnitX(), Vec3::UnitX(),  -Vec3::UnitY(),
+                  Vec3::UnitY(),  -Vec3::UnitZ(), Vec3::UnitZ()};
+  settings.hulls = {cube};
+  settings.hull_sizes = {Vec3::Ones()};
+  FrameView view = head_on_view();
+  const io::Image empty = draw(settings, view);
+  const Quat turn(Eigen::AngleAxisd(0.6, Vec3(1, 1, 0).normalized()));
+  view.boxes.push_back(Box{.orientation = turn, .size = Vec3::Ones()});
+  const auto [box_row, box_column] = widest_extents(empty, draw(settings, view));
+  view.boxes[0].solid = Solid::hull;
+  const io::Image hull = draw(settings, view);
+  const auto [hull_row, hull_column] = widest_extents(empty, hull);
+  std::printf("[ measured ] cube %d x %d px, its hull %d x %d px\n", box_row, box_column, hull_row,
+              hull_column);
+  EXPECT_GT(box_row, 50);
+  EXPECT_NEAR(hull_row, box_row, 1);
+  EXPECT_NEAR(hull_column, box_column, 1);
+  expect_matches_golden(hull, "hull_cube");
+}
+
 TEST(Renderer, MissingShaderIsAClearErrorNamingTheFile) {
   std::string error;
   const auto renderer = ::tumble::testing::value_or_empty(
