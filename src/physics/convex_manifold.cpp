@@ -287,6 +287,7 @@ void lines_side_by_side(Found4& found, const Facet& reference, bool reference_b,
   const Vec3 di = incident.corner[1] - incident.corner[0];
   if (!(dr.cross(di).norm() <= kParallelSine * dr.norm() * di.norm())) return;
   const double length2 = dr.squaredNorm();
+  if (!(length2 > 0.0 && di.squaredNorm() > 0.0)) return;  // a capsule of no length: a point
   const double u0 = (incident.corner[0] - reference.corner[0]).dot(dr) / length2;
   const double u1 = (incident.corner[1] - reference.corner[0]).dot(dr) / length2;
   if (!(std::abs(u1 - u0) > 0.0)) return;
