@@ -81,9 +81,10 @@ std::string summary(int bodies, std::uint64_t seed, const Pile& pile, PileShapes
                 "%d %s (seed %llu), %s %.1f-%.1f m, %.0f kg/m3, restitution %.2f, friction "
                 "%.2f, bin %.0f x %.0f m, dt 1/%.0f s, %d steps",
                 bodies, pile_shapes_name(shapes), static_cast<unsigned long long>(seed),
-                shapes == PileShapes::balls   ? "diameters"
-                : shapes == PileShapes::mixed ? "boxes, balls, capsules, cylinders and hulls in turn, edges"
-                                              : "edges",
+                shapes == PileShapes::balls ? "diameters"
+                : shapes == PileShapes::mixed
+                    ? "boxes, balls, capsules, cylinders and hulls in turn, edges"
+                    : "edges",
                 kMinEdge, kMaxEdge, kDensity, kRestitution, kFriction, 2 * kBinHalfWidth,
                 2 * kBinHalfWidth, 1.0 / kStep, pile.steps);
   return text;

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "physics/box_box.hpp"
-#include "physics/hull_shape.hpp"
 #include "physics/broad_phase.hpp"
+#include "physics/hull_shape.hpp"
 #include "physics/rigid_body.hpp"
 #include "physics/shapes.hpp"
 
@@ -34,15 +34,15 @@ enum class PileKind : std::uint8_t { box, ball, capsule, cylinder, hull };
 // One body at the start of the pour.
 struct PileBox {
   PileKind kind = PileKind::box;
-  physics::Vec3 size;         // edge lengths along the body axes (m); the box another shape fits
-  double radius = 0.0;        // m: a ball's, a capsule's or a cylinder's
-  double length = 0.0;        // m: a capsule's (between its end centres) or a cylinder's
+  physics::Vec3 size;   // edge lengths along the body axes (m); the box another shape fits
+  double radius = 0.0;  // m: a ball's, a capsule's or a cylinder's
+  double length = 0.0;  // m: a capsule's (between its end centres) or a cylinder's
   // A hull's corners and constants (body frame: its centre of mass, its principal axes).
   std::shared_ptr<const physics::HullBody> hull;
-  double mass = 0.0;          // kg
-  physics::Vec3 position;     // centre of mass, world frame (m)
-  physics::Quat orientation;  // body-to-world rotation, unit, (w, x, y, z)
-  physics::Vec3 velocity;     // world frame (m/s)
+  double mass = 0.0;               // kg
+  physics::Vec3 position;          // centre of mass, world frame (m)
+  physics::Quat orientation;       // body-to-world rotation, unit, (w, x, y, z)
+  physics::Vec3 velocity;          // world frame (m/s)
   physics::Vec3 angular_velocity;  // world frame (rad/s)
 };
 
