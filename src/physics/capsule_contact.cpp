@@ -9,10 +9,6 @@
 namespace tumble::physics {
 namespace {
 
-// Segments within this angle (rad, as its sine) of parallel lie side by side: they touch along
-// a stretch, not at a point.
-constexpr double kParallelSine = 0.1;
-
 // Of the separating axes of a segment inside a box, an edge's crossing must overlap this much less
 // than the best face to be chosen: a face's contact (up to two points, a steady normal) is the one
 // to keep when the two are about equal.
@@ -33,12 +29,6 @@ Segment core_of(const ShapePose& pose) {
 // Where a parameter in [0, 1] lies: at the start, inside, at the end.
 std::uint32_t region(double u) {
   return u <= 0.0 ? 0 : u >= 1.0 ? 2 : 1;
-}
-
-// A unit vector normal to `d` (not zero).
-Vec3 any_normal(const Vec3& d) {
-  const Vec3 other = std::abs(d.x()) < 0.9 * d.norm() ? Vec3::UnitX() : Vec3::UnitY();
-  return d.cross(other).normalized();
 }
 
 // The normal of two cores that meet (their closest points coincide): across both segments, else
@@ -267,7 +257,7 @@ PairManifold round_round_manifold(const ShapePose& a, const ShapePose& b, double
   const double la2 = da.squaredNorm();
   const double lb2 = db.squaredNorm();
   if (la2 > 0.0 && lb2 > 0.0 &&
-      da.cross(db).squaredNorm() < kParallelSine * kParallelSine * la2 * lb2) {
+      da.cross(db).squaredNorm() < kSideBySideSine * kSideBySideSine * la2 * lb2) {
     PairManifold two = side_by_side(a, b, sa, sb, margin);
     if (two.count > 0) return two;
   }

@@ -16,8 +16,6 @@ namespace {
 constexpr int kMostCorners = static_cast<int>(kMostHullCorners);
 // A clipped polygon has at most the corners of both polygons.
 constexpr int kMostClipped = 2 * kMostCorners + 4;
-// Lines within this angle (rad, as its sine) of parallel lie side by side.
-constexpr double kParallelSine = 0.1;
 
 // Line ids in a point's feature: an incident polygon's edge k is k (0–63), the reference face's
 // side j is 64 + j, an incident segment's line is 130 and its ends 128 and 129.
@@ -182,14 +180,14 @@ struct Found {
   std::uint8_t on_axis;  // bit 0: on the reference's axis, bit 1: on the incident's (PairPoint)
 };
 
-struct Found4 {
+struct FoundPoints {
   std::array<Found, kMostClipped> list;
   int count = 0;
 };
 
 // The manifold's candidate from a point `p` of the incident core, against the reference facet:
 // its separation along the reference normal `m` and the middle of the gap.
-void add_found(Found4& found, const Vec3& p, const Facet& reference, double reference_rounding,
+void add_found(FoundPoints& found, const Vec3& p, const Facet& reference, double reference_rounding,
                double incident_rounding, double margin, std::uint32_t feature,
                std::uint8_t on_axis) {
   const Vec3& m = reference.normal;
@@ -212,8 +210,8 @@ std::uint32_t feature_id(bool reference_b, std::uint32_t reference, std::uint32_
 }
 
 // The incident shape's points clipped to a reference face.
-void clip_incident(Found4& found, const Facet& reference, bool reference_b, const ShapePose& inc,
-                   double reference_rounding, double margin) {
+void clip_incident(FoundPoints& found, const Facet& reference, bool reference_b,
+                   const ShapePose& inc, double reference_rounding, double margin) {
   const Shape& shape = *inc.shape;
   const double incident_rounding = rounding(shape);
   std::array<ClipPoint, kMostClipped> points;
@@ -256,7 +254,7 @@ void clip_incident(Found4& found, const Facet& reference, bool reference_b, cons
       // The four rim points of the end nearer the face (physics/contact.hpp's RimFrame), and the
       // line along the side between the two ends' lowest points. The two share the lowest point:
       // the line's is kept (anchored on the axis, for rolling) when the cylinder lies within
-      // kParallelSine of flat, the rim's (fixed in the body, for tipping) otherwise.
+      // kSideBySideSine of flat, the rim's (fixed in the body, for tipping) otherwise.
       const RimFrame frame = rim_frame(inc.rotation, reference.normal);
       const double along = (inc.rotation.transpose() * reference.normal).y();
       const bool low_minus = along >= 0.0;
@@ -267,7 +265,7 @@ void clip_incident(Found4& found, const Facet& reference, bool reference_b, cons
             inc.position + inc.rotation * rim_point(shape, frame, first + k);
       }
       square.count = 4;
-      const bool lying = std::abs(along) <= kParallelSine;
+      const bool lying = std::abs(along) <= kSideBySideSine;
       if (!lying) polygon(square, low_minus ? 4 : 5);
       segment(inc.position + inc.rotation * rim_point(shape, frame, 0),
               inc.position + inc.rotation * rim_point(shape, frame, 4), 6, lying ? 2 : 0);
@@ -280,12 +278,12 @@ void clip_incident(Found4& found, const Facet& reference, bool reference_b, cons
 }
 
 // Two lines side by side: the ends of the stretch of the incident line beside the reference line.
-void lines_side_by_side(Found4& found, const Facet& reference, bool reference_b,
+void lines_side_by_side(FoundPoints& found, const Facet& reference, bool reference_b,
                         const Facet& incident, double reference_rounding, double incident_rounding,
                         double margin, std::uint8_t on_axis) {
   const Vec3 dr = reference.corner[1] - reference.corner[0];
   const Vec3 di = incident.corner[1] - incident.corner[0];
-  if (!(dr.cross(di).norm() <= kParallelSine * dr.norm() * di.norm())) return;
+  if (!(dr.cross(di).norm() <= kSideBySideSine * dr.norm() * di.norm())) return;
   const double length2 = dr.squaredNorm();
   if (!(length2 > 0.0 && di.squaredNorm() > 0.0)) return;  // a capsule of no length: a point
   const double u0 = (incident.corner[0] - reference.corner[0]).dot(dr) / length2;
@@ -306,7 +304,7 @@ void lines_side_by_side(Found4& found, const Facet& reference, bool reference_b,
 
 // At most four of the points: the deepest, the farthest from it, the one that makes the widest
 // triangle with them, and the one that widens that triangle most (about the normal).
-void reduce_to_four(Found4& found, const Vec3& normal) {
+void reduce_to_four(FoundPoints& found, const Vec3& normal) {
   if (found.count <= kMaxManifoldPoints) return;
   std::array<int, 4> pick{0, -1, -1, -1};
   const auto& list = found.list;
@@ -348,7 +346,7 @@ void reduce_to_four(Found4& found, const Vec3& normal) {
     return most;
   });
   std::sort(pick.begin(), pick.end());
-  Found4 out;
+  FoundPoints out;
   for (const int k : pick) {
     if (k >= 0) out.list[static_cast<std::size_t>(out.count++)] = list[static_cast<std::size_t>(k)];
   }
@@ -369,7 +367,7 @@ PairManifold convex_manifold(const ShapePose& a, const ShapePose& b, double marg
   if (!(s < margin)) return {};
   const Vec3& n = core.normal;
 
-  Found4 found;
+  FoundPoints found;
   bool reference_b = false;
   Vec3 reference_normal = n;
   const auto choose = [&](const Facet& fa, const Facet& fb) -> int {

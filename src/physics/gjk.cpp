@@ -120,12 +120,6 @@ Vec3 reduce(Simplex& s) {
   return x;
 }
 
-// A unit vector normal to `d` (not zero).
-Vec3 normal_to(const Vec3& d) {
-  const Vec3 other = std::abs(d.x()) < 0.9 * d.norm() ? Vec3::UnitX() : Vec3::UnitY();
-  return d.cross(other).normalized();
-}
-
 // Grows a simplex holding the origin (on its boundary, or inside when it has four points) into a
 // tetrahedron of the difference's support points; false when the difference is too flat for one.
 bool grow_to_tetrahedron(const ShapePose& a, const ShapePose& b, Simplex& s) {
@@ -146,7 +140,7 @@ bool grow_to_tetrahedron(const ShapePose& a, const ShapePose& b, Simplex& s) {
   }
   if (s.n == 2) {
     const Vec3 line = s.v[1].w - s.v[0].w;
-    const Vec3 e1 = normal_to(line);
+    const Vec3 e1 = any_normal(line);
     const Vec3 e2 = line.normalized().cross(e1);
     const auto off = [&](const Vec3& w) {
       const Vec3 r = w - s.v[0].w;

@@ -5,10 +5,22 @@
 // (physics/convex_manifold.hpp). Pure geometry, as box_box.hpp.
 #pragma once
 
+#include <cmath>
+
 #include "physics/box_box.hpp"
 #include "physics/shapes.hpp"
 
 namespace tumble::physics {
+
+// Lines (a capsule's segments, a cylinder's sides) within this angle (rad, as its sine) of
+// parallel lie side by side: they touch along a stretch, not at a point.
+inline constexpr double kSideBySideSine = 0.1;
+
+// A unit vector normal to `d` (not zero).
+inline Vec3 any_normal(const Vec3& d) {
+  const Vec3 other = std::abs(d.x()) < 0.9 * d.norm() ? Vec3::UnitX() : Vec3::UnitY();
+  return d.cross(other).normalized();
+}
 
 // A shape placed in the world.
 struct ShapePose {
