@@ -11,7 +11,7 @@ namespace tumble::sim {
 Simulation::Simulation(std::vector<physics::BodyModel> models,
                        std::vector<physics::BodyState> initial, physics::Integrator integrator,
                        double dt, std::vector<physics::Plane> planes,
-                       physics::ContactSettings contact)
+                       physics::ContactSettings contact, std::vector<physics::Joint> joints)
     : models_(std::move(models)),
       previous_(initial),
       current_(std::move(initial)),
@@ -27,6 +27,9 @@ Simulation::Simulation(std::vector<physics::BodyModel> models,
   } else if (pairs) {
     stepping_ = Stepping::penalty_world;
   }
+  joints_.joints = std::move(joints);
+  joints_.impulses.resize(joints_.joints.size());
+  if (!joints_.joints.empty() && stepping_ == Stepping::alone) stepping_ = Stepping::joint_world;
 }
 
 namespace {
@@ -76,6 +79,9 @@ void Simulation::step() {
     case Stepping::penalty_world:
       physics::step_penalty_world(integrator_, models_, previous_, t, dt_, contact_, penalty_,
                                   current_);
+      break;
+    case Stepping::joint_world:
+      physics::step_joints(integrator_, models_, previous_, t, dt_, joints_, current_);
       break;
     case Stepping::alone:
       for (std::size_t i = 0; i < models_.size(); ++i) {

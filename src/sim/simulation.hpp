@@ -10,6 +10,7 @@
 #include "common/result.hpp"
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
+#include "physics/joint_solve.hpp"
 #include "physics/penalty_pairs.hpp"
 #include "physics/rigid_body.hpp"
 #include "physics/world_step.hpp"
@@ -44,7 +45,8 @@ class Simulation {
   // force law of each body (physics::PenaltyContact) and needs no planes here.
   Simulation(std::vector<physics::BodyModel> models, std::vector<physics::BodyState> initial,
              physics::Integrator integrator, double dt /* s */,
-             std::vector<physics::Plane> planes = {}, physics::ContactSettings contact = {});
+             std::vector<physics::Plane> planes = {}, physics::ContactSettings contact = {},
+             std::vector<physics::Joint> joints = {});
 
   // Advances every body by one step of dt. Once a body has blown up, nothing moves any more.
   void step();
@@ -66,6 +68,9 @@ class Simulation {
   const std::vector<physics::BodyModel>& models() const { return models_; }
   const std::vector<physics::BodyState>& current() const { return current_; }
   const std::vector<physics::BodyState>& previous() const { return previous_; }
+  const std::vector<physics::Joint>& joints() const { return joints_.joints; }
+  // Each joint's limit and motor impulses of the last step (N s or N m s).
+  const std::vector<physics::JointImpulses>& joint_impulses() const { return joints_.impulses; }
 
  private:
   std::vector<physics::BodyModel> models_;
@@ -76,13 +81,15 @@ class Simulation {
   std::vector<physics::Plane> planes_;
   physics::ContactSettings contact_;
   // How a step goes: each body alone (with penalty contact, its planes are its own force law);
-  // the world step of impulse contact, whenever anything can touch; or penalty contact between
-  // bodies that can touch each other.
-  enum class Stepping { alone, impulse_world, penalty_world };
+  // the world step of impulse contact, whenever anything can touch; penalty contact between
+  // bodies that can touch each other; or the bodies together under their joints, when nothing
+  // can touch (physics/joint_solve.hpp).
+  enum class Stepping { alone, impulse_world, penalty_world, joint_world };
   Stepping stepping_ = Stepping::alone;
   // The manifolds from step to step (warm starting the contact solve).
   physics::WorldContacts contacts_;
   physics::PenaltyWorld penalty_;  // its scratch
+  physics::JointWorld joints_;
   std::int64_t step_count_ = 0;
   std::optional<BlowUp> blow_up_;
 };

@@ -1,0 +1,125 @@
+// How joints move bodies (physics/joints.hpp): a world with joints steps its bodies together.
+//
+// 1. The free step. The joints' equality rows hold at the acceleration level inside the
+//    integrator: wherever it evaluates the bodies' forces (every RK4 stage, from that stage's
+//    states of all bodies), the joint forces Jᵀλ are solved from K λ = -(J a + J̇v), K = J M⁻¹ Jᵀ,
+//    a the bodies' accelerations under their own laws (with the gyroscopic term), as one sparse
+//    LDLᵀ factorisation over all rows (Eigen's SimplicialLDLT: linear in a chain's or a tree's
+//    length, exact at any mass ratio). The constrained motion is then integrated at the
+//    integrator's order: RK4's fourth, where impulses solved after each step would be first order.
+//    A sprung distance joint is a force between its anchors here. With the splitting integrators
+//    the joint forces are held over each kick from its start (as Coupling is), the drift being the
+//    bodies' exact free flight: order 1 in the joints, kept on them by step 3.
+// 2. Limits, motors and a distance's range: rows that switch on and off (a one-sided row, a bounded
+//    motor) are solved after the free step at its end, by sequential impulses with accumulated
+//    clamping, warm-started from the last step (Catto, GDC 2005/2009), the equality rows among
+//    them so that a stop does not pull a joint apart. A limit not yet reached is speculative: it
+//    lets the coordinate approach at its gap over the step (Catto, "Predictive joint limits",
+//    2020). The poses move by impulse_position_weight × the change, as contact impulses move them.
+// 3. Projection: the poses are moved onto every equality row (and off every limit passed) by
+//    Newton's method on C(q) = 0 with the least mass-weighted move, each iteration one solve with
+//    K, and the velocities onto J v = 0 by the least kinetic-energy change (coordinate projection;
+//    Hairer, Lubich and Wanner, "Geometric Numerical Integration", IV.4). The velocity projection
+//    only takes kinetic energy away, and both move the state by the step's local error, so the
+//    integrator's order stays.
+#pragma once
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <span>
+#include <vector>
+
+#include "physics/integrators.hpp"
+#include "physics/joints.hpp"
+
+namespace tumble::physics {
+
+// A joint's one-sided and motor impulses of the last step (N s, N m s), which warm-start the next.
+struct JointImpulses {
+  double lower = 0.0;
+  double upper = 0.0;
+  double motor = 0.0;
+};
+
+// The rows of every joint and the factorisation of their K, kept from call to call: the pattern
+// is analysed once and factorised again at each state.
+class JointSystem {
+ public:
+  // The rows of every joint at `states` (b of a joint held to the world, the world).
+  void build(std::span<const Joint> joints, std::span<const BodyModel> models,
+             std::span<const BodyState> states);
+  // With the one-sided rows of the joints whose limits or range are passed at these states, as
+  // equalities at their bound: for the projection.
+  void build_with_passed_limits(std::span<const Joint> joints, std::span<const BodyModel> models,
+                                std::span<const BodyState> states);
+  // Factorises K of the rows built; false when it cannot (not finite).
+  bool factorise();
+  // λ of K λ = rhs, for rhs of the rows' size.
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+
+  const std::vector<JointRow>& rows() const { return rows_; }
+  // What an impulse λ_r along each row gives body i: Δv = m⁻¹ Σ linear λ, Δω = I⁻¹ Σ angular λ.
+  double inverse_mass(std::uint32_t body) const { return inverse_masses_[body]; }
+  const Mat3& inverse_inertia(std::uint32_t body) const { return inverse_inertias_[body]; }
+
+ private:
+  void masses(std::span<const BodyModel> models, std::span<const BodyState> states);
+  std::vector<JointRow> rows_;
+  std::vector<double> inverse_masses_;
+  std::vector<Mat3> inverse_inertias_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pattern_;  // the rows' bodies analysed
+  std::vector<Eigen::Triplet<double>> triplets_;
+  Eigen::SparseMatrix<double> k_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+  bool analysed_ = false;
+};
+
+// The joints' forces as a Coupling of the bodies (step 1 above): for `models` and `joints`.
+class JointForces final : public Coupling {
+ public:
+  JointForces(std::span<const Joint> joints, std::span<const BodyModel> models,
+              JointSystem& system)
+      : joints_(joints), models_(models), system_(system) {}
+  void add(std::span<const BodyState> states, double t, std::span<Wrench> wrenches) const override;
+
+ private:
+  std::span<const Joint> joints_;
+  std::span<const BodyModel> models_;
+  JointSystem& system_;
+};
+
+// The force and torque each joint applies to its body a at `states` and time t (N, N m, world,
+// about a's centre): its equality rows' λ from the free step's solve, and its spring's; the
+// impulses of its limits and motor (`impulses`, over the step dt) as their mean force.
+std::vector<Wrench> joint_wrenches(std::span<const Joint> joints,
+                                   std::span<const BodyModel> models,
+                                   std::span<const BodyState> states, double t,
+                                   std::span<const JointImpulses> impulses, double dt /* s */);
+
+// What a world of joints keeps from step to step.
+struct JointWorld {
+  std::vector<Joint> joints;
+  std::vector<JointImpulses> impulses;  // per joint, of the last step
+  JointSystem system;
+};
+
+// Newton iterations of the projection at most, and the error (m or rad) at which it stops.
+inline constexpr int kJointProjectionIterations = 8;
+inline constexpr double kJointProjectionTolerance = 1e-13;
+// Passes of the sequential impulses over limits, motors and ranges at most; they stop earlier
+// when no impulse changes by more than kJointTolerance of the largest.
+inline constexpr int kJointPasses = 100;
+inline constexpr double kJointTolerance = 1e-10;
+
+// Advances every body from `in` at t to t + dt (s) into `out` with the world's joints, by steps 1
+// to 3 above. Static bodies stay where they are. No contact: physics/world_step.hpp adds it.
+void step_joints(Integrator integrator, std::span<const BodyModel> models,
+                 std::span<const BodyState> in, double t, double dt, JointWorld& world,
+                 std::span<BodyState> out);
+
+// Steps 2 and 3 alone, on states at the end of a step of dt (s) that every body took under the
+// joint forces: limits, motors, ranges, then the projection.
+void hold_joints(Integrator integrator, std::span<const BodyModel> models, double dt,
+                 JointWorld& world, std::span<BodyState> states);
+
+}  // namespace tumble::physics
