@@ -112,9 +112,11 @@ void JointSystem::build(std::span<const Joint> joints, std::span<const BodyModel
                         std::span<const BodyState> states) {
   masses(models, states);
   rows_.clear();
-  for (const Joint& joint : joints) {
-    const JointBodies at = bodies_of(joint, states);
-    equality_rows(joint, at.a, at.b, rows_);
+  for (std::uint32_t j = 0; j < joints.size(); ++j) {
+    const std::size_t first = rows_.size();
+    const JointBodies at = bodies_of(joints[j], states);
+    equality_rows(joints[j], at.a, at.b, rows_);
+    for (std::size_t r = first; r < rows_.size(); ++r) rows_[r].joint = j;
   }
 }
 
@@ -425,7 +427,69 @@ void project(std::span<const BodyModel> models, JointWorld& world, std::span<Bod
   apply_impulses(models, system, linear, angular, 0.0, true, states);
 }
 
+// The smallest moment of inertia (kg m²) of `inertia` (world) about the axes normal to the unit
+// `direction`.
+double least_moment_across(const Mat3& inertia, const Vec3& direction) {
+  Eigen::Index least = 0;
+  direction.cwiseAbs().minCoeff(&least);
+  const Vec3 u = direction.cross(Vec3::Unit(least)).normalized();
+  const Vec3 v = direction.cross(u);
+  const double a = u.dot(inertia * u), d = v.dot(inertia * v), b = u.dot(inertia * v);
+  return 0.5 * (a + d) - std::hypot(0.5 * (a - d), b);
+}
+
 }  // namespace
+
+double fastest_joint_mode(std::span<const Joint> joints, std::span<const BodyModel> models,
+                          std::span<const BodyState> states, double t, JointSystem& system) {
+  std::vector<Wrench> wrenches(states.size());
+  for (const Joint& joint : joints) {
+    if (joint.kind == JointKind::distance && joint.stiffness > 0.0) {
+      add_spring(joint, states, wrenches);
+    }
+  }
+  Eigen::VectorXd lambda;
+  solve_forces(joints, models, states, t, system, wrenches, lambda);
+  // Each joint's force and moment (about the body's centre) on its two bodies.
+  std::vector<Wrench> on_a(joints.size()), on_b(joints.size());
+  const std::vector<JointRow>& rows = system.rows();
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const JointRow& row = rows[r];
+    const double l = lambda[static_cast<Eigen::Index>(r)];
+    on_a[row.joint].force += l * row.linear_a;
+    on_a[row.joint].torque += l * row.angular_a;
+    on_b[row.joint].force += l * row.linear_b;
+    on_b[row.joint].torque += l * row.angular_b;
+  }
+  // ω² of body i: Σ over its joints of the geometric stiffness of the force F at arm r, |F||r|
+  // over the moment across r, of a pure moment over the least moment, of a rod's pull F over
+  // m ℓ, and of a spring k over m.
+  std::vector<double> squared(states.size(), 0.0);
+  const auto add = [&](const Joint& joint, std::uint32_t i, const Vec3& anchor,
+                       const Wrench& wrench) {
+    if (i == kWorldBody || models[i].is_static) return;
+    const BodyConstants& c = models[i].constants;
+    const Mat3 rotation = states[i].rotation();
+    const Vec3 arm = rotation * anchor;
+    const Mat3 inertia = rotation * c.inertia.asDiagonal() * rotation.transpose();
+    const double force = wrench.force.norm();
+    double sum = (wrench.torque - arm.cross(wrench.force)).norm() / c.inertia.minCoeff();
+    if (arm.norm() > 0.0) sum += force * arm.norm() / least_moment_across(inertia, arm.normalized());
+    if (joint.kind == JointKind::distance) {
+      const double length = std::max(joint.max_length, joint.min_length);
+      if (length > 0.0) sum += force * c.inverse_mass / length;
+      sum += joint.stiffness * c.inverse_mass;
+    }
+    squared[i] += sum;
+  };
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    add(joints[j], joints[j].a, joints[j].anchor_a, on_a[j]);
+    add(joints[j], joints[j].b, joints[j].anchor_b, on_b[j]);
+  }
+  double most = 0.0;
+  for (const double w2 : squared) most = std::max(most, w2);
+  return std::sqrt(most);
+}
 
 void JointForces::add(std::span<const BodyState> states, double t,
                       std::span<Wrench> wrenches) const {
@@ -487,15 +551,28 @@ void hold_joints(Integrator integrator, std::span<const BodyModel> models, doubl
   project(models, world, states);
 }
 
+int joint_substeps(double fastest, double dt) {
+  const double wanted = std::ceil(fastest * dt / kStableTurn);
+  return static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(kMostJointSubsteps)));
+}
+
 void step_joints(Integrator integrator, std::span<const BodyModel> models,
                  std::span<const BodyState> in, double t, double dt, JointWorld& world,
                  std::span<BodyState> out) {
+  const int substeps =
+      joint_substeps(fastest_joint_mode(world.joints, models, in, t, world.system), dt);
+  const double h = dt / substeps;
+  world.substep = h;
   const JointForces forces(world.joints, models, world.system);
-  step_coupled(integrator, models, in, t, dt, forces, out);
-  for (std::size_t i = 0; i < models.size(); ++i) {
-    if (models[i].is_static) out[i] = in[i];
+  std::vector<BodyState> start(in.begin(), in.end());
+  for (int k = 0; k < substeps; ++k) {
+    step_coupled(integrator, models, start, t + k * h, h, forces, out);
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      if (models[i].is_static) out[i] = in[i];
+    }
+    hold_joints(integrator, models, h, world, out);
+    if (k + 1 < substeps) std::copy(out.begin(), out.end(), start.begin());
   }
-  hold_joints(integrator, models, dt, world, out);
 }
 
 }  // namespace tumble::physics

@@ -89,6 +89,7 @@ struct JointBody {
 
 // One constraint row between a joint's two bodies (above).
 struct JointRow {
+  std::uint32_t joint = 0;  // its joint's index, where the caller numbers them
   std::uint32_t a = 0;
   std::uint32_t b = kWorldBody;
   Vec3 linear_a = Vec3::Zero();

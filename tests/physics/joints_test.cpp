@@ -3,6 +3,7 @@
 // energy, a long chain's stretch, a door on a hinge, a slider, a weld.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <numbers>
@@ -264,6 +265,318 @@ TEST(DoublePendulum, KeepsItsEnergyAndRods) {
   }
   EXPECT_LT(worst_energy, 1e-5);
   EXPECT_LT(worst_rod, 1e-6);
+}
+
+// Runs the world for `seconds` at dt, calling watch(states) after each step.
+template <class Watch>
+void run(Integrator integrator, const std::vector<BodyModel>& models,
+         std::vector<BodyState>& states, JointWorld& world, double dt, double seconds,
+         Watch&& watch) {
+  std::vector<BodyState> next(states.size());
+  const auto steps = static_cast<int>(std::llround(seconds / dt));
+  for (int n = 0; n < steps; ++n) {
+    step_joints(integrator, models, states, n * dt, dt, world, next);
+    states.swap(next);
+    watch(states);
+  }
+}
+
+// A chain of `links` boxes of 0.1 m (0.02 × 0.1 × 0.02 m, `mass` each) on ball joints, hanging
+// from the world at (0, 10, 0), or lying along +x from it when `horizontal`; with an end ball of
+// `end_mass` (radius 0.1 m, hung on a ball joint at its top) when that is > 0.
+struct Chain {
+  std::vector<BodyModel> models;
+  std::vector<BodyState> states;
+  JointWorld world;
+  Vec3 pivot = Vec3(0.0, 10.0, 0.0);
+  double length = 0.0;  // m: pivot to the free end
+
+  Chain(int links, double mass, bool horizontal, double end_mass = 0.0) {
+    const Vec3 along = horizontal ? Vec3(Vec3::UnitX()) : Vec3(-Vec3::UnitY());
+    const Quat turn = horizontal ? Quat(Eigen::AngleAxisd(-std::numbers::pi / 2.0, Vec3::UnitZ()))
+                                 : Quat::Identity();
+    for (int k = 0; k < links; ++k) {
+      models.push_back(box(mass, Vec3(0.02, 0.1, 0.02)));
+      states.push_back(make_state(models.back().constants, pivot + (0.1 * k + 0.05) * along,
+                                  Vec3::Zero(), turn, Vec3::Zero()));
+    }
+    length = 0.1 * links;
+    if (end_mass > 0.0) {
+      models.push_back(sphere(end_mass, 0.1));
+      states.push_back(make_state(models.back().constants, pivot + (length + 0.1) * along,
+                                  Vec3::Zero(), Quat::Identity(), Vec3::Zero()));
+      length += 0.2;
+    }
+    for (std::uint32_t k = 0; k < states.size(); ++k) {
+      const Vec3 top = pivot + 0.1 * k * along;
+      world.joints.push_back(
+          place_joint(JointKind::ball, k, k == 0 ? kWorldBody : k - 1, states, top, top));
+    }
+  }
+  // The largest gap between two anchors of a joint (m).
+  double widest_gap() const {
+    double out = 0.0;
+    for (const Joint& joint : world.joints) {
+      const JointBody b = joint.b == kWorldBody ? JointBody{} : JointBody::of(states[joint.b]);
+      out = std::max(out, (anchor_a_world(joint, JointBody::of(states[joint.a])) -
+                           anchor_b_world(joint, b))
+                              .norm());
+    }
+    return out;
+  }
+  double energy() const {
+    double e = 0.0;
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      e += kinetic_energy(states[i]) + models[i].constants.mass * kG * states[i].position().y();
+    }
+    return e;
+  }
+};
+
+// 100 links hanging under gravity for 2 s stretch by less than 1 mm.
+TEST(Chain, OfAHundredLinksHangsWithoutStretching) {
+  Chain chain(100, 0.1, false);
+  run(Integrator::rk4, chain.models, chain.states, chain.world, 1.0 / 240.0, 2.0,
+      [](const std::vector<BodyState>&) {});
+  EXPECT_LT(chain.widest_gap(), 1e-9);
+  EXPECT_NEAR((chain.states.back().position() - chain.pivot).norm(), chain.length - 0.05, 1e-3);
+}
+
+// Released from horizontal, no joint opens by 1 cm and the energy never rises above its start
+// (by more than 1e-9 of its scale, m g L).
+TEST(Chain, ReleasedFromHorizontalStaysTogetherAndGainsNoEnergy) {
+  Chain chain(100, 0.1, true);
+  const double start = chain.energy();
+  const double scale = 100 * 0.1 * kG * 10.0;
+  double widest = 0.0, highest = -1e300;
+  run(Integrator::rk4, chain.models, chain.states, chain.world, 1.0 / 240.0, 3.0,
+      [&](const std::vector<BodyState>&) {
+        widest = std::max(widest, chain.widest_gap());
+        highest = std::max(highest, chain.energy() - start);
+      });
+  EXPECT_LT(widest, 1e-2);
+  EXPECT_LT(widest, 1e-9);
+  EXPECT_LT(highest, 1e-9 * scale);
+}
+
+// A 10 kg ball at the end of 20 links of 0.1 kg (100:1): hanging, it stretches the chain by less
+// than 1 cm; swung at 5 m/s, it does not blow up and the chain stays together.
+TEST(Chain, HoldsAHundredTimesItsLinksMass) {
+  Chain chain(20, 0.1, false, 10.0);
+  run(Integrator::rk4, chain.models, chain.states, chain.world, 1.0 / 240.0, 3.0,
+      [](const std::vector<BodyState>&) {});
+  EXPECT_LT(chain.widest_gap(), 1e-2);
+  EXPECT_NEAR((chain.states.back().position() - chain.pivot).norm(), chain.length - 0.1, 1e-2);
+  PrimaryState kicked = chain.states.back().primary();
+  kicked.momentum = Vec3(50.0, 0.0, 20.0);  // 10 kg at 5.4 m/s
+  chain.states.back() = BodyState(kicked, chain.models.back().constants);
+  const double start = chain.energy();
+  double widest = 0.0, highest = -1e300;
+  run(Integrator::rk4, chain.models, chain.states, chain.world, 1.0 / 240.0, 5.0,
+      [&](const std::vector<BodyState>&) {
+        widest = std::max(widest, chain.widest_gap());
+        highest = std::max(highest, chain.energy() - start);
+      });
+  EXPECT_LT(widest, 1e-2);
+  EXPECT_LT(highest, 1e-6 * start);
+}
+
+// A door, 1 × 2 × 0.05 m and 20 kg, on a hinge along its left edge (world y, through (0, 1, 0)),
+// gravity along the hinge, swinging at `swing` rad/s about it.
+struct Door {
+  std::vector<BodyModel> models = {box(20.0, Vec3(1.0, 2.0, 0.05))};
+  std::vector<BodyState> states;
+  JointWorld world;
+  Door(double swing) {
+    states.push_back(make_state(models[0].constants, Vec3(0.5, 1.0, 0.0),
+                                Vec3(0.0, 0.0, -0.5 * swing), Quat::Identity(),
+                                Vec3(0.0, swing, 0.0)));
+    world.joints.push_back(place_joint(JointKind::hinge, 0, kWorldBody, states, Vec3(0.0, 1.0, 0.0),
+                                       Vec3(0.0, 1.0, 0.0), Vec3(0.0, 1.0, 0.0)));
+  }
+  double angle() const {
+    return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->value;
+  }
+  double rate() const {
+    return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->rate;
+  }
+  double sag() const {  // how far the door's own y axis is off the hinge (rad)
+    return std::acos(std::min(1.0, (states[0].rotation() * Vec3::UnitY()).y()));
+  }
+  // Its moment about the hinge: m (w² + t²) / 12 + m (w / 2)² (kg m²).
+  static double moment() { return 20.0 * (1.0 + 0.0025) / 12.0 + 20.0 * 0.25; }
+};
+
+// Swinging freely for 10 s, the door stays on its hinge: less than 1e-4 rad off its axis.
+TEST(Hinge, HoldsADoorWithoutSag) {
+  Door door(1.0);
+  double worst = 0.0;
+  run(Integrator::rk4, door.models, door.states, door.world, 1.0 / 240.0, 10.0,
+      [&](const std::vector<BodyState>&) { worst = std::max(worst, door.sag()); });
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_NEAR(door.rate(), 1.0, 1e-6);  // nothing acts about the hinge
+}
+
+// With limits of ±45°, struck at 3 rad/s, it stops at each limit and never passes one by
+// more than 1e-3 rad.
+TEST(Hinge, StopsAtItsLimits) {
+  Door door(3.0);
+  door.world.joints[0].limits = JointLimits{.lower = -std::numbers::pi / 4.0,
+                                            .upper = std::numbers::pi / 4.0};
+  double highest = -1.0, lowest = 1.0;
+  run(Integrator::rk4, door.models, door.states, door.world, 1.0 / 240.0, 3.0,
+      [&](const std::vector<BodyState>&) {
+        highest = std::max(highest, door.angle());
+        lowest = std::min(lowest, door.angle());
+      });
+  EXPECT_LT(highest, std::numbers::pi / 4.0 + 1e-3);
+  EXPECT_GT(highest, std::numbers::pi / 4.0 - 1e-3);  // it reached the limit
+  EXPECT_LT(door.sag(), 1e-4);
+}
+
+// A motor of 2 rad/s with torque to spare reaches it within 1 % and holds it; with 5 N m it
+// accelerates at 5 N m / I within 1 %.
+TEST(Hinge, MotorReachesItsSpeedOrAcceleratesAtItsTorque) {
+  Door strong(0.0);
+  strong.world.joints[0].motor = JointMotor{.speed = 2.0, .max_effort = 1000.0};
+  double slowest_after = 1e300, fastest_after = 0.0;
+  int n = 0;
+  run(Integrator::rk4, strong.models, strong.states, strong.world, 1.0 / 240.0, 3.0,
+      [&](const std::vector<BodyState>&) {
+        if (++n > 240) {
+          slowest_after = std::min(slowest_after, strong.rate());
+          fastest_after = std::max(fastest_after, strong.rate());
+        }
+      });
+  EXPECT_NEAR(slowest_after, 2.0, 0.02);
+  EXPECT_NEAR(fastest_after, 2.0, 0.02);
+
+  Door weak(0.0);
+  weak.world.joints[0].motor = JointMotor{.speed = 100.0, .max_effort = 5.0};
+  run(Integrator::rk4, weak.models, weak.states, weak.world, 1.0 / 240.0, 2.0,
+      [](const std::vector<BodyState>&) {});
+  EXPECT_NEAR(weak.rate() / 2.0, 5.0 / Door::moment(), 0.01 * 5.0 / Door::moment());
+}
+
+// A 2 kg box on a slider down a 30° incline (no friction in the joint) accelerates at g sin 30°
+// within 0.1 %; its limit stops it; its motor drives it at its speed.
+struct Incline {
+  std::vector<BodyModel> models = {box(2.0, Vec3(0.4, 0.2, 0.3))};
+  std::vector<BodyState> states;
+  JointWorld world;
+  Vec3 down = Vec3(std::cos(std::numbers::pi / 6.0), -std::sin(std::numbers::pi / 6.0), 0.0);
+  Incline() {
+    states.push_back(make_state(models[0].constants, Vec3(0.0, 3.0, 0.0), Vec3::Zero(),
+                                Quat(Eigen::AngleAxisd(-std::numbers::pi / 6.0, Vec3::UnitZ())),
+                                Vec3::Zero()));
+    world.joints.push_back(place_joint(JointKind::slider, 0, kWorldBody, states, Vec3(0.0, 3.0, 0.0),
+                                       Vec3(0.0, 3.0, 0.0), down));
+  }
+  double travel() const {
+    return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->value;
+  }
+  double speed() const {
+    return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->rate;
+  }
+};
+
+TEST(Slider, SlidesDownAnInclineAtGSinTheta) {
+  Incline incline;
+  run(Integrator::rk4, incline.models, incline.states, incline.world, 1.0 / 240.0, 1.0,
+      [](const std::vector<BodyState>&) {});
+  const double expected = kG * 0.5;
+  EXPECT_NEAR(2.0 * incline.travel() / 1.0, expected, 1e-3 * expected);
+  EXPECT_NEAR(incline.speed() / 1.0, expected, 1e-3 * expected);
+  // It kept to its line and did not turn.
+  EXPECT_NEAR((incline.states[0].position() - Vec3(0.0, 3.0, 0.0)).normalized().dot(incline.down),
+              1.0, 1e-12);
+  EXPECT_LT(incline.states[0].angular_velocity().norm(), 1e-9);
+}
+
+TEST(Slider, StopsAtItsLimitAndFollowsItsMotor) {
+  Incline limited;
+  limited.world.joints[0].limits = JointLimits{.lower = -0.1, .upper = 0.5};
+  double farthest = 0.0;
+  run(Integrator::rk4, limited.models, limited.states, limited.world, 1.0 / 240.0, 2.0,
+      [&](const std::vector<BodyState>&) { farthest = std::max(farthest, limited.travel()); });
+  EXPECT_LT(farthest, 0.5 + 1e-3);
+  EXPECT_NEAR(limited.travel(), 0.5, 1e-3);
+  EXPECT_NEAR(limited.speed(), 0.0, 1e-3);
+
+  Incline driven;
+  driven.world.joints[0].motor = JointMotor{.speed = -0.5, .max_effort = 100.0};  // up the slope
+  run(Integrator::rk4, driven.models, driven.states, driven.world, 1.0 / 240.0, 1.0,
+      [](const std::vector<BodyState>&) {});
+  EXPECT_NEAR(driven.speed(), -0.5, 0.005);
+}
+
+// Two boxes welded, spun and thrown under gravity, move as one body: their relative pose drifts
+// by less than 1e-6 m and 1e-6 rad over 10 s, and each follows the single body of their combined
+// mass properties within 1e-6 m and 1e-6 rad.
+TEST(Fixed, WeldsTwoBoxesIntoOneBody) {
+  const std::vector<BodyModel> models = {box(3.0, Vec3(0.4, 0.3, 0.2)),
+                                         box(1.0, Vec3(0.2, 0.6, 0.2))};
+  const Quat qa(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()));
+  const Quat qb(Eigen::AngleAxisd(-0.7, Vec3(-1, 0, 2).normalized()));
+  const Vec3 xa(0.0, 5.0, 0.0), xb(0.25, 5.35, 0.1);
+  const Vec3 v(1.0, 4.0, -0.5), w(0.8, -2.5, 1.7);  // the pair's velocity and spin
+  const double mass = 4.0;
+  const Vec3 centre = (3.0 * xa + 1.0 * xb) / mass;
+  const Vec3 vc = v;  // the centre's velocity: v at the centre of mass, w about it
+  std::vector<BodyState> states = {
+      make_state(models[0].constants, xa, vc + w.cross(xa - centre), qa, w),
+      make_state(models[1].constants, xb, vc + w.cross(xb - centre), qb, w)};
+  // The combined body: its inertia about the centre, world frame, and its principal axes.
+  Mat3 inertia = Mat3::Zero();
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Mat3 r = states[i].rotation();
+    const Vec3 d = states[i].position() - centre;
+    const double m = models[i].constants.mass;
+    inertia += r * models[i].constants.inertia.asDiagonal() * r.transpose() +
+               m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+  }
+  const Eigen::SelfAdjointEigenSolver<Mat3> principal(inertia);
+  Mat3 axes = principal.eigenvectors();
+  if (axes.determinant() < 0.0) axes.col(0) = -axes.col(0);
+  const BodyModel whole{.constants = constants_from_moments(mass, principal.eigenvalues()),
+                        .forces = {Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
+                        .collides = false};
+  BodyState one = make_state(whole.constants, centre, vc, Quat(axes), w);
+  // Each box's pose in the combined body's frame.
+  std::array<Vec3, 2> offset;
+  std::array<Quat, 2> turn;
+  for (std::size_t i = 0; i < 2; ++i) {
+    offset[i] = axes.transpose() * (states[i].position() - centre);
+    turn[i] = Quat(axes).conjugate() * states[i].orientation();
+  }
+  JointWorld world;
+  world.joints.push_back(place_joint(JointKind::fixed, 1, 0, states, Vec3(0.15, 5.2, 0.05),
+                                     Vec3(0.15, 5.2, 0.05)));
+  const Joint& weld = world.joints[0];
+  double worst_offset = 0.0, worst_turn = 0.0, worst_place = 0.0, worst_angle = 0.0;
+  constexpr double dt = 1.0 / 240.0;
+  int n = 0;
+  run(Integrator::rk4, models, states, world, dt, 10.0, [&](const std::vector<BodyState>& now) {
+    one = step(Integrator::rk4, whole, one, n * dt, dt);
+    ++n;
+    worst_offset = std::max(
+        worst_offset, (anchor_a_world(weld, JointBody::of(now[1])) -
+                       anchor_b_world(weld, JointBody::of(now[0])))
+                          .norm());
+    worst_turn = std::max(worst_turn, angle_between(now[1].orientation(),
+                                                    now[0].orientation() * weld.rest));
+    for (std::size_t i = 0; i < 2; ++i) {
+      worst_place = std::max(worst_place, (now[i].position() - (one.position() +
+                                                                one.rotation() * offset[i]))
+                                              .norm());
+      worst_angle = std::max(worst_angle, angle_between(now[i].orientation(),
+                                                        one.orientation() * turn[i]));
+    }
+  });
+  EXPECT_LT(worst_offset, 1e-6);
+  EXPECT_LT(worst_turn, 1e-6);
+  EXPECT_LT(worst_place, 1e-6);
+  EXPECT_LT(worst_angle, 1e-6);
 }
 
 }  // namespace
