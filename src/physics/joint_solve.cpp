@@ -171,18 +171,19 @@ bool JointSystem::factorise() {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pattern;
   pattern.reserve(rows_.size());
   for (const JointRow& row : rows_) pattern.emplace_back(row.a, row.b);
+  if (!factor_) factor_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
   if (!analysed_ || pattern != pattern_) {
-    factor_.analyzePattern(k_);
+    factor_->analyzePattern(k_);
     pattern_ = std::move(pattern);
     analysed_ = true;
   }
-  factor_.factorize(k_);
-  return factor_.info() == Eigen::Success;
+  factor_->factorize(k_);
+  return factor_->info() == Eigen::Success;
 }
 
 Eigen::VectorXd JointSystem::solve(const Eigen::VectorXd& rhs) const {
   if (rhs.size() == 0) return rhs;
-  return factor_.solve(rhs);
+  return factor_->solve(rhs);
 }
 
 namespace {
@@ -306,12 +307,12 @@ void gather(const std::vector<JointRow>& rows, const Eigen::VectorXd& lambda,
 
 // Step 2: limits, motors and ranges by sequential impulses with the equality rows, at `states`;
 // momenta changed, poses moved by weight × the velocity change.
-void solve_bounded(std::span<const BodyModel> models, double dt, double weight, JointWorld& world,
-                   std::span<BodyState> states) {
+void solve_bounded(double dt, double weight, JointWorld& world, std::span<BodyState> states) {
+  const std::span<const BodyModel> models = world.models;
   std::vector<BoundedRow> rows;
   std::vector<OneSided> sides;
-  for (std::uint32_t j = 0; j < world.joints.size(); ++j) {
-    const Joint& joint = world.joints[j];
+  for (std::uint32_t j = 0; j < world.local.size(); ++j) {
+    const Joint& joint = world.local[j];
     const JointBodies at = bodies_of(joint, states);
     sides.clear();
     one_sided_rows(joint, at.a, at.b, sides);
@@ -334,7 +335,7 @@ void solve_bounded(std::span<const BodyModel> models, double dt, double weight, 
     }
   }
   if (rows.empty()) return;
-  world.system.build(world.joints, models, states);
+  world.system.build(world.local, models, states);
   for (const JointRow& row : world.system.rows()) rows.push_back({.row = row});
   const JointSystem& system = world.system;
   // Velocities while solving.
@@ -400,11 +401,12 @@ void solve_bounded(std::span<const BodyModel> models, double dt, double weight, 
 
 // Step 3: the poses onto the equality rows and off the passed limits, then the velocities onto
 // the equality rows.
-void project(std::span<const BodyModel> models, JointWorld& world, std::span<BodyState> states) {
+void project(JointWorld& world, std::span<BodyState> states) {
+  const std::span<const BodyModel> models = world.models;
   JointSystem& system = world.system;
   std::vector<Vec3> linear(states.size()), angular(states.size());
   for (int iteration = 0; iteration < kJointProjectionIterations; ++iteration) {
-    system.build_with_passed_limits(world.joints, models, states);
+    system.build_with_passed_limits(world.local, models, states);
     const std::vector<JointRow>& rows = system.rows();
     double worst = 0.0;
     Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows.size()));
@@ -416,7 +418,7 @@ void project(std::span<const BodyModel> models, JointWorld& world, std::span<Bod
     gather(rows, system.solve(rhs), linear, angular);
     apply_impulses(models, system, linear, angular, 1.0, false, states);
   }
-  system.build(world.joints, models, states);
+  system.build(world.local, models, states);
   const std::vector<JointRow>& rows = system.rows();
   if (rows.empty() || !system.factorise()) return;
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows.size()));
@@ -502,53 +504,75 @@ void JointForces::add(std::span<const BodyState> states, double t,
   solve_forces(joints_, models_, states, t, system_, wrenches, lambda);
 }
 
-std::vector<Wrench> joint_wrenches(std::span<const Joint> joints,
-                                   std::span<const BodyModel> models,
-                                   std::span<const BodyState> states, double t,
-                                   std::span<const JointImpulses> impulses, double dt) {
+std::vector<Wrench> joint_wrenches(const JointWorld& world, std::span<const BodyState> states,
+                                   double t) {
+  std::vector<BodyState> local;
+  for (const std::uint32_t i : world.members) local.push_back(states[i]);
+  const std::span<const BodyModel> models = world.models;
   JointSystem system;
-  std::vector<Wrench> body_wrenches(states.size());
-  for (const Joint& joint : joints) {
+  std::vector<Wrench> body_wrenches(local.size());
+  for (const Joint& joint : world.local) {
     if (joint.kind == JointKind::distance && joint.stiffness > 0.0) {
-      add_spring(joint, states, body_wrenches);
+      add_spring(joint, local, body_wrenches);
     }
   }
   Eigen::VectorXd lambda;
-  solve_forces(joints, models, states, t, system, body_wrenches, lambda);
-  std::vector<Wrench> out(joints.size());
-  std::size_t r = 0;
-  std::vector<JointRow> rows;
-  for (std::size_t j = 0; j < joints.size(); ++j) {
-    const Joint& joint = joints[j];
-    const JointBodies at = bodies_of(joint, states);
-    rows.clear();
-    equality_rows(joint, at.a, at.b, rows);
-    for (const JointRow& row : rows) {
-      const double l = lambda[static_cast<Eigen::Index>(r++)];
-      out[j].force += l * row.linear_a;
-      out[j].torque += l * row.angular_a;
-    }
+  solve_forces(world.local, models, local, t, system, body_wrenches, lambda);
+  std::vector<Wrench> out(world.local.size());
+  const std::vector<JointRow>& rows = system.rows();
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const double l = lambda[static_cast<Eigen::Index>(r)];
+    out[rows[r].joint].force += l * rows[r].linear_a;
+    out[rows[r].joint].torque += l * rows[r].angular_a;
+  }
+  for (std::size_t j = 0; j < world.local.size(); ++j) {
+    const Joint& joint = world.local[j];
     if (joint.kind == JointKind::distance && joint.stiffness > 0.0) {
-      std::vector<Wrench> one(states.size());
-      add_spring(joint, states, one);
+      std::vector<Wrench> one(local.size());
+      add_spring(joint, local, one);
       out[j].force += one[joint.a].force;
       out[j].torque += one[joint.a].torque;
     }
-    if (j < impulses.size() && dt > 0.0) {
+    if (j < world.impulses.size() && world.substep > 0.0) {
+      const JointBodies at = bodies_of(joint, local);
       const JointRow along = coordinate_row(joint, at.a, at.b);
-      const double net = impulses[j].lower - impulses[j].upper + impulses[j].motor;
-      out[j].force += net / dt * along.linear_a;
-      out[j].torque += net / dt * along.angular_a;
+      const JointImpulses& i = world.impulses[j];
+      const double net = i.lower - i.upper + i.motor;
+      out[j].force += net / world.substep * along.linear_a;
+      out[j].torque += net / world.substep * along.angular_a;
     }
   }
   return out;
 }
 
-void hold_joints(Integrator integrator, std::span<const BodyModel> models, double dt,
-                 JointWorld& world, std::span<BodyState> states) {
+JointWorld make_joint_world(std::vector<Joint> joints, std::span<const BodyModel> models) {
+  JointWorld world;
+  std::vector<std::uint32_t> local_of(models.size(), kWorldBody);
+  for (const Joint& joint : joints) {
+    local_of[joint.a] = 0;
+    if (joint.b != kWorldBody) local_of[joint.b] = 0;
+  }
+  for (std::uint32_t i = 0; i < models.size(); ++i) {
+    if (local_of[i] == kWorldBody) continue;
+    local_of[i] = static_cast<std::uint32_t>(world.members.size());
+    world.members.push_back(i);
+    world.models.push_back(models[i]);
+  }
+  world.held.assign(models.size(), 0);
+  for (const std::uint32_t i : world.members) world.held[i] = 1;
+  for (const Joint& joint : joints) {
+    if (joint.collide_connected || joint.b == kWorldBody) continue;
+    world.unpaired.push_back({std::min(joint.a, joint.b), std::max(joint.a, joint.b)});
+  }
+  std::sort(world.unpaired.begin(), world.unpaired.end());
+  world.local = joints;
+  for (Joint& joint : world.local) {
+    joint.a = local_of[joint.a];
+    if (joint.b != kWorldBody) joint.b = local_of[joint.b];
+  }
+  world.joints = std::move(joints);
   world.impulses.resize(world.joints.size());
-  solve_bounded(models, dt, impulse_position_weight(integrator, dt), world, states);
-  project(models, world, states);
+  return world;
 }
 
 int joint_substeps(double fastest, double dt) {
@@ -556,23 +580,61 @@ int joint_substeps(double fastest, double dt) {
   return static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(kMostJointSubsteps)));
 }
 
+void advance_joint_members(Integrator integrator, std::span<const BodyState> in, double t,
+                           double dt, JointWorld& world, std::span<BodyState> out) {
+  const std::size_t n = world.members.size();
+  world.start.resize(n);
+  world.end.resize(n);
+  for (std::size_t k = 0; k < n; ++k) world.start[k] = in[world.members[k]];
+  const std::span<const BodyModel> models = world.models;
+  const int substeps =
+      joint_substeps(fastest_joint_mode(world.local, models, world.start, t, world.system), dt);
+  const double h = dt / substeps;
+  world.substep = h;
+  const JointForces forces(world.local, models, world.system);
+  for (int k = 0; k < substeps; ++k) {
+    step_coupled(integrator, models, world.start, t + k * h, h, forces, world.end);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (models[i].is_static) world.end[i] = world.start[i];
+    }
+    solve_bounded(h, impulse_position_weight(integrator, h), world, world.end);
+    project(world, world.end);
+    world.start.swap(world.end);
+  }
+  for (std::size_t k = 0; k < n; ++k) out[world.members[k]] = world.start[k];
+}
+
+void hold_joint_members(Integrator integrator, double dt, JointWorld& world,
+                        std::span<BodyState> states) {
+  const std::size_t n = world.members.size();
+  world.end.resize(n);
+  for (std::size_t k = 0; k < n; ++k) world.end[k] = states[world.members[k]];
+  world.substep = dt;
+  solve_bounded(dt, impulse_position_weight(integrator, dt), world, world.end);
+  project(world, world.end);
+  for (std::size_t k = 0; k < n; ++k) states[world.members[k]] = world.end[k];
+}
+
+void project_joint_members(JointWorld& world, std::span<BodyState> states) {
+  const std::size_t n = world.members.size();
+  world.end.resize(n);
+  for (std::size_t k = 0; k < n; ++k) world.end[k] = states[world.members[k]];
+  project(world, world.end);
+  for (std::size_t k = 0; k < n; ++k) states[world.members[k]] = world.end[k];
+}
+
 void step_joints(Integrator integrator, std::span<const BodyModel> models,
                  std::span<const BodyState> in, double t, double dt, JointWorld& world,
                  std::span<BodyState> out) {
-  const int substeps =
-      joint_substeps(fastest_joint_mode(world.joints, models, in, t, world.system), dt);
-  const double h = dt / substeps;
-  world.substep = h;
-  const JointForces forces(world.joints, models, world.system);
-  std::vector<BodyState> start(in.begin(), in.end());
-  for (int k = 0; k < substeps; ++k) {
-    step_coupled(integrator, models, start, t + k * h, h, forces, out);
-    for (std::size_t i = 0; i < models.size(); ++i) {
-      if (models[i].is_static) out[i] = in[i];
+  std::size_t next = 0;  // the next member
+  for (std::uint32_t i = 0; i < models.size(); ++i) {
+    if (next < world.members.size() && world.members[next] == i) {
+      ++next;
+      continue;
     }
-    hold_joints(integrator, models, h, world, out);
-    if (k + 1 < substeps) std::copy(out.begin(), out.end(), start.begin());
+    out[i] = models[i].is_static ? in[i] : step(integrator, models[i], in[i], t, dt);
   }
+  advance_joint_members(integrator, in, t, dt, world, out);
 }
 
 }  // namespace tumble::physics

@@ -26,9 +26,12 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "physics/broad_phase.hpp"
 #include "physics/integrators.hpp"
 #include "physics/joints.hpp"
 
@@ -45,6 +48,17 @@ struct JointImpulses {
 // is analysed once and factorised again at each state.
 class JointSystem {
  public:
+  // Scratch: a copy starts afresh (the factorisation cannot be copied, and need not be).
+  JointSystem() = default;
+  JointSystem(const JointSystem&) {}
+  JointSystem& operator=(const JointSystem&) {
+    factor_.reset();
+    analysed_ = false;
+    return *this;
+  }
+  JointSystem(JointSystem&&) noexcept = default;
+  JointSystem& operator=(JointSystem&&) noexcept = default;
+
   // The rows of every joint at `states` (b of a joint held to the world, the world).
   void build(std::span<const Joint> joints, std::span<const BodyModel> models,
              std::span<const BodyState> states);
@@ -70,7 +84,7 @@ class JointSystem {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pattern_;  // the rows' bodies analysed
   std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> k_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+  std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> factor_;
   bool analysed_ = false;
 };
 
@@ -88,21 +102,35 @@ class JointForces final : public Coupling {
   JointSystem& system_;
 };
 
-// The force and torque each joint applies to its body a at `states` and time t (N, N m, world,
-// about a's centre): its equality rows' λ from the free step's solve, and its spring's; the
-// impulses of its limits and motor (`impulses`, over the step dt) as their mean force.
-std::vector<Wrench> joint_wrenches(std::span<const Joint> joints,
-                                   std::span<const BodyModel> models,
-                                   std::span<const BodyState> states, double t,
-                                   std::span<const JointImpulses> impulses, double dt /* s */);
-
-// What a world of joints keeps from step to step.
+// A world's joints, the bodies they hold, and what they keep from step to step.
 struct JointWorld {
-  std::vector<Joint> joints;
+  std::vector<Joint> joints;           // as placed: a and b index the world's bodies
+  std::vector<std::uint32_t> members;  // the bodies the joints hold, ascending
+  std::vector<Joint> local;            // the joints with a and b indexing `members`
+  std::vector<BodyModel> models;       // the members'
+  std::vector<char> held;              // per body of the world: whether it is a member
+  // The pairs of bodies a joint keeps from colliding (collide_connected false), sorted.
+  std::vector<BodyPair> unpaired;
+  bool holds(std::uint32_t body) const { return body < held.size() && held[body]; }
+  bool keeps_apart(const BodyPair& pair) const {
+    return std::binary_search(unpaired.begin(), unpaired.end(), pair);
+  }
   std::vector<JointImpulses> impulses;  // per joint, of the last (sub-)step
   double substep = 0.0;                 // s: the length of the last step's sub-steps
-  JointSystem system;
+  JointSystem system;  // of the local rows
+  JointSystem whole;   // of the joints' rows over the world's bodies (penalty contact's coupling)
+  std::vector<BodyState> start, end;  // scratch: the members' states
 };
+
+// The joint world of `joints` (placed on the bodies of `models`, physics/joints.hpp).
+JointWorld make_joint_world(std::vector<Joint> joints, std::span<const BodyModel> models);
+
+// The force and torque each joint applies to its body a at the world's `states` and time t (N,
+// N m, world frame, about a's centre), in the joints' order: its equality rows' λ from the free
+// step's solve at those states, its spring's force, and the mean force of its limit and motor
+// impulses over the last sub-step.
+std::vector<Wrench> joint_wrenches(const JointWorld& world, std::span<const BodyState> states,
+                                   double t /* s */);
 
 // The fastest small oscillation (rad/s) that the joints' forces at `states` give a body, from
 // their geometric stiffness (Tournier et al., "Stable Constrained Dynamics", SIGGRAPH 2015): a
@@ -130,16 +158,25 @@ inline constexpr double kJointProjectionTolerance = 1e-13;
 inline constexpr int kJointPasses = 100;
 inline constexpr double kJointTolerance = 1e-10;
 
-// Advances every body from `in` at t to t + dt (s) into `out` with the world's joints, by steps 1
-// to 3 above, in joint_substeps sub-steps for the joints' fastest mode at the start. Static
-// bodies stay where they are. No contact: physics/world_step.hpp adds it.
+// Advances the joints' members from the world's states `in` at t to t + dt (s) into `out` (the
+// world's too; other bodies untouched), by steps 1 to 3 above, in joint_substeps sub-steps for
+// the joints' fastest mode at the start. Static members stay where they are.
+void advance_joint_members(Integrator integrator, std::span<const BodyState> in, double t,
+                           double dt, JointWorld& world, std::span<BodyState> out);
+
+// Steps 2 and 3 on the world's `states` at the end of a step of dt (s), in place: for a free
+// step taken with JointForces over the world (penalty contact's).
+void hold_joint_members(Integrator integrator, double dt, JointWorld& world,
+                        std::span<BodyState> states);
+
+// Step 3 alone on the world's `states`, in place: after contacts have moved the members.
+void project_joint_members(JointWorld& world, std::span<BodyState> states);
+
+// Advances every body of `models` from `in` at t to t + dt (s) into `out`: the joints' members
+// by advance_joint_members, the others alone (`step`; a static body stays). No contact:
+// physics/world_step.hpp adds it.
 void step_joints(Integrator integrator, std::span<const BodyModel> models,
                  std::span<const BodyState> in, double t, double dt, JointWorld& world,
                  std::span<BodyState> out);
-
-// Steps 2 and 3 alone, on states at the end of a step of dt (s) that every body took under the
-// joint forces: limits, motors, ranges, then the projection.
-void hold_joints(Integrator integrator, std::span<const BodyModel> models, double dt,
-                 JointWorld& world, std::span<BodyState> states);
 
 }  // namespace tumble::physics

@@ -46,7 +46,7 @@ void PenaltyPairs::add(std::span<const BodyState> states, double /*t*/,
 void step_penalty_world(Integrator integrator, std::span<const BodyModel> models,
                         std::span<const BodyState> in, double t, double dt,
                         const ContactSettings& settings, PenaltyWorld& scratch,
-                        std::span<BodyState> out) {
+                        std::span<BodyState> out, JointWorld* joints) {
   const std::size_t count = models.size();
   scratch.pairs.clear();
   if (settings.collide_bodies) {
@@ -65,8 +65,30 @@ void step_penalty_world(Integrator integrator, std::span<const BodyModel> models
     }
     overlapping_pairs(scratch.bounds, scratch.order, scratch.candidates);
     for (const auto& [first, second] : scratch.candidates) {
-      scratch.pairs.emplace_back(scratch.colliders[first], scratch.colliders[second]);
+      const BodyPair pair(scratch.colliders[first], scratch.colliders[second]);
+      if (joints && joints->keeps_apart(pair)) continue;
+      scratch.pairs.push_back(pair);
     }
+  }
+  if (joints && !joints->joints.empty()) {
+    // The joints' forces after the springs', from every stage's states (the springs' wrenches are
+    // among the forces the joints' rows hold against), then their limits and the projection.
+    const PenaltyPairs springs(
+        models, {.stiffness = settings.stiffness, .damping = settings.damping}, scratch.pairs);
+    const JointForces held(joints->joints, models, joints->whole);
+    const struct Both final : Coupling {
+      const Coupling& first;
+      const Coupling& second;
+      Both(const Coupling& a, const Coupling& b) : first(a), second(b) {}
+      void add(std::span<const BodyState> states, double time,
+               std::span<Wrench> wrenches) const override {
+        first.add(states, time, wrenches);
+        second.add(states, time, wrenches);
+      }
+    } both(springs, held);
+    step_coupled(integrator, models, in, t, dt, both, out);
+    hold_joint_members(integrator, dt, *joints, out);
+    return;
   }
   if (scratch.pairs.empty()) {
     for (std::size_t i = 0; i < count; ++i) out[i] = step(integrator, models[i], in[i], t, dt);

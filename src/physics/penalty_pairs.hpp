@@ -10,6 +10,7 @@
 #include "physics/broad_phase.hpp"
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
+#include "physics/joint_solve.hpp"
 
 namespace tumble::physics {
 
@@ -52,11 +53,14 @@ struct PenaltyWorld {
 // whose bounds, grown by how far each body's points move in the step at its starting speeds
 // plus kPenaltyReach, overlap at the start of the step are coupled by PenaltyPairs through the
 // whole step (step_coupled); with no such pair, each body takes its own step as `step` gives it.
-// Penalty contact with planes is each body's own PenaltyContact law, as without pairs.
+// Penalty contact with planes is each body's own PenaltyContact law, as without pairs. With
+// `joints`, their forces couple the bodies too (JointForces, after the springs'), their limits,
+// motors and projection follow the step (hold_joint_members), and a joint's two bodies collide
+// only if it says so.
 void step_penalty_world(Integrator integrator, std::span<const BodyModel> models,
                         std::span<const BodyState> in, double t, double dt,
                         const ContactSettings& settings, PenaltyWorld& scratch,
-                        std::span<BodyState> out);
+                        std::span<BodyState> out, JointWorld* joints = nullptr);
 
 // How much further than its motion at the start of a step a body's bounds reach (m): a pair that
 // comes within it over a step (pushed there by springs, say) is found at the next step, a fraction

@@ -222,6 +222,19 @@ double impulse_position_weight(Integrator integrator, double h) {
   return 0.5 * h;
 }
 
+void take_free_step(const StepContext& context, std::uint32_t body, BodyState end) {
+  PlaneAdvance& out = context.scratch.advances[body];
+  out.end = std::move(end);
+  out.remaining = context.dt;
+  out.slow_impact = false;
+  out.touching = !context.planes.empty() &&
+                 touching(out.end, context.models[body].shape, context.planes,
+                          context.scratch.separations[body], out.rotation);
+  if (out.touching || context.planes.empty()) return;
+  context.memory.planes[body].resize(context.planes.size());
+  for (Manifold& m : context.memory.planes[body]) m.count = 0;
+}
+
 void advance_among_planes(const StepContext& context, std::uint32_t body, SlowImpacts slow) {
   const Integrator integrator = context.integrator;
   const BodyModel& model = context.models[body];
@@ -314,7 +327,9 @@ BodyState rest_on_planes(const StepContext& context, std::uint32_t body) {
   const PlaneAdvance& advance = context.scratch.advances[body];
   const BodyModel& model = context.models[body];
   const IslandBody island{.model = &model,
-                          .start = holds_energy(context.integrator) ? &context.in[body] : nullptr,
+                          .start = holds_energy(context.integrator) && !held_by_joints(context, body)
+                                       ? &context.in[body]
+                                       : nullptr,
                           .end = advance.end,
                           .rotation = advance.rotation,
                           .weight = impulse_position_weight(context.integrator, advance.remaining)};

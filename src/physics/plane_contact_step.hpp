@@ -42,6 +42,11 @@ enum class SlowImpacts { at_their_time, in_the_solve };
 // end.
 void advance_among_planes(const StepContext& context, std::uint32_t body, SlowImpacts slow);
 
+// Takes `end` as the body's free step, taken elsewhere (a joint's member moves with the others,
+// physics/joint_solve.hpp), touching the planes or not, with no impact at its time: they are left
+// to its island's solve, as SlowImpacts::in_the_solve leaves them.
+void take_free_step(const StepContext& context, std::uint32_t body, BodyState end);
+
 // A body as the rows of its plane contacts see it: its index in the world, its index among
 // scratch.rows.bodies, and its rotation (body to world) at the pose the rows are for.
 struct BodyInRows {

@@ -11,6 +11,7 @@
 #include "physics/contact_island.hpp"
 #include "physics/contact_memory.hpp"
 #include "physics/integrators.hpp"
+#include "physics/joint_solve.hpp"
 #include "physics/substep_island.hpp"
 
 namespace tumble::physics {
@@ -99,7 +100,14 @@ struct StepContext {
   ContactMemory& memory;
   StepScratch& scratch;
   std::span<BodyState> out;  // at t + dt
+  JointWorld* joints = nullptr;  // the world's joints, if it has any
 };
+
+// Whether body i is held by a joint: it moves with the joint's other body (its free step is
+// theirs together) and its energy is not its own to hold.
+inline bool held_by_joints(const StepContext& context, std::uint32_t i) {
+  return context.joints && context.joints->holds(i);
+}
 
 // The members of an island.
 inline std::span<const std::uint32_t> members_of(std::uint32_t island, const StepScratch& scratch) {

@@ -36,6 +36,8 @@ void advance_bodies(const StepContext& context) {
     const BodyState& in = context.in[i];
     if (context.models[i].is_static) {  // where it stands, touching no plane
       advance = {.end = in, .rotation = in.rotation(), .remaining = context.dt};
+    } else if (held_by_joints(context, i)) {
+      continue;  // below, with the joints' other members
     } else if (context.memory.asleep[i]) {
       // Unmoved, and still in its island: its manifolds keep the impulses it fell asleep with.
       advance = {.end = in, .rotation = in.rotation(), .remaining = context.dt, .touching = true};
@@ -45,6 +47,13 @@ void advance_bodies(const StepContext& context) {
     } else {
       advance_among_planes(context, i, SlowImpacts::at_their_time);
     }
+  }
+  if (!context.joints) return;
+  // The joints' members together, under their joints, their plane contacts left to the solve.
+  advance_joint_members(context.integrator, context.in, context.t, context.dt, *context.joints,
+                        context.out);
+  for (const std::uint32_t i : context.joints->members) {
+    if (!context.models[i].is_static) take_free_step(context, i, context.out[i]);
   }
 }
 
@@ -134,6 +143,7 @@ void find_pairs(const StepContext& context) {
     const std::uint32_t b = scratch.colliders[candidate.second];
     if (models[a].is_static && models[b].is_static) continue;
     const BodyPair bodies{a, b};
+    if (context.joints && context.joints->keeps_apart(bodies)) continue;
     while (previous < last.size() && last[previous].bodies < bodies) ++previous;
     const PairContact* before =
         previous < last.size() && last[previous].bodies == bodies ? &last[previous] : nullptr;
@@ -264,6 +274,13 @@ bool can_sleep(const BodyModel& model) {
   });
 }
 
+bool holds_joint_members(const StepContext& context, std::uint32_t island) {
+  if (!context.joints) return false;
+  const auto members = members_of(island, context.scratch);
+  return std::any_of(members.begin(), members.end(),
+                     [&](std::uint32_t i) { return context.joints->holds(i); });
+}
+
 bool island_asleep(const StepContext& context, std::uint32_t island) {
   const auto members = members_of(island, context.scratch);
   return std::all_of(members.begin(), members.end(),
@@ -324,7 +341,8 @@ void settle(const StepContext& context, int islands) {
     if (context.scratch.island_of[i] == kNone) still_for[i] = 0.0;
   }
   for (std::uint32_t island = 0; island < static_cast<std::uint32_t>(islands); ++island) {
-    if (island_asleep(context, island)) continue;
+    // A joint's members do not sleep: what holds them reaches past the island.
+    if (island_asleep(context, island) || holds_joint_members(context, island)) continue;
     const auto members = members_of(island, context.scratch);
     bool sleeps = true;
     for (const std::uint32_t i : members) {
@@ -341,7 +359,20 @@ void settle(const StepContext& context, int islands) {
 void step_bodies_alone(const StepContext& context) {
   ContactMemory& memory = context.memory;
   memory.pairs.clear();
+  if (context.joints) {
+    advance_joint_members(context.integrator, context.in, context.t, context.dt,
+                          *context.joints, context.out);
+  }
+  bool moved_members = false;
   for (std::uint32_t i = 0; i < context.in.size(); ++i) {
+    if (held_by_joints(context, i)) {  // its free step is the joints'; planes may stop it
+      if (context.models[i].is_static || context.planes.empty()) continue;
+      take_free_step(context, i, context.out[i]);
+      if (!context.scratch.advances[i].touching) continue;
+      context.out[i] = rest_on_planes(context, i);
+      moved_members = true;
+      continue;
+    }
     if (memory.asleep[i] || context.models[i].is_static) {  // nothing can move it
       context.out[i] = context.in[i];
       continue;
@@ -361,6 +392,8 @@ void step_bodies_alone(const StepContext& context) {
       fall_asleep(context, i);
     }
   }
+  // Planes moved members apart from each other: onto the joints again.
+  if (moved_members) project_joint_members(*context.joints, context.out);
 }
 
 // Every per-body list of the memory and the scratch sized to the world's bodies.
@@ -404,12 +437,21 @@ void solve_islands(const StepContext& context, int islands) {
       // with no other body in the world.
       const std::uint32_t i = scratch.members[scratch.member_offsets[k]];
       context.out[i] = rest_on_planes(context, i);
-    } else if (converges(context, k)) {
+    } else if (holds_joint_members(context, k) || converges(context, k)) {
+      // An island with joints' members takes their free step, joint forces and all.
       solve_converged(context, k);
     } else {
       solve_substepped(context, k);
     }
   }
+}
+
+// Whether a joint's member was in an island: its contacts may have moved it off its joints.
+bool contacts_moved_members(const StepContext& context) {
+  if (!context.joints) return false;
+  const std::vector<std::uint32_t>& members = context.joints->members;
+  return std::any_of(members.begin(), members.end(),
+                     [&](std::uint32_t i) { return context.scratch.island_of[i] != kNone; });
 }
 
 }  // namespace
@@ -423,7 +465,7 @@ bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& se
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t, double dt,
                 const std::vector<Plane>& planes, const ContactSettings& settings,
-                WorldContacts& contacts, std::span<BodyState> out) {
+                WorldContacts& contacts, std::span<BodyState> out, JointWorld* joints) {
   size_for(in.size(), contacts);
   const StepContext context{.integrator = integrator,
                             .models = models,
@@ -434,7 +476,8 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
                             .settings = settings,
                             .memory = contacts.memory,
                             .scratch = contacts.scratch,
-                            .out = out};
+                            .out = out,
+                            .joints = joints && !joints->joints.empty() ? joints : nullptr};
   if (!pairs_possible(models, settings)) {
     step_bodies_alone(context);
     return;
@@ -455,6 +498,7 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
   }
   leave_slow_impacts_to_the_solve(context, islands);
   solve_islands(context, islands);
+  if (contacts_moved_members(context)) project_joint_members(*context.joints, out);
   if (settings.sleep) settle(context, islands);
   contacts.memory.pairs.swap(scratch.found);
 }

@@ -55,9 +55,14 @@ bool pairs_possible(std::span<const BodyModel> models, const ContactSettings& se
 // collide, or settings.collide_bodies false) steps each body alone among the planes, as its
 // island of one would be, with no broad phase and no islands: a scene of one box pays for
 // neither. `contacts` carries the world's ContactMemory from step to step, and its scratch.
+// With `joints`, their members take their free steps together under the joints
+// (advance_joint_members, physics/joint_solve.hpp) and leave their impacts with planes to the
+// solve; an island holding one is solved to convergence from there, and after the islands'
+// solves the members are projected onto their joints again. They never sleep, and a joint's two
+// bodies collide only if it says so.
 void step_world(Integrator integrator, std::span<const BodyModel> models,
                 std::span<const BodyState> in, double t /* s */, double dt /* s */,
                 const std::vector<Plane>& planes, const ContactSettings& settings,
-                WorldContacts& contacts, std::span<BodyState> out);
+                WorldContacts& contacts, std::span<BodyState> out, JointWorld* joints = nullptr);
 
 }  // namespace tumble::physics

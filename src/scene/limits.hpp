@@ -27,6 +27,8 @@ inline constexpr std::int64_t kMaxBodies = 1000;
 // five minutes of RK4 on boxes here (285 ns a step, physics_bench).
 inline constexpr std::int64_t kMaxBodySteps = 1'000'000'000;
 inline constexpr std::int64_t kMaxForcesPerBody = 100;
+// Two joints a body: a chain of every body, a ladder, a bridge.
+inline constexpr std::int64_t kMaxJoints = 2 * kMaxBodies;
 // Every body is tested against every plane at each step: a room and a few ramps need a dozen.
 inline constexpr std::int64_t kMaxPlanes = 64;
 // Points written for one hull (a mesh may have any number of vertices: its hull is reduced).

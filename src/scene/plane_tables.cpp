@@ -6,6 +6,7 @@
 
 #include "physics/pair_contact.hpp"
 
+#include "scene/joint_tables.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene_builder.hpp"
 #include "sim/simulation.hpp"
@@ -169,6 +170,7 @@ void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
       const BodySpec& second = scene.bodies[b];
       if (lower(order[m]) > scene.bodies[order[n]].position.x() + radius(order[n])) break;
       if (first.is_static && second.is_static) continue;  // a board of pegs may be one piece
+      if (kept_from_colliding(scene, a, b)) continue;     // the links of a chain may overlap
       if ((first.position - second.position).norm() >= radius(a) + radius(b)) continue;
       const double overlap = start_overlap(first, second);
       if (!(overlap > kStartOverlapAllowed)) continue;

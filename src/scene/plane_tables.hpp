@@ -19,8 +19,8 @@ physics::ContactSettings read_contact_settings(TableReader& physics);
 // plane. Needs scene.bodies read.
 void read_planes(TableReader& root, Scene& scene);
 
-// Refuses two colliding bodies whose boxes overlap at the start, naming both. Needs scene.bodies
-// and scene.physics read.
+// Refuses two colliding bodies whose boxes overlap at the start, naming both, but for two that a
+// joint keeps from colliding. Needs scene.bodies, scene.physics and scene.joints read.
 void refuse_overlapping_bodies(const TableReader& root, const Scene& scene);
 
 }  // namespace tumble::scene::detail

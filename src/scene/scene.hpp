@@ -14,6 +14,7 @@
 #include "physics/forces.hpp"
 #include "physics/hull_shape.hpp"
 #include "physics/integrators.hpp"
+#include "physics/joints.hpp"
 #include "physics/rigid_body.hpp"
 #include "physics/shapes.hpp"
 #include "scene/overlays.hpp"
@@ -56,6 +57,28 @@ struct PlaneSpec {
   physics::Material material = {};                // restitution 0, friction 0.5
   bool visible = true;
   double size[2] = {20.0, 20.0};  // drawn extent along the plane's two in-plane axes (m)
+};
+
+// A [[joints]] table, as written: its anchors and axis in the world frame at t = 0, its bodies by
+// index (physics::kWorldBody for the world). scene_builder places it on the bodies' start.
+struct JointSpec {
+  std::string name;
+  physics::JointKind kind = physics::JointKind::ball;
+  std::uint32_t body_a = 0;
+  std::uint32_t body_b = physics::kWorldBody;
+  physics::Vec3 anchor_a = physics::Vec3::Zero();  // world frame at t = 0 (m)
+  physics::Vec3 anchor_b = physics::Vec3::Zero();  // the same point but for a distance (m)
+  physics::Vec3 axis = physics::Vec3::UnitZ();     // hinge, slider: world frame at t = 0
+  std::optional<physics::JointLimits> limits;      // rad (hinge) or m (slider)
+  std::optional<physics::JointMotor> motor;
+  // Distance: its range (m); both the anchors' distance at t = 0 unless written (a rod). With
+  // stiffness > 0 (N/m, damping N s/m) a spring of that rest length, the range only a stop.
+  double min_length = 0.0;
+  double max_length = 0.0;
+  double stiffness = 0.0;
+  double damping = 0.0;
+  bool collide_connected = false;
+  bool visible = true;  // drawn: a rod or string between a distance's anchors, a pin at others'
 };
 
 struct PhysicsSettings {
@@ -102,6 +125,7 @@ struct Scene {
   PhysicsSettings physics;
   std::vector<BodySpec> bodies;
   std::vector<PlaneSpec> planes;  // in the order written; none means no contact code runs
+  std::vector<JointSpec> joints;  // [[joints]], in the order written; none means no joint code runs
   // Rendering. The ground's height, when not written, is chosen below the whole motion; a scene
   // with planes has no ground_height (its floor is a plane, app/plane_view.hpp).
   common::RenderSettings render;

@@ -74,6 +74,22 @@ physics::BodyModel body_model(const Scene& scene, const BodySpec& body) {
   return model;
 }
 
+physics::Joint joint(const JointSpec& spec, std::span<const physics::BodyState> initial) {
+  physics::Joint out = physics::place_joint(spec.kind, spec.body_a, spec.body_b, initial,
+                                            spec.anchor_a, spec.anchor_b, spec.axis);
+  out.name = spec.name;
+  out.limits = spec.limits;
+  out.motor = spec.motor;
+  if (spec.kind == physics::JointKind::distance) {
+    out.min_length = spec.min_length;
+    out.max_length = spec.max_length;
+    out.stiffness = spec.stiffness;
+    out.damping = spec.damping;
+  }
+  out.collide_connected = spec.collide_connected;
+  return out;
+}
+
 sim::Simulation build_simulation(const Scene& scene) {
   std::vector<physics::BodyModel> models;
   std::vector<physics::BodyState> initial;
@@ -81,13 +97,16 @@ sim::Simulation build_simulation(const Scene& scene) {
     models.push_back(body_model(scene, body));
     initial.push_back(initial_state(body));
   }
+  std::vector<physics::Joint> joints;
+  for (const JointSpec& spec : scene.joints) joints.push_back(joint(spec, initial));
   // Impulse contact is the world step's; penalty contact is each body's force law (above).
   std::vector<physics::Plane> planes;
   if (scene.physics.contact.method == physics::ContactMethod::impulse) {
     for (const PlaneSpec& spec : scene.planes) planes.push_back(plane(spec));
   }
   return sim::Simulation(std::move(models), std::move(initial), scene.physics.integrator,
-                         scene.physics.dt, std::move(planes), scene.physics.contact);
+                         scene.physics.dt, std::move(planes), scene.physics.contact,
+                         std::move(joints));
 }
 
 }  // namespace tumble::scene

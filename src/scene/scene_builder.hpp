@@ -1,6 +1,8 @@
 // From scene data to physics objects.
 #pragma once
 
+#include <span>
+
 #include "scene/scene.hpp"
 #include "sim/simulation.hpp"
 
@@ -16,6 +18,9 @@ std::int64_t step_count(const Scene& scene);
 physics::Plane plane(const PlaneSpec& spec);
 // A body's model: mass, laws, box and material; with penalty contact, its PenaltyContact law.
 physics::BodyModel body_model(const Scene& scene, const BodySpec& body);
+// The joint of `spec` placed on the bodies' states at t = 0 (`initial`, one per body).
+physics::Joint joint(const JointSpec& spec, std::span<const physics::BodyState> initial);
+
 sim::Simulation build_simulation(const Scene& scene);
 
 }  // namespace tumble::scene

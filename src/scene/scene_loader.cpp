@@ -1,5 +1,6 @@
 #include "scene/scene_loader.hpp"
 
+#include "scene/joint_tables.hpp"
 #include "scene/key_depth.hpp"
 #include "scene/limits.hpp"
 #include "scene/mesh_file.hpp"
@@ -424,6 +425,7 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     fail_on_dt(what);
   }
   read_planes(in, scene);
+  read_joints(in, scene);
   refuse_overlapping_bodies(in, scene);
   read_render_tables(in, scene);
   read_overlays(in, scene);

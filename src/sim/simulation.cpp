@@ -27,8 +27,7 @@ Simulation::Simulation(std::vector<physics::BodyModel> models,
   } else if (pairs) {
     stepping_ = Stepping::penalty_world;
   }
-  joints_.joints = std::move(joints);
-  joints_.impulses.resize(joints_.joints.size());
+  joints_ = physics::make_joint_world(std::move(joints), models_);
   if (!joints_.joints.empty() && stepping_ == Stepping::alone) stepping_ = Stepping::joint_world;
 }
 
@@ -74,11 +73,11 @@ void Simulation::step() {
   switch (stepping_) {
     case Stepping::impulse_world:
       physics::step_world(integrator_, models_, previous_, t, dt_, planes_, contact_, contacts_,
-                          current_);
+                          current_, &joints_);
       break;
     case Stepping::penalty_world:
       physics::step_penalty_world(integrator_, models_, previous_, t, dt_, contact_, penalty_,
-                                  current_);
+                                  current_, &joints_);
       break;
     case Stepping::joint_world:
       physics::step_joints(integrator_, models_, previous_, t, dt_, joints_, current_);

@@ -68,9 +68,8 @@ class Simulation {
   const std::vector<physics::BodyModel>& models() const { return models_; }
   const std::vector<physics::BodyState>& current() const { return current_; }
   const std::vector<physics::BodyState>& previous() const { return previous_; }
-  const std::vector<physics::Joint>& joints() const { return joints_.joints; }
-  // Each joint's limit and motor impulses of the last step (N s or N m s).
-  const std::vector<physics::JointImpulses>& joint_impulses() const { return joints_.impulses; }
+  // The joints and what they keep (their last impulses, for joint_wrenches).
+  const physics::JointWorld& joints() const { return joints_; }
 
  private:
   std::vector<physics::BodyModel> models_;

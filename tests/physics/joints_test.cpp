@@ -117,9 +117,9 @@ PendulumRun swing(double theta0, Integrator integrator, double dt, double second
   std::vector<BodyState> states = {make_state(
       models[0].constants, pivot + Vec3(std::sin(theta0), -std::cos(theta0), 0.0), Vec3::Zero(),
       Quat::Identity(), Vec3::Zero())};
-  JointWorld world;
-  world.joints.push_back(
-      place_joint(JointKind::distance, 0, kWorldBody, states, states[0].position(), pivot));
+  JointWorld world = make_joint_world(
+      {place_joint(JointKind::distance, 0, kWorldBody, states, states[0].position(), pivot)},
+      models);
   const auto energy = [&](const BodyState& s) { return kinetic_energy(s) + kG * s.position().y(); };
   const double start = energy(states[0]);
   PendulumRun run;
@@ -185,6 +185,7 @@ struct DoublePendulum {
         place_joint(JointKind::distance, 0, kWorldBody, states, states[0].position(), pivot));
     world.joints.push_back(place_joint(JointKind::distance, 1, 0, states, states[1].position(),
                                        states[0].position()));
+    world = make_joint_world(world.joints, models);
   }
   double energy() const {
     double e = 0.0;
@@ -272,6 +273,7 @@ template <class Watch>
 void run(Integrator integrator, const std::vector<BodyModel>& models,
          std::vector<BodyState>& states, JointWorld& world, double dt, double seconds,
          Watch&& watch) {
+  world = make_joint_world(world.joints, models);  // as the test set its joints
   std::vector<BodyState> next(states.size());
   const auto steps = static_cast<int>(std::llround(seconds / dt));
   for (int n = 0; n < steps; ++n) {
