@@ -69,10 +69,16 @@ Eigen::Vector2d default_offset(common::Anchor anchor) {
                                                      : 0.0);
 }
 
+std::vector<JointName> joint_names(const Scene& scene) {
+  std::vector<JointName> out;
+  for (const JointSpec& joint : scene.joints) out.push_back({joint.name, joint.kind});
+  return out;
+}
+
 TextOverlay read_text(TableReader& in, const Scene& scene) {
   TextOverlay out;
   const Result<TextTemplate> text =
-      parse_text_template(in.required_string("text"), body_names(scene));
+      parse_text_template(in.required_string("text"), body_names(scene), joint_names(scene));
   if (!text) in.fail("text", text.error());
   out.text = *text;
   const std::string anchor = in.optional_string("anchor", "top-left");
@@ -138,11 +144,45 @@ physics::Vec3 on_body(TableReader& in, const BodySpec& body, const physics::Vec3
   return body.hull && in.has("point") ? body.hull->body_point(point) : point;
 }
 
+// `joint = "NAME"` of a joint_force vector: drawn at the joint's anchor on its body_a.
+void read_joint_force(TableReader& in, const Scene& scene, VectorOverlay& out) {
+  for (const char* key : {"body", "point"}) {
+    if (in.has(key)) {
+      in.fail(key, std::string("a joint's force is drawn on its body_a at its anchor: it takes "
+                               "`joint`, not ") +
+                       key);
+    }
+  }
+  const std::string name = in.required_string("joint");
+  for (std::size_t j = 0; j < scene.joints.size(); ++j) {
+    if (scene.joints[j].name != name) continue;
+    out.joint = j;
+    out.body = scene.joints[j].body_a;
+    return;
+  }
+  std::string known;
+  for (const JointSpec& joint : scene.joints) known += (known.empty() ? "" : ", ") + joint.name;
+  in.fail("joint", "no joint is named " + in_quotes(name) +
+                       (known.empty() ? " (the scene has no [[joints]])"
+                                      : " (joints: " + known + ")"));
+}
+
 VectorOverlay read_vector(TableReader& in, const Scene& scene) {
   VectorOverlay out;
-  out.body = read_body(in, scene);
   const toml::node& quantity = in.required("quantity");
   const std::string name = quantity.is_string() ? *quantity.value<std::string>() : "";
+  if (name == "joint_force") {
+    out.quantity = VectorQuantity::joint_force;
+    read_joint_force(in, scene, out);
+    if (in.has("law")) in.fail("law", "only a vector of quantity = \"force\" takes a law");
+    out.scale = in.optional_number("scale", out.scale);
+    require_positive(in, "scale", out.scale);
+    out.color = in.optional_rgba("color", kForceColor);
+    out.label = in.optional_string("label", out.label);
+    return out;
+  }
+  if (in.has("joint")) in.fail("joint", "only a vector of quantity = \"joint_force\" takes a joint");
+  out.body = read_body(in, scene);
   const std::pair<std::string_view, std::pair<VectorQuantity, Rgba>> kNames[] = {
       {"velocity", {VectorQuantity::velocity, kVelocityColor}},
       {"angular_velocity", {VectorQuantity::angular_velocity, kAngularVelocityColor}},
@@ -157,7 +197,7 @@ VectorOverlay read_vector(TableReader& in, const Scene& scene) {
                                      [&](const auto& entry) { return entry.first == name; });
     if (!quantity.is_string() || known == std::end(kNames)) {
       in.fail("quantity",
-              "expected velocity, angular_velocity, angular_momentum, force or a "
+              "expected velocity, angular_velocity, angular_momentum, force, joint_force or a "
               "constant vector [x, y, z], found " +
                   (quantity.is_string() ? in_quotes(name) : std::string(type_name(quantity))));
     }

@@ -31,12 +31,21 @@ enum class BodyQuantity {
   kinetic_energy     // translational + rotational (J)
 };
 
-// One {…} of a text overlay, resolved against the scene's bodies at load.
+// What a text placeholder reads from a joint (physics::joint_coordinate, physics::joint_wrenches).
+enum class JointQuantity {
+  angle,  // a hinge's angle from t = 0 (rad)
+  speed,  // a hinge's rate (rad/s), a slider's (m/s), a distance's rate of length (m/s)
+  force   // the force it applies to body_a, world frame (N)
+};
+
+// One {…} of a text overlay, resolved against the scene's bodies and joints at load.
 struct Placeholder {
-  enum class Source { time, frame, body };
+  enum class Source { time, frame, body, joint };
   Source source = Source::time;
   std::size_t body = 0;  // index into Scene::bodies, for Source::body
   BodyQuantity quantity = BodyQuantity::position;
+  std::size_t joint = 0;  // index into Scene::joints, for Source::joint
+  JointQuantity joint_quantity = JointQuantity::angle;
   int component = -1;     // 0, 1, 2 for .x .y .z of a vector quantity; -1 for the whole value
   int precision = 2;      // printf's precision: digits after the point (f, e), significant (g)
   char conversion = 'f';  // printf's f, e or g; {frame} is a whole number and takes neither
@@ -68,12 +77,14 @@ enum class VectorQuantity {
   angular_velocity,  // rad/s
   angular_momentum,  // about the centre (kg m²/s)
   force,             // the sum of some of the body's force laws (N)
-  constant           // a fixed world vector
+  constant,          // a fixed world vector
+  joint_force        // the force a joint applies to its body_a (N), at its anchor
 };
 
 // An arrow from a body's centre (or a body point) along one of its vectors.
 struct VectorOverlay {
-  std::size_t body = 0;  // index into Scene::bodies
+  std::size_t body = 0;   // index into Scene::bodies (a joint's body_a for joint_force)
+  std::size_t joint = 0;  // for joint_force: index into Scene::joints
   VectorQuantity quantity = VectorQuantity::velocity;
   std::vector<std::size_t> laws;  // for force: indices into the body's forces, summed
   physics::Vec3 constant = physics::Vec3::Zero();  // for constant: world frame

@@ -84,9 +84,58 @@ Result<Placeholder> parse_body_value(std::string_view name,
                ", optionally with .x, .y or .z)"};
 }
 
+// JOINT.QUANTITY or JOINT.force.C for one of the joints; none when no joint's name starts it.
+std::optional<Result<Placeholder>> parse_joint_value(std::string_view name,
+                                                     const std::vector<JointName>& joints) {
+  using physics::JointKind;
+  constexpr std::pair<std::string_view, JointQuantity> kJointQuantities[] = {
+      {"angle", JointQuantity::angle},
+      {"speed", JointQuantity::speed},
+      {"force", JointQuantity::force}};
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const std::string& joint = joints[j].name;
+    if (name.size() <= joint.size() + 1 || !name.starts_with(joint) || name[joint.size()] != '.') {
+      continue;
+    }
+    std::string_view rest = name.substr(joint.size() + 1);
+    int component = -1;
+    if (rest.size() > 2 && rest[rest.size() - 2] == '.' && rest.back() >= 'x' &&
+        rest.back() <= 'z') {
+      component = rest.back() - 'x';
+      rest = rest.substr(0, rest.size() - 2);
+    }
+    for (const auto& [text, quantity] : kJointQuantities) {
+      if (rest != text) continue;
+      const JointKind kind = joints[j].kind;
+      std::string what(1, '"');
+      what.append(joint).append("\" is a ").append(physics::joint_kind_name(kind)).append(" joint");
+      if (quantity == JointQuantity::angle && kind != JointKind::hinge) {
+        return Result<Placeholder>(Error{"only a hinge has an angle (" + what + ")"});
+      }
+      if (quantity == JointQuantity::speed &&
+          (kind == JointKind::ball || kind == JointKind::fixed)) {
+        return Result<Placeholder>(
+            Error{"a hinge, a slider or a distance has a speed (" + what + ")"});
+      }
+      if (component >= 0 && quantity != JointQuantity::force) {
+        return Result<Placeholder>(Error{std::string(text) + " is a number, it has no component"});
+      }
+      Placeholder out{.source = Placeholder::Source::joint};
+      out.joint = j;
+      out.joint_quantity = quantity;
+      out.component = component;
+      return Result<Placeholder>(out);
+    }
+    return Result<Placeholder>(
+        Error{"unknown quantity of joint "" + joint + "" (expected angle, speed or force)"});
+  }
+  return std::nullopt;
+}
+
 // The placeholder between the braces: a name, then an optional :format.
 Result<Placeholder> parse_placeholder(std::string_view inside,
-                                      const std::vector<std::string>& body_names) {
+                                      const std::vector<std::string>& body_names,
+                                      const std::vector<JointName>& joints) {
   const std::size_t colon = inside.find(':');
   const std::string_view name = inside.substr(0, colon);
   Placeholder out;
@@ -94,6 +143,9 @@ Result<Placeholder> parse_placeholder(std::string_view inside,
     out.source = Placeholder::Source::time;
   } else if (name == "frame") {
     out.source = Placeholder::Source::frame;
+  } else if (std::optional<Result<Placeholder>> joint = parse_joint_value(name, joints)) {
+    if (!*joint) return *joint;
+    out = **joint;
   } else {
     Result<Placeholder> value = parse_body_value(name, body_names);
     if (!value) return value;
@@ -125,7 +177,8 @@ bool is_vector(BodyQuantity quantity) {
 }
 
 Result<TextTemplate> parse_text_template(std::string_view text,
-                                         const std::vector<std::string>& body_names) {
+                                         const std::vector<std::string>& body_names,
+                                         const std::vector<JointName>& joints) {
   TextTemplate out;
   out.pieces.emplace_back();
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -142,7 +195,7 @@ Result<TextTemplate> parse_text_template(std::string_view text,
         return Error{"\"{\" without its \"}\" (write \"{{\" for a brace)"};
       }
       const std::string_view inside = text.substr(i + 1, close - i - 1);
-      Result<Placeholder> value = parse_placeholder(inside, body_names);
+      Result<Placeholder> value = parse_placeholder(inside, body_names, joints);
       if (!value) {
         // Appended one by one: GCC 12's -Wrestrict misreads "{" + std::string (a known bug).
         std::string what(1, '{');

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/result.hpp"
+#include "physics/joints.hpp"
 #include "scene/overlays.hpp"
 
 namespace tumble::scene {
@@ -17,11 +18,20 @@ std::string_view quantity_name(BodyQuantity quantity);
 // Whether the quantity is a vector (x, y, z) rather than a number.
 bool is_vector(BodyQuantity quantity);
 
-// Parses `text`: `{{` and `}}` stand for braces; a placeholder is {time}, {frame} or
-// {NAME.QUANTITY} with NAME one of `body_names` and an optional component .x, .y or .z of a
-// vector quantity, then an optional printf-like format :.Nf, :.Ne or :.Ng (N from 0 to 17;
-// default .2f). An error quotes the placeholder and says what is wrong with it.
+// A joint as texts name it.
+struct JointName {
+  std::string name;
+  physics::JointKind kind = physics::JointKind::ball;
+};
+
+// Parses `text`: `{{` and `}}` stand for braces; a placeholder is {time}, {frame},
+// {NAME.QUANTITY} with NAME one of `body_names`, or {JOINT.angle}, {JOINT.speed} or
+// {JOINT.force} with JOINT one of `joints` (an angle a hinge's, a speed a hinge's, slider's or
+// distance's), each with an optional component .x, .y or .z of a vector quantity, then an
+// optional printf-like format :.Nf, :.Ne or :.Ng (N from 0 to 17; default .2f). An error quotes
+// the placeholder and says what is wrong with it.
 Result<TextTemplate> parse_text_template(std::string_view text,
-                                         const std::vector<std::string>& body_names);
+                                         const std::vector<std::string>& body_names,
+                                         const std::vector<JointName>& joints = {});
 
 }  // namespace tumble::scene

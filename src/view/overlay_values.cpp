@@ -45,18 +45,35 @@ physics::Vec3 body_quantity(BodyQuantity quantity, const physics::BodyState& sta
 
 std::string format_value(const scene::Placeholder& value,
                          const std::vector<physics::BodyState>& states, double t,
-                         std::int64_t frame) {
+                         std::int64_t frame, std::span<const JointValue> joints) {
+  physics::Vec3 quantity;
+  bool vector = false;
   switch (value.source) {
     case scene::Placeholder::Source::time:
       return format_number(t, value);
     case scene::Placeholder::Source::frame:
       return std::to_string(frame);
     case scene::Placeholder::Source::body:
+      quantity = body_quantity(value.quantity, states[value.body]);
+      vector = scene::is_vector(value.quantity);
       break;
+    case scene::Placeholder::Source::joint: {
+      const JointValue& joint = joints[value.joint];
+      switch (value.joint_quantity) {
+        case scene::JointQuantity::angle:
+          return format_number(joint.coordinate, value);
+        case scene::JointQuantity::speed:
+          return format_number(joint.rate, value);
+        case scene::JointQuantity::force:
+          quantity = joint.force;
+          vector = true;
+          break;
+      }
+      break;
+    }
   }
-  const physics::Vec3 quantity = body_quantity(value.quantity, states[value.body]);
   if (value.component >= 0) return format_number(quantity[value.component], value);
-  if (!scene::is_vector(value.quantity)) return format_number(quantity.x(), value);
+  if (!vector) return format_number(quantity.x(), value);
   // Appended one by one: GCC 12's -Wrestrict misreads "(" + std::string (a known bug).
   std::string out(1, '(');
   out.append(format_number(quantity.x(), value)).append(", ");
@@ -67,10 +84,10 @@ std::string format_value(const scene::Placeholder& value,
 
 std::string format_text(const scene::TextTemplate& text,
                         const std::vector<physics::BodyState>& states, double t,
-                        std::int64_t frame) {
+                        std::int64_t frame, std::span<const JointValue> joints) {
   std::string out = text.pieces[0];
   for (std::size_t i = 0; i < text.values.size(); ++i) {
-    out += format_value(text.values[i], states, t, frame);
+    out += format_value(text.values[i], states, t, frame, joints);
     out += text.pieces[i + 1];
   }
   return out;
@@ -87,6 +104,8 @@ physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::Bod
       return state.angular_momentum();
     case scene::VectorQuantity::constant:
       return overlay.constant;
+    case scene::VectorQuantity::joint_force:  // from the joint's values: add_vector draws it
+      return physics::Vec3::Zero();
     case scene::VectorQuantity::force:
       break;
   }

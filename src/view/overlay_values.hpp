@@ -10,6 +10,7 @@
 #include "physics/rigid_body.hpp"
 #include "scene/overlays.hpp"
 #include "scene/scene.hpp"
+#include "view/joint_view.hpp"
 
 namespace tumble::view {
 
@@ -18,15 +19,16 @@ namespace tumble::view {
 physics::Vec3 body_quantity(scene::BodyQuantity quantity, const physics::BodyState& state);
 
 // One placeholder as printf's "%.<precision><conversion>" writes it; a whole vector as
-// "(x, y, z)". `states` are every body's at time t (s), the frame's number `frame`.
+// "(x, y, z)". `states` are every body's at time t (s), the frame's number `frame`, `joints`
+// every joint's values there (joint_view.hpp).
 std::string format_value(const scene::Placeholder& value,
                          const std::vector<physics::BodyState>& states, double t,
-                         std::int64_t frame);
+                         std::int64_t frame, std::span<const JointValue> joints = {});
 
 // The whole text with each placeholder formatted.
 std::string format_text(const scene::TextTemplate& text,
                         const std::vector<physics::BodyState>& states, double t,
-                        std::int64_t frame);
+                        std::int64_t frame, std::span<const JointValue> joints = {});
 
 // The vector the overlay's arrow draws (world frame, in the quantity's unit: m/s, rad/s,
 // kg m²/s, N, or as written for a constant) for `body` in `state` at time t (s).

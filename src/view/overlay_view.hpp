@@ -12,6 +12,7 @@
 #include "render/font.hpp"
 #include "render/frame.hpp"
 #include "scene/scene.hpp"
+#include "view/joint_view.hpp"
 
 namespace tumble::view {
 
@@ -41,9 +42,10 @@ class OverlayItems {
   // Takes in the bodies' states at time t (s) for the trails. Times increase from call to call.
   void record(const std::vector<physics::BodyState>& states, double t);
 
-  // Adds the overlays' items for frame `frame` at time t (s), whose states were just record()ed.
+  // Adds the overlays' items for frame `frame` at time t (s), whose states were just record()ed,
+  // and the joints' values there (joint_view.hpp).
   void add_to(const std::vector<physics::BodyState>& states, double t, std::int64_t frame,
-              render::FrameView& view) const;
+              render::FrameView& view, std::span<const JointValue> joints = {}) const;
 
  private:
   struct TrailPoint {

@@ -1,5 +1,7 @@
 #include "view/scene_view.hpp"
 
+#include "view/joint_view.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -245,9 +247,14 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};
   render::FrameView view = frame_view(scene_, framing_, *states, t);
+  std::vector<JointValue> joints;
+  if (!scene_.joints.empty()) {
+    add_joints(scene_, simulation_.joints(), *states, view);
+    if (overlays_) joints = joint_values(simulation_.joints(), *states, t);
+  }
   if (overlays_) {
     overlays_->record(*states, t);
-    overlays_->add_to(*states, t, frame, view);
+    overlays_->add_to(*states, t, frame, view, joints);
   }
   return view;
 }
@@ -270,6 +277,7 @@ render::RenderSettings renderer_settings(const scene::Scene& scene, const Framin
                                   overlays_need_lines(scene)};
   settings.ground = framing.ground;
   settings.round_solids =
+      draws_joints(scene) ||
       std::any_of(scene.bodies.begin(), scene.bodies.end(), [](const scene::BodySpec& b) {
         return solid_of(b.shape) != render::Solid::box && solid_of(b.shape) != render::Solid::hull;
       });
