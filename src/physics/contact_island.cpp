@@ -210,7 +210,8 @@ void resolve_island(std::span<const IslandBody> bodies, ContactRows& rows,
                   // Two bodies or more: their mass ratio and their symmetric contacts want the
                   // normal rows as one block (physics/normal_block.hpp); one body alone on planes
                   // converges one row at a time in a pass or two.
-                  .block = bodies.size() > 1});
+                  .block = bodies.size() > 1},
+                 rows.joints);
   poses.resize(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const IslandBody& body = bodies[i];

@@ -88,12 +88,14 @@ struct ContactRows {
   std::vector<ContactConstraint> points;
   std::vector<PositionPoint> positions;
   std::vector<FrictionPatch> patches;
-  std::vector<ProjectedPose> poses;  // scratch of the projection, a pose per body
+  std::vector<JointConstraint> joints;  // the joints' equality rows between the island's bodies
+  std::vector<ProjectedPose> poses;     // scratch of the projection, a pose per body
   void clear() {
     bodies.clear();
     points.clear();
     positions.clear();
     patches.clear();
+    joints.clear();
   }
 };
 

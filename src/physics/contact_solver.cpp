@@ -376,8 +376,28 @@ void tangent_basis(const Vec3& normal, Vec3 (&out)[2]) {
   out[1] = normal.cross(out[0]);
 }
 
+namespace {
+
+// One pass over the joints' rows: each row's rate to 0. Returns the largest change of an
+// impulse (N s).
+double joint_pass(std::span<SolverBody> bodies, std::span<JointConstraint> joints) {
+  double change = 0.0;
+  for (JointConstraint& row : joints) {
+    SolverBody* b = row.b == kStatic ? nullptr : &bodies[row.b];
+    const double delta =
+        -row.direction.mass * relative_speed(row.direction, bodies[row.a], b);
+    row.impulse += delta;
+    push(row.direction, bodies[row.a], b, delta);
+    change = std::max(change, std::abs(delta));
+  }
+  return change;
+}
+
+}  // namespace
+
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
-                    std::span<FrictionPatch> patches, const SolveSettings& settings) {
+                    std::span<FrictionPatch> patches, const SolveSettings& settings,
+                    std::span<JointConstraint> joints) {
   // Which points may bounce is known before the solve; the energy guard needs the energy then.
   // With the normal rows as one block the impacts come first, at once (resolve_impacts).
   const auto may_bounce = [&](const ContactConstraint& c) {
@@ -410,9 +430,19 @@ void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> p
     if (!block->build(bodies, points, patches)) block.reset();
   }
   for (int pass = 0; pass < settings.iterations; ++pass) {
+    double joint_change = 0.0, largest_joint = 0.0;
+    if (!joints.empty()) {
+      joint_change = joint_pass(bodies, joints);
+      for (const JointConstraint& row : joints) {
+        largest_joint = std::max(largest_joint, std::abs(row.impulse));
+      }
+    }
     const double change = block ? block_pass(bodies, points, patches, *block)
                                 : inelastic_pass(bodies, points, patches);
-    if (change <= settings.tolerance * largest_normal_impulse(points)) break;
+    if (std::max(change, joint_change) <=
+        settings.tolerance * std::max(largest_normal_impulse(points), largest_joint)) {
+      break;
+    }
   }
 
   // The bounce, from the velocities the inelastic solve left (Poisson-like: compression first,

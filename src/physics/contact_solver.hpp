@@ -170,6 +170,19 @@ void tangent_basis(const Vec3& normal, Vec3 (&out)[2]);
   b->angular_velocity -= impulse * d.turn_b;
 }
 
+// A joint's equality row among an island's contacts (physics/joints.hpp: its rate J v is held
+// at 0): solved in each pass before the contacts, so that a load a contact carries reaches the
+// bodies the joint holds (a cart's weight, through its axles, to its wheels on the floor). The
+// joints' own solve (physics/joint_solve.hpp) made them hold in the free step, and projects the
+// bodies onto them again after the island's solve; these rows carry the contacts' impulses
+// across them meanwhile. Not warm-started: they start at 0 in each solve.
+struct JointConstraint {
+  std::uint32_t a = 0;        // index into the SolverBody list
+  std::uint32_t b = kStatic;  // likewise, or kStatic for the world or a static body
+  ImpulseDirection direction;
+  double impulse = 0.0;  // accumulated this solve (N s or N m s)
+};
+
 // What a solve is asked for.
 struct SolveSettings {
   int iterations = 10;  // the most passes over all points
@@ -196,7 +209,8 @@ struct SolveSettings {
 // of the inelastic solve stay in the rows (store_impulses takes them back to the manifolds). Every
 // point belongs to exactly one patch.
 void solve_contacts(std::span<SolverBody> bodies, std::span<ContactConstraint> points,
-                    std::span<FrictionPatch> patches, const SolveSettings& settings);
+                    std::span<FrictionPatch> patches, const SolveSettings& settings,
+                    std::span<JointConstraint> joints = {});
 
 // For the sub-stepped solve of large islands (physics/substep_island.hpp).
 // Applies every point's and patch's accumulated impulse to the bodies (each sub-step starts so).

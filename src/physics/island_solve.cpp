@@ -264,6 +264,57 @@ void refind(const StepContext& context, int substep, int substeps) {
   }
 }
 
+// The equality rows of every joint with a body in the island (both its bodies are: joints join
+// islands), at the bodies' free-step ends, into rows.joints.
+void append_joint_rows(const StepContext& context, std::uint32_t island, ContactRows& rows) {
+  const StepScratch& scratch = context.scratch;
+  const JointWorld& world = *context.joints;
+  std::vector<JointRow> found;
+  const auto solver_index = [&](std::uint32_t i) {
+    return i == kWorldBody || context.models[i].is_static ? kStatic : scratch.local[i];
+  };
+  const auto body_at = [&](std::uint32_t i) {
+    return i == kWorldBody ? JointBody{} : JointBody::of(scratch.advances[i].end);
+  };
+  for (const Joint& joint : world.joints) {
+    if (scratch.island_of[joint.a] != island &&
+        (joint.b == kWorldBody || scratch.island_of[joint.b] != island)) {
+      continue;
+    }
+    found.clear();
+    equality_rows(joint, body_at(joint.a), body_at(joint.b), found);
+    for (const JointRow& row : found) {
+      JointConstraint out;
+      out.a = solver_index(row.a);
+      out.b = solver_index(row.b);
+      SolverBody* a = out.a == kStatic ? nullptr : &rows.bodies[out.a];
+      SolverBody* b = out.b == kStatic ? nullptr : &rows.bodies[out.b];
+      if (!a) {  // the joint's a is static: the row seen from b
+        std::swap(a, b);
+        std::swap(out.a, out.b);
+        out.direction = {.linear = row.linear_b,
+                         .moment_a = row.angular_b,
+                         .turn_a = a->turn(row.angular_b),
+                         .moment_b = -row.angular_a,
+                         .turn_b = Vec3::Zero(),
+                         .mass = 0.0};
+      } else {
+        out.direction = {.linear = row.linear_a,
+                         .moment_a = row.angular_a,
+                         .turn_a = a->turn(row.angular_a),
+                         .moment_b = -row.angular_b,
+                         .turn_b = b ? b->turn(-row.angular_b) : Vec3::Zero(),
+                         .mass = 0.0};
+      }
+      const ImpulseDirection& d = out.direction;
+      double inverse = a->inverse_mass * d.linear.squaredNorm() + d.moment_a.dot(d.turn_a);
+      if (b) inverse += b->inverse_mass * d.linear.squaredNorm() + d.moment_b.dot(d.turn_b);
+      out.direction.mass = inverse > 0.0 ? 1.0 / inverse : 0.0;
+      rows.joints.push_back(out);
+    }
+  }
+}
+
 }  // namespace
 
 void solve_converged(const StepContext& context, std::uint32_t island) {
@@ -315,6 +366,7 @@ void solve_converged(const StepContext& context, std::uint32_t island) {
                  .b_shape = context.models[b].shape},
                 rows);
   }
+  if (context.joints) append_joint_rows(context, island, rows);
   scratch.island_out.resize(members.size());
   resolve_island(scratch.island_bodies, rows, context.settings, scratch.island_out);
   store_impulses(rows, context.memory.planes, scratch.found);

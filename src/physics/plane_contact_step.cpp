@@ -224,15 +224,16 @@ double impulse_position_weight(Integrator integrator, double h) {
 
 void take_free_step(const StepContext& context, std::uint32_t body, BodyState end) {
   PlaneAdvance& out = context.scratch.advances[body];
+  std::vector<Manifold>& manifolds = context.memory.planes[body];
+  manifolds.resize(context.planes.size());
   out.end = std::move(end);
   out.remaining = context.dt;
   out.slow_impact = false;
   out.touching = !context.planes.empty() &&
                  touching(out.end, context.models[body].shape, context.planes,
                           context.scratch.separations[body], out.rotation);
-  if (out.touching || context.planes.empty()) return;
-  context.memory.planes[body].resize(context.planes.size());
-  for (Manifold& m : context.memory.planes[body]) m.count = 0;
+  if (out.touching) return;
+  for (Manifold& m : manifolds) m.count = 0;  // nothing to warm start from
 }
 
 void advance_among_planes(const StepContext& context, std::uint32_t body, SlowImpacts slow) {

@@ -180,11 +180,21 @@ int group_islands(const StepContext& context) {
   // A static body joins no island: two balls resting on one peg are two islands, each with its
   // rows against the peg, as against a plane.
   const auto is_static = [&](std::uint32_t i) { return context.models[i].is_static; };
+  const auto join = [&](std::uint32_t first, std::uint32_t second) {
+    const std::uint32_t a = find_root(scratch.root, first);
+    const std::uint32_t b = find_root(scratch.root, second);
+    if (a != b) scratch.root[std::max(a, b)] = std::min(a, b);
+  };
   for (const PairContact& pair : scratch.found) {
     if (is_static(pair.bodies.first) || is_static(pair.bodies.second)) continue;
-    const std::uint32_t a = find_root(scratch.root, pair.bodies.first);
-    const std::uint32_t b = find_root(scratch.root, pair.bodies.second);
-    if (a != b) scratch.root[std::max(a, b)] = std::min(a, b);
+    join(pair.bodies.first, pair.bodies.second);
+  }
+  // A joint's two bodies are one island, whatever touches them (held_by_joints).
+  if (context.joints) {
+    for (const Joint& joint : context.joints->joints) {
+      if (joint.b == kWorldBody || is_static(joint.a) || is_static(joint.b)) continue;
+      join(joint.a, joint.b);
+    }
   }
   scratch.island_of.assign(body_count, kNone);
   std::vector<std::uint32_t>& number_of_root = scratch.local;  // reused as scratch here
@@ -194,6 +204,11 @@ int group_islands(const StepContext& context) {
   paired.assign(body_count, 0);
   for (const PairContact& pair : scratch.found) {
     for (const std::uint32_t i : {pair.bodies.first, pair.bodies.second}) {
+      if (!is_static(i)) paired[i] = 1;
+    }
+  }
+  if (context.joints) {
+    for (const std::uint32_t i : context.joints->members) {
       if (!is_static(i)) paired[i] = 1;
     }
   }
@@ -279,6 +294,12 @@ bool holds_joint_members(const StepContext& context, std::uint32_t island) {
   const auto members = members_of(island, context.scratch);
   return std::any_of(members.begin(), members.end(),
                      [&](std::uint32_t i) { return context.joints->holds(i); });
+}
+
+bool touches_a_plane(const StepContext& context, std::uint32_t island) {
+  const auto members = members_of(island, context.scratch);
+  return std::any_of(members.begin(), members.end(),
+                     [&](std::uint32_t i) { return context.scratch.advances[i].touching; });
 }
 
 bool island_asleep(const StepContext& context, std::uint32_t island) {
@@ -432,13 +453,19 @@ void solve_islands(const StepContext& context, int islands) {
   for (std::uint32_t k = 0; k < static_cast<std::uint32_t>(islands); ++k) {
     if (island_asleep(context, k)) {
       for (const std::uint32_t i : members_of(k, scratch)) context.out[i] = context.in[i];
+    } else if (scratch.pair_offsets[k] == scratch.pair_offsets[k + 1] &&
+               holds_joint_members(context, k) && !touches_a_plane(context, k)) {
+      // Bodies held by joints alone, touching nothing: their free step was their joints' solve.
+      for (const std::uint32_t i : members_of(k, scratch)) context.out[i] = scratch.advances[i].end;
+    } else if (holds_joint_members(context, k)) {
+      // From the joints' free step, their rows among the contacts': solved to convergence.
+      solve_converged(context, k);
     } else if (scratch.pair_offsets[k] == scratch.pair_offsets[k + 1]) {
       // One body touching planes alone: its impacts were at their times; it rests as it would
       // with no other body in the world.
       const std::uint32_t i = scratch.members[scratch.member_offsets[k]];
       context.out[i] = rest_on_planes(context, i);
-    } else if (holds_joint_members(context, k) || converges(context, k)) {
-      // An island with joints' members takes their free step, joint forces and all.
+    } else if (converges(context, k)) {
       solve_converged(context, k);
     } else {
       solve_substepped(context, k);
@@ -478,7 +505,7 @@ void step_world(Integrator integrator, std::span<const BodyModel> models,
                             .scratch = contacts.scratch,
                             .out = out,
                             .joints = joints && !joints->joints.empty() ? joints : nullptr};
-  if (!pairs_possible(models, settings)) {
+  if (!pairs_possible(models, settings) && !context.joints) {
     step_bodies_alone(context);
     return;
   }
