@@ -383,18 +383,21 @@ TEST(Chain, HoldsAHundredTimesItsLinksMass) {
   EXPECT_LT(highest, 1e-6 * start);
 }
 
-// A door, 1 × 2 × 0.05 m and 20 kg, on a hinge along its left edge (world y, through (0, 1, 0)),
-// gravity along the hinge, swinging at `swing` rad/s about it.
+// A door, 1 × 2 × 0.05 m and 20 kg, on a hinge along its left edge, gravity along the hinge,
+// swinging at `swing` rad/s about it; the whole of it turned by `frame` from the door standing on
+// the world's y axis, so that no row lines up with a world axis.
 struct Door {
-  std::vector<BodyModel> models = {box(20.0, Vec3(1.0, 2.0, 0.05))};
+  std::vector<BodyModel> models = {box(20.0, Vec3(1.0, 2.0, 0.05), false)};
   std::vector<BodyState> states;
   JointWorld world;
+  Quat frame = Quat(Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()));
+  Vec3 axis = frame * Vec3::UnitY();
   Door(double swing) {
-    states.push_back(make_state(models[0].constants, Vec3(0.5, 1.0, 0.0),
-                                Vec3(0.0, 0.0, -0.5 * swing), Quat::Identity(),
-                                Vec3(0.0, swing, 0.0)));
-    world.joints.push_back(place_joint(JointKind::hinge, 0, kWorldBody, states, Vec3(0.0, 1.0, 0.0),
-                                       Vec3(0.0, 1.0, 0.0), Vec3(0.0, 1.0, 0.0)));
+    models[0].forces.push_back(Gravity{.acceleration = -kG * axis});
+    const Vec3 hinge = frame * Vec3(0.0, 1.0, 0.0);
+    states.push_back(make_state(models[0].constants, frame * Vec3(0.5, 1.0, 0.0),
+                                frame * Vec3(0.0, 0.0, -0.5 * swing), frame, swing * axis));
+    world.joints.push_back(place_joint(JointKind::hinge, 0, kWorldBody, states, hinge, hinge, axis));
   }
   double angle() const {
     return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->value;
@@ -403,7 +406,7 @@ struct Door {
     return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->rate;
   }
   double sag() const {  // how far the door's own y axis is off the hinge (rad)
-    return std::acos(std::min(1.0, (states[0].rotation() * Vec3::UnitY()).y()));
+    return std::acos(std::min(1.0, (states[0].rotation() * Vec3::UnitY()).dot(axis)));
   }
   // Its moment about the hinge: m (w² + t²) / 12 + m (w / 2)² (kg m²).
   static double moment() { return 20.0 * (1.0 + 0.0025) / 12.0 + 20.0 * 0.25; }
