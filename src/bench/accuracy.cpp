@@ -90,6 +90,7 @@ void time_runs(AccuracyRow& row, const TimingSettings& timing, double error_run_
 AccuracySettings quick_accuracy_settings() {
   return {.cases = {"article_cube", "stiff_linear_damping", "box_on_spring"},
           .contact_cases = {"bounce", "slide", "rest"},
+          .joint_cases = {"pendulum"},
           .steps = {1.0 / 30, 1.0 / 60},
           .timing = {.samples = 1, .min_sample_seconds = 0.0}};
 }
@@ -126,6 +127,9 @@ Result<AccuracySelection> select_accuracy_cases(const AccuracySettings& settings
   if (!select_cases(settings.contact_cases, contact_cases(), find_contact_case, out.contact,
                     unknown)) {
     return Error{"no contact case named " + unknown};
+  }
+  if (!select_cases(settings.joint_cases, joint_cases(), find_joint_case, out.joint, unknown)) {
+    return Error{"no joint case named " + unknown};
   }
   return out;
 }
@@ -225,6 +229,44 @@ AccuracyRow measure_contact_accuracy(const ContactCase& c, physics::ContactMetho
   return row;
 }
 
+AccuracyRow measure_joint_accuracy(const JointCase& c, physics::Integrator integrator, double dt,
+                                   const TimingSettings& timing) {
+  AccuracyRow row{.case_name = c.name,
+                  .integrator = std::string(physics::integrator_name(integrator)),
+                  .dt = dt,
+                  .steps = std::llround(c.duration / dt),
+                  .measure = c.measures.at(0).name,
+                  .second_measure = c.measures.size() > 1 ? c.measures[1].name : "",
+                  .orientation_error = kNaN,
+                  .position_error = kNaN,
+                  .angular_momentum_error = kNaN,
+                  .energy_error = kNaN};
+  const Clock::time_point error_run_start = Clock::now();
+  sim::Simulation world = joint_simulation(c, integrator, dt);
+  std::vector<std::vector<physics::BodyState>> states = {c.initial};
+  states.reserve(static_cast<std::size_t>(row.steps) + 1);
+  while (world.step_count() < row.steps && !row.blew_up) {
+    world.step();
+    states.push_back(world.current());
+    row.blew_up = world.blow_up().has_value();
+  }
+  const double error_run_seconds = seconds_since(error_run_start);
+  const std::int64_t taken = world.step_count();
+  if (row.blew_up) {
+    row.error = kNaN;
+  } else {
+    const std::vector<double> errors = c.judge(states, dt);
+    row.error = errors.at(0);
+    if (errors.size() > 1) row.second_error = errors[1];
+  }
+  time_runs(row, timing, error_run_seconds, taken, [&] {
+    sim::Simulation timed = joint_simulation(c, integrator, dt);
+    while (timed.step_count() < taken) timed.step();
+    return timed.current().front().position().x();
+  });
+  return row;
+}
+
 Result<std::vector<AccuracyRow>> measure_accuracy(
     const AccuracySettings& settings,
     const std::function<void(const std::string&, physics::Integrator)>& on_start) {
@@ -249,6 +291,14 @@ Result<std::vector<AccuracyRow>> measure_accuracy(
         for (const double dt : settings.steps) {
           rows.push_back(measure_contact_accuracy(*c, method, integrator, dt, settings.timing));
         }
+      }
+    }
+  }
+  for (const JointCase* c : selection->joint) {
+    for (const physics::Integrator integrator : physics::kAllIntegrators) {
+      if (on_start) on_start(c->name + " (joints)", integrator);
+      for (const double dt : settings.steps) {
+        rows.push_back(measure_joint_accuracy(*c, integrator, dt, settings.timing));
       }
     }
   }

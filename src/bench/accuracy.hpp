@@ -11,6 +11,7 @@
 
 #include "bench/contact_cases.hpp"
 #include "bench/hard_cases.hpp"
+#include "bench/joint_cases.hpp"
 #include "common/result.hpp"
 #include "physics/contact.hpp"
 #include "physics/integrators.hpp"
@@ -33,13 +34,15 @@ struct AccuracySettings {
   // Contact case names (bench/contact_cases.hpp), each run with both contact methods; empty
   // means every case.
   std::vector<std::string> contact_cases = {};
+  // Joint case names (bench/joint_cases.hpp); empty means every case.
+  std::vector<std::string> joint_cases = {};
   std::vector<double> steps = std::vector<double>(std::begin(kAccuracySteps),
                                                   std::end(kAccuracySteps));  // dt (s)
   TimingSettings timing = {};
 };
 
-// A reduced sweep for tests and a quick look: three hard cases and every contact case, the two
-// coarsest steps, one sample.
+// A reduced sweep for tests and a quick look: three hard cases, the bounce, slide and rest
+// contact cases and the pendulum, the two coarsest steps, one sample.
 AccuracySettings quick_accuracy_settings();
 
 // The cases a sweep runs, in sweep order: those the settings name, or every one when they name
@@ -47,6 +50,7 @@ AccuracySettings quick_accuracy_settings();
 struct AccuracySelection {
   std::vector<const HardCase*> hard;
   std::vector<const ContactCase*> contact;
+  std::vector<const JointCase*> joint;
 };
 Result<AccuracySelection> select_accuracy_cases(const AccuracySettings& settings);
 
@@ -93,10 +97,17 @@ AccuracyRow measure_contact_accuracy(const ContactCase& contact_case, physics::C
                                      physics::Integrator integrator, double dt /* s */,
                                      const TimingSettings& timing);
 
+// Runs one joint case with one integrator at one step through sim::Simulation (its bodies under
+// their joints, physics/joint_solve.hpp), keeping every state for the case's measures; then the
+// timing samples of the same steps.
+AccuracyRow measure_joint_accuracy(const JointCase& joint_case, physics::Integrator integrator,
+                                   double dt /* s */, const TimingSettings& timing);
+
 // The whole sweep: the hard cases, then the contact cases with impulse and then penalty contact,
-// each integrator by integrator (in kAllIntegrators order), step by step. `on_start` (optional)
-// is called before each run of the steps, with its name ("article_cube", "bounce (penalty
-// contact") and integrator, for progress. An unknown case name is an error before anything runs.
+// then the joint cases, each integrator by integrator (in kAllIntegrators order), step by step.
+// `on_start` (optional) is called before each run of the steps, with its name ("article_cube",
+// "bounce (penalty contact)", "pendulum (joints)") and integrator, for progress. An unknown case
+// name is an error before anything runs.
 Result<std::vector<AccuracyRow>> measure_accuracy(
     const AccuracySettings& settings,
     const std::function<void(const std::string& run, physics::Integrator)>& on_start = {});

@@ -168,6 +168,28 @@ void write_contact_case_tables(std::FILE* out, const bench::AccuracySelection& s
   }
 }
 
+void write_joint_case_tables(std::FILE* out, const bench::AccuracySelection& selection,
+                             const std::vector<AccuracyRow>& rows) {
+  for (const bench::JointCase* c : selection.joint) {
+    std::fprintf(out, "\n## %s (joints)\n\n%s.\n\nError: %s.\n\n| integrator | dt (s) |",
+                 c->name.c_str(), c->summary.c_str(), c->measure_note.c_str());
+    for (const bench::ContactMeasure& measure : c->measures) {
+      std::fprintf(out, " %s |", measure.label.c_str());
+    }
+    std::fputs(" ns/step | ns per simulated s |\n| --- | --- |", out);
+    for (std::size_t i = 0; i < c->measures.size(); ++i) std::fputs(" ---: |", out);
+    std::fputs(" ---: | ---: |\n", out);
+    for (const AccuracyRow* row : rows_of(rows, c->name)) {
+      std::fprintf(out, "| %s | %s | %s |", row->integrator.c_str(), step_label(row->dt).c_str(),
+                   error_cell(*row, row->error).c_str());
+      if (c->measures.size() > 1) {
+        std::fprintf(out, " %s |", error_cell(*row, row->second_error).c_str());
+      }
+      std::fprintf(out, " %.0f | %.3g |\n", row->ns_per_step, row->ns_per_simulated_second);
+    }
+  }
+}
+
 void write_markdown(std::FILE* out, const bench::AccuracySettings& settings,
                     const bench::AccuracySelection& selection, bool quick,
                     const std::vector<AccuracyRow>& rows) {
@@ -175,8 +197,9 @@ void write_markdown(std::FILE* out, const bench::AccuracySettings& settings,
                "# Speed against error\n\n"
                "Every integrator on every hard case (`src/bench/hard_cases.cpp`), where errors are "
                "of the final state against the case's reference, and with impulse and with "
-               "penalty contact on every contact case (`src/bench/contact_cases.cpp`), where each "
-               "case names its own errors. A hard case's run *blew up* when its state left a "
+               "penalty contact on every contact case (`src/bench/contact_cases.cpp`), and on "
+               "every joint case (`src/bench/joint_cases.cpp`), where each case names its own "
+               "errors. A hard case's run *blew up* when its state left a "
                "million times the true motion's size, a contact case's when its energy above "
                "rest doubled (contact only takes energy away). Cost is the median of %d timing%s "
                "of the whole run, in the same process, on one thread of this machine "
@@ -191,6 +214,7 @@ void write_markdown(std::FILE* out, const bench::AccuracySettings& settings,
                quick ? " --quick" : "");
   write_hard_case_tables(out, selection, rows);
   write_contact_case_tables(out, selection, rows);
+  write_joint_case_tables(out, selection, rows);
 }
 
 // gnuplot's single-quoted strings double a quote to escape it.
@@ -215,6 +239,9 @@ std::vector<Panel> panels(const bench::AccuracySelection& selection) {
   }
   for (const bench::ContactCase* c : selection.contact) {
     out.push_back({c->name, c->measures.front().label, {"impulse", "penalty"}});
+  }
+  for (const bench::JointCase* c : selection.joint) {
+    out.push_back({c->name, c->measures.front().label, {"none"}});
   }
   return out;
 }
@@ -332,8 +359,9 @@ CommandResult run_bench_accuracy(const BenchAccuracyOptions& options, std::FILE*
       options.quick ? bench::quick_accuracy_settings() : bench::AccuracySettings{};
   const Result<bench::AccuracySelection> selection = bench::select_accuracy_cases(settings);
   if (!selection) return Error{selection.error()};
-  const std::size_t runs = (selection->hard.size() + 2 * selection->contact.size()) *
-                           std::size(physics::kAllIntegrators);
+  const std::size_t runs =
+      (selection->hard.size() + 2 * selection->contact.size() + selection->joint.size()) *
+      std::size(physics::kAllIntegrators);
   std::size_t started = 0;
   const Result<std::vector<AccuracyRow>> measured = bench::measure_accuracy(
       settings, [&](const std::string& run, physics::Integrator integrator) {

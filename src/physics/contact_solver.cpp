@@ -384,8 +384,7 @@ double joint_pass(std::span<SolverBody> bodies, std::span<JointConstraint> joint
   double change = 0.0;
   for (JointConstraint& row : joints) {
     SolverBody* b = row.b == kStatic ? nullptr : &bodies[row.b];
-    const double delta =
-        -row.direction.mass * relative_speed(row.direction, bodies[row.a], b);
+    const double delta = -row.direction.mass * relative_speed(row.direction, bodies[row.a], b);
     row.impulse += delta;
     push(row.direction, bodies[row.a], b, delta);
     change = std::max(change, std::abs(delta));

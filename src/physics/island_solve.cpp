@@ -328,9 +328,8 @@ void solve_converged(const StepContext& context, std::uint32_t island) {
     scratch.local[i] = static_cast<std::uint32_t>(scratch.island_bodies.size());
     scratch.island_bodies.push_back(
         {.model = &context.models[i],
-         .start = holds_energy(context.integrator) && !held_by_joints(context, i)
-                      ? &context.in[i]
-                      : nullptr,
+         .start = holds_energy(context.integrator) && !held_by_joints(context, i) ? &context.in[i]
+                                                                                  : nullptr,
          .end = advance.end,
          .rotation = rotation,
          .weight = impulse_position_weight(context.integrator, advance.remaining)});

@@ -31,8 +31,8 @@ JointBodies bodies_of(const Joint& joint, std::span<const BodyState> states) {
 }
 
 double row_rate(const JointRow& row, std::span<const BodyState> states) {
-  double rate =
-      row.linear_a.dot(states[row.a].velocity()) + row.angular_a.dot(states[row.a].angular_velocity());
+  double rate = row.linear_a.dot(states[row.a].velocity()) +
+                row.angular_a.dot(states[row.a].angular_velocity());
   if (row.b != kWorldBody) {
     rate += row.linear_b.dot(states[row.b].velocity()) +
             row.angular_b.dot(states[row.b].angular_velocity());
@@ -189,8 +189,7 @@ Eigen::VectorXd JointSystem::solve(const Eigen::VectorXd& rhs) const {
 namespace {
 
 // The force and torque of a sprung distance joint on its two bodies (N, N m, world).
-void add_spring(const Joint& joint, std::span<const BodyState> states,
-                std::span<Wrench> wrenches) {
+void add_spring(const Joint& joint, std::span<const BodyState> states, std::span<Wrench> wrenches) {
   const JointBodies at = bodies_of(joint, states);
   const Vec3 arm_a = at.a.rotation * joint.anchor_a;
   const Vec3 arm_b = at.b.rotation * joint.anchor_b;
@@ -248,14 +247,14 @@ void solve_forces(std::span<const Joint> joints, std::span<const BodyModel> mode
     const Vec3 torque = own.torque + wrenches[i].torque;
     const Vec3& omega = states[i].angular_velocity();
     free[i].linear = models[i].constants.inverse_mass * force;
-    free[i].angular =
-        system.inverse_inertia(static_cast<std::uint32_t>(i)) *
-        (torque - omega.cross(states[i].angular_momentum()));
+    free[i].angular = system.inverse_inertia(static_cast<std::uint32_t>(i)) *
+                      (torque - omega.cross(states[i].angular_momentum()));
   }
   Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows.size()));
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const JointRow& row = rows[r];
-    double acceleration = row.linear_a.dot(free[row.a].linear) + row.angular_a.dot(free[row.a].angular);
+    double acceleration =
+        row.linear_a.dot(free[row.a].linear) + row.angular_a.dot(free[row.a].angular);
     if (row.b != kWorldBody) {
       acceleration += row.linear_b.dot(free[row.b].linear) + row.angular_b.dot(free[row.b].angular);
     }
@@ -476,7 +475,8 @@ double fastest_joint_mode(std::span<const Joint> joints, std::span<const BodyMod
     const Mat3 inertia = rotation * c.inertia.asDiagonal() * rotation.transpose();
     const double force = wrench.force.norm();
     double sum = (wrench.torque - arm.cross(wrench.force)).norm() / c.inertia.minCoeff();
-    if (arm.norm() > 0.0) sum += force * arm.norm() / least_moment_across(inertia, arm.normalized());
+    if (arm.norm() > 0.0)
+      sum += force * arm.norm() / least_moment_across(inertia, arm.normalized());
     if (joint.kind == JointKind::distance) {
       const double length = std::max(joint.max_length, joint.min_length);
       if (length > 0.0) sum += force * c.inverse_mass / length;

@@ -91,8 +91,7 @@ class JointSystem {
 // The joints' forces as a Coupling of the bodies (step 1 above): for `models` and `joints`.
 class JointForces final : public Coupling {
  public:
-  JointForces(std::span<const Joint> joints, std::span<const BodyModel> models,
-              JointSystem& system)
+  JointForces(std::span<const Joint> joints, std::span<const BodyModel> models, JointSystem& system)
       : joints_(joints), models_(models), system_(system) {}
   void add(std::span<const BodyState> states, double t, std::span<Wrench> wrenches) const override;
 
@@ -117,8 +116,8 @@ struct JointWorld {
   }
   std::vector<JointImpulses> impulses;  // per joint, of the last (sub-)step
   double substep = 0.0;                 // s: the length of the last step's sub-steps
-  JointSystem system;  // of the local rows
-  JointSystem whole;   // of the joints' rows over the world's bodies (penalty contact's coupling)
+  JointSystem system;                   // of the local rows
+  JointSystem whole;  // of the joints' rows over the world's bodies (penalty contact's coupling)
   std::vector<BodyState> start, end;  // scratch: the members' states
 };
 
@@ -140,8 +139,7 @@ std::vector<Wrench> joint_wrenches(const JointWorld& world, std::span<const Body
 // both ends (a 10 kg ball whirled at 10 m/s on a chain) at ~800 rad/s, past what RK4 holds at
 // dt = 1/240 s (ω dt < 2.8): it blew up so within three steps.
 double fastest_joint_mode(std::span<const Joint> joints, std::span<const BodyModel> models,
-                          std::span<const BodyState> states, double t /* s */,
-                          JointSystem& system);
+                          std::span<const BodyState> states, double t /* s */, JointSystem& system);
 
 // A step of dt is cut into sub-steps so that the fastest mode turns by at most kStableTurn rad
 // in each, up to kMostJointSubsteps: every integrator is stable there (RK4 to 2.8 rad, the

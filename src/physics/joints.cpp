@@ -180,8 +180,8 @@ void equality_rows(const Joint& joint, const JointBody& a, const JointBody& b,
       JointRow row = linear_row(joint, at, u, false);
       row.error = length - joint.max_length;
       const double along = u.dot(at.closing);
-      row.curvature = u.dot(anchor_curvature(at, a, b)) +
-                      (at.closing.squaredNorm() - along * along) / length;
+      row.curvature =
+          u.dot(anchor_curvature(at, a, b)) + (at.closing.squaredNorm() - along * along) / length;
       out.push_back(row);
       return;
     }

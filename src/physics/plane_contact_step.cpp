@@ -229,9 +229,9 @@ void take_free_step(const StepContext& context, std::uint32_t body, BodyState en
   out.end = std::move(end);
   out.remaining = context.dt;
   out.slow_impact = false;
-  out.touching = !context.planes.empty() &&
-                 touching(out.end, context.models[body].shape, context.planes,
-                          context.scratch.separations[body], out.rotation);
+  out.touching =
+      !context.planes.empty() && touching(out.end, context.models[body].shape, context.planes,
+                                          context.scratch.separations[body], out.rotation);
   if (out.touching) return;
   for (Manifold& m : manifolds) m.count = 0;  // nothing to warm start from
 }
@@ -327,13 +327,14 @@ void append_speculative_plane_rows(const StepContext& context, const BodyInRows&
 BodyState rest_on_planes(const StepContext& context, std::uint32_t body) {
   const PlaneAdvance& advance = context.scratch.advances[body];
   const BodyModel& model = context.models[body];
-  const IslandBody island{.model = &model,
-                          .start = holds_energy(context.integrator) && !held_by_joints(context, body)
-                                       ? &context.in[body]
-                                       : nullptr,
-                          .end = advance.end,
-                          .rotation = advance.rotation,
-                          .weight = impulse_position_weight(context.integrator, advance.remaining)};
+  const IslandBody island{
+      .model = &model,
+      .start = holds_energy(context.integrator) && !held_by_joints(context, body)
+                   ? &context.in[body]
+                   : nullptr,
+      .end = advance.end,
+      .rotation = advance.rotation,
+      .weight = impulse_position_weight(context.integrator, advance.remaining)};
   ContactRows& rows = context.scratch.rows;
   rows.clear();
   rows.bodies.push_back(SolverBody::from(island.end, model.constants, island.rotation));

@@ -99,7 +99,7 @@ struct StepContext {
   const ContactSettings& settings;
   ContactMemory& memory;
   StepScratch& scratch;
-  std::span<BodyState> out;  // at t + dt
+  std::span<BodyState> out;      // at t + dt
   JointWorld* joints = nullptr;  // the world's joints, if it has any
 };
 

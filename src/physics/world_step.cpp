@@ -381,8 +381,8 @@ void step_bodies_alone(const StepContext& context) {
   ContactMemory& memory = context.memory;
   memory.pairs.clear();
   if (context.joints) {
-    advance_joint_members(context.integrator, context.in, context.t, context.dt,
-                          *context.joints, context.out);
+    advance_joint_members(context.integrator, context.in, context.t, context.dt, *context.joints,
+                          context.out);
   }
   bool moved_members = false;
   for (std::uint32_t i = 0; i < context.in.size(); ++i) {

@@ -57,8 +57,8 @@ void read_limits_and_motor(TableReader& in, JointSpec& joint) {
     physics::JointLimits limits{.lower = in.optional_number("lower", -kNone),
                                 .upper = in.optional_number("upper", kNone)};
     if (limits.lower > limits.upper) {
-      in.fail("lower", "lower (" + format_number(limits.lower) + " " + unit +
-                           ") is above upper (" + format_number(limits.upper) + " " + unit + ")");
+      in.fail("lower", "lower (" + format_number(limits.lower) + " " + unit + ") is above upper (" +
+                           format_number(limits.upper) + " " + unit + ")");
     }
     // A hinge's angle is measured in (-π, π]: a limit outside it would never be reached.
     if (hinge) {
@@ -70,8 +70,10 @@ void read_limits_and_motor(TableReader& in, JointSpec& joint) {
       }
     }
     if (!hinge) {
-      if (in.has("lower")) vector_within(in, "lower", Vec3(limits.lower, 0, 0), sim::kMaxPosition, "m");
-      if (in.has("upper")) vector_within(in, "upper", Vec3(limits.upper, 0, 0), sim::kMaxPosition, "m");
+      if (in.has("lower"))
+        vector_within(in, "lower", Vec3(limits.lower, 0, 0), sim::kMaxPosition, "m");
+      if (in.has("upper"))
+        vector_within(in, "upper", Vec3(limits.upper, 0, 0), sim::kMaxPosition, "m");
     }
     joint.limits = limits;
   }
@@ -83,18 +85,17 @@ void read_limits_and_motor(TableReader& in, JointSpec& joint) {
   const bool speed = in.has("motor_speed"), most = in.has(effort);
   if (speed != most) {
     in.fail(speed ? "motor_speed" : effort,
-            speed ? std::string("a motor needs its maximum: ") + effort +
-                        (hinge ? " (N m)" : " (N)")
-                  : std::string(effort) + " needs motor_speed (" + (hinge ? "rad/s" : "m/s") +
-                        ")");
+            speed
+                ? std::string("a motor needs its maximum: ") + effort + (hinge ? " (N m)" : " (N)")
+                : std::string(effort) + " needs motor_speed (" + (hinge ? "rad/s" : "m/s") + ")");
   }
   if (speed) {
     physics::JointMotor motor{.speed = in.optional_number("motor_speed", 0.0),
                               .max_effort = in.optional_number(effort, 0.0)};
     require_positive(in, effort, motor.max_effort);
     if (hinge && !(std::abs(motor.speed) <= sim::kMaxAngularSpeed)) {
-      in.fail("motor_speed", "past the " + format_number(sim::kMaxAngularSpeed) +
-                                 " rad/s tumble can simulate");
+      in.fail("motor_speed",
+              "past the " + format_number(sim::kMaxAngularSpeed) + " rad/s tumble can simulate");
     }
     if (!hinge && !(std::abs(motor.speed) <= sim::kMaxSpeed)) {
       in.fail("motor_speed",
@@ -121,13 +122,14 @@ void read_distance(TableReader& in, JointSpec& joint) {
   const bool has_min = in.has("min_length"), has_max = in.has("max_length");
   // A rod of the anchors' distance unless written; a rope is max_length alone (slack below it);
   // a spring has no stops unless written.
-  joint.max_length = in.optional_number(
-      "max_length", spring ? std::numeric_limits<double>::infinity() : start);
+  joint.max_length =
+      in.optional_number("max_length", spring ? std::numeric_limits<double>::infinity() : start);
   joint.min_length = in.optional_number("min_length", spring || has_max ? 0.0 : start);
   if (has_min) require_non_negative(in, "min_length", joint.min_length);
   if (has_max) require_positive(in, "max_length", joint.max_length);
   if (has_max && joint.max_length > sim::kMaxPosition) {
-    in.fail("max_length", "past the " + format_number(sim::kMaxPosition) + " m tumble can simulate");
+    in.fail("max_length",
+            "past the " + format_number(sim::kMaxPosition) + " m tumble can simulate");
   }
   if (joint.min_length > joint.max_length) {
     in.fail(has_min ? "min_length" : "max_length",
@@ -135,8 +137,9 @@ void read_distance(TableReader& in, JointSpec& joint) {
                 format_number(joint.max_length) + " m)");
   }
   if (!spring && joint.min_length == joint.max_length && !(joint.max_length > 0.0)) {
-    in.fail("anchor_b", "the anchors are at one point: a rod of length 0 has no direction "
-                        "(use a ball joint)");
+    in.fail("anchor_b",
+            "the anchors are at one point: a rod of length 0 has no direction "
+            "(use a ball joint)");
   }
   if (start < joint.min_length - 1e-9 || start > joint.max_length + 1e-9) {
     in.fail(start < joint.min_length ? "min_length" : "max_length",
@@ -157,8 +160,7 @@ JointSpec read_joint(TableReader& in, std::size_t index, const Scene& scene) {
   }
   joint.kind = *known;
   joint.body_a = body_named(in, scene, "body_a", in.required_string("body_a"), false);
-  joint.body_b =
-      body_named(in, scene, "body_b", in.optional_string("body_b", "world"), true);
+  joint.body_b = body_named(in, scene, "body_b", in.optional_string("body_b", "world"), true);
   if (joint.body_a == joint.body_b) {
     in.fail("body_b", "a joint holds two bodies: body_a and body_b are both " +
                           in_quotes(scene.bodies[joint.body_a].name));
@@ -171,8 +173,9 @@ JointSpec read_joint(TableReader& in, std::size_t index, const Scene& scene) {
             "both ends are static (a static body or the world): the joint would hold nothing");
   }
   if (joint.kind == JointKind::distance) {
-    refuse_keys(in, kind, {"anchor", "axis", "lower", "upper", "motor_speed", "max_motor_torque",
-                           "max_motor_force"});
+    refuse_keys(
+        in, kind,
+        {"anchor", "axis", "lower", "upper", "motor_speed", "max_motor_torque", "max_motor_force"});
     read_distance(in, joint);
   } else {
     refuse_keys(in, kind,
@@ -186,8 +189,8 @@ JointSpec read_joint(TableReader& in, std::size_t index, const Scene& scene) {
       joint.axis = (axis / largest).normalized();
       read_limits_and_motor(in, joint);
     } else {
-      refuse_keys(in, kind, {"axis", "lower", "upper", "motor_speed", "max_motor_torque",
-                             "max_motor_force"});
+      refuse_keys(in, kind,
+                  {"axis", "lower", "upper", "motor_speed", "max_motor_torque", "max_motor_force"});
     }
   }
   joint.collide_connected = in.optional_bool("collide_connected", joint.collide_connected);
@@ -231,8 +234,7 @@ void read_joints(TableReader& root, Scene& scene) {
                     const std::size_t b = root_of(welded, node(joint.body_b));
                     if (a == b) {
                       in.fail(in.has("body_b") ? "body_b" : "body_a",
-                              "this weld closes a loop of fixed joints (" +
-                                  in_quotes(joint.name) +
+                              "this weld closes a loop of fixed joints (" + in_quotes(joint.name) +
                                   "'s bodies are already welded together): it over-constrains "
                                   "them; leave it out");
                     }

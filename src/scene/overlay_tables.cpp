@@ -162,9 +162,9 @@ void read_joint_force(TableReader& in, const Scene& scene, VectorOverlay& out) {
   }
   std::string known;
   for (const JointSpec& joint : scene.joints) known += (known.empty() ? "" : ", ") + joint.name;
-  in.fail("joint", "no joint is named " + in_quotes(name) +
-                       (known.empty() ? " (the scene has no [[joints]])"
-                                      : " (joints: " + known + ")"));
+  in.fail("joint",
+          "no joint is named " + in_quotes(name) +
+              (known.empty() ? " (the scene has no [[joints]])" : " (joints: " + known + ")"));
 }
 
 VectorOverlay read_vector(TableReader& in, const Scene& scene) {
@@ -181,7 +181,8 @@ VectorOverlay read_vector(TableReader& in, const Scene& scene) {
     out.label = in.optional_string("label", out.label);
     return out;
   }
-  if (in.has("joint")) in.fail("joint", "only a vector of quantity = \"joint_force\" takes a joint");
+  if (in.has("joint"))
+    in.fail("joint", "only a vector of quantity = \"joint_force\" takes a joint");
   out.body = read_body(in, scene);
   const std::pair<std::string_view, std::pair<VectorQuantity, Rgba>> kNames[] = {
       {"velocity", {VectorQuantity::velocity, kVelocityColor}},

@@ -127,7 +127,9 @@ std::optional<Result<Placeholder>> parse_joint_value(std::string_view name,
       return Result<Placeholder>(out);
     }
     return Result<Placeholder>(
-        Error{"unknown quantity of joint "" + joint + "" (expected angle, speed or force)"});
+        Error{"unknown quantity of joint "
+              " + joint + "
+              " (expected angle, speed or force)"});
   }
   return std::nullopt;
 }

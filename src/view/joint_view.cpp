@@ -55,9 +55,8 @@ std::vector<JointValue> joint_values(const physics::JointWorld& joints,
 
 bool draws_joints(const scene::Scene& scene) {
   return std::any_of(scene.joints.begin(), scene.joints.end(), [](const scene::JointSpec& j) {
-    return j.visible &&
-           (j.kind == physics::JointKind::distance || j.kind == physics::JointKind::ball ||
-            j.kind == physics::JointKind::hinge);
+    return j.visible && (j.kind == physics::JointKind::distance ||
+                         j.kind == physics::JointKind::ball || j.kind == physics::JointKind::hinge);
   });
 }
 

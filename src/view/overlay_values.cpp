@@ -83,8 +83,8 @@ std::string format_value(const scene::Placeholder& value,
 }
 
 std::string format_text(const scene::TextTemplate& text,
-                        const std::vector<physics::BodyState>& states, double t,
-                        std::int64_t frame, std::span<const JointValue> joints) {
+                        const std::vector<physics::BodyState>& states, double t, std::int64_t frame,
+                        std::span<const JointValue> joints) {
   std::string out = text.pieces[0];
   for (std::size_t i = 0; i < text.values.size(); ++i) {
     out += format_value(text.values[i], states, t, frame, joints);

@@ -27,8 +27,8 @@ std::string format_value(const scene::Placeholder& value,
 
 // The whole text with each placeholder formatted.
 std::string format_text(const scene::TextTemplate& text,
-                        const std::vector<physics::BodyState>& states, double t,
-                        std::int64_t frame, std::span<const JointValue> joints = {});
+                        const std::vector<physics::BodyState>& states, double t, std::int64_t frame,
+                        std::span<const JointValue> joints = {});
 
 // The vector the overlay's arrow draws (world frame, in the quantity's unit: m/s, rad/s,
 // kg m²/s, N, or as written for a constant) for `body` in `state` at time t (s).

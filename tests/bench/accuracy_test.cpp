@@ -64,6 +64,22 @@ TEST(Accuracy, Rk4OnTheArticleCube) {
   EXPECT_DOUBLE_EQ(row.ns_per_simulated_second, row.ns_per_step * 60.0);
 }
 
+// The pendulum of 1 m from 90° (bench/joint_cases.cpp) under rk4 at 1/60 s keeps its period to
+// 1e-4 of 4 √(L/g) K(sin 45°) and its rod to 1e-9 m; symplectic Euler, of order 1, misses the
+// period by more than 1e-3 there.
+TEST(Accuracy, TheJointPendulumKeepsItsPeriodUnderRk4) {
+  const JointCase& c = *find_joint_case("pendulum");
+  const AccuracyRow rk4 = measure_joint_accuracy(c, Integrator::rk4, 1.0 / 60,
+                                                 {.samples = 1, .min_sample_seconds = 0.0});
+  ASSERT_FALSE(rk4.blew_up);
+  EXPECT_EQ(rk4.measure, "period_error");
+  EXPECT_LT(rk4.error, 1e-4);
+  EXPECT_LT(rk4.second_error, 1e-9);
+  const AccuracyRow first = measure_joint_accuracy(c, Integrator::symplectic_euler, 1.0 / 60,
+                                                   {.samples = 1, .min_sample_seconds = 0.0});
+  EXPECT_GT(first.error, 1e-3);
+}
+
 TEST(Accuracy, TheQuickSweepCoversItsCasesIntegratorsAndStepsInOrder) {
   const AccuracySettings quick = quick_accuracy_settings();
   std::vector<std::string> started;
@@ -72,17 +88,21 @@ TEST(Accuracy, TheQuickSweepCoversItsCasesIntegratorsAndStepsInOrder) {
   ASSERT_TRUE(measured) << measured.error();
   const std::vector<AccuracyRow>& rows = *measured;
   const std::size_t integrators = std::size(physics::kAllIntegrators);
-  const std::size_t runs = (quick.cases.size() + 2 * quick.contact_cases.size()) * integrators;
+  const std::size_t runs =
+      (quick.cases.size() + 2 * quick.contact_cases.size() + quick.joint_cases.size()) *
+      integrators;
   ASSERT_EQ(rows.size(), runs * quick.steps.size());
   ASSERT_EQ(started.size(), runs);
   std::size_t i = 0;
   const auto expect_rows = [&](const std::string& name, const std::string& contact) {
     for (const Integrator integrator : physics::kAllIntegrators) {
-      EXPECT_EQ(started[i / quick.steps.size()],
-                contact == "none" ? name : name + " (" + contact + " contact)");
+      EXPECT_EQ(started[i / quick.steps.size()], contact == "none" ? name
+                                                 : contact == "joints"
+                                                     ? name + " (joints)"
+                                                     : name + " (" + contact + " contact)");
       for (const double dt : quick.steps) {
         EXPECT_EQ(rows[i].case_name, name);
-        EXPECT_EQ(rows[i].contact, contact);
+        EXPECT_EQ(rows[i].contact, contact == "joints" ? "none" : contact);
         EXPECT_EQ(rows[i].integrator, physics::integrator_name(integrator));
         EXPECT_EQ(rows[i].dt, dt);
         EXPECT_FALSE(rows[i].measure.empty());
@@ -95,6 +115,7 @@ TEST(Accuracy, TheQuickSweepCoversItsCasesIntegratorsAndStepsInOrder) {
     expect_rows(name, "impulse");
     expect_rows(name, "penalty");
   }
+  for (const std::string& name : quick.joint_cases) expect_rows(name, "joints");
   const Result<std::vector<AccuracyRow>> unknown = measure_accuracy({.cases = {"no_such_case"}});
   ASSERT_FALSE(unknown);
   EXPECT_EQ(unknown.error(), "no hard case named no_such_case");

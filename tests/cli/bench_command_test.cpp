@@ -28,10 +28,10 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
-// Each hard case once, each contact case with both contact methods.
+// Each hard case once, each contact case with both contact methods, each joint case once.
 std::size_t quick_row_count() {
   const tumble::bench::AccuracySettings quick = tumble::bench::quick_accuracy_settings();
-  return (quick.cases.size() + 2 * quick.contact_cases.size()) *
+  return (quick.cases.size() + 2 * quick.contact_cases.size() + quick.joint_cases.size()) *
          std::size(tumble::physics::kAllIntegrators) * quick.steps.size();
 }
 

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
+#include "bench/joint_cases.hpp"
 #include "physics/contact_island.hpp"
 #include "physics/joint_solve.hpp"
 #include "physics/mass_properties.hpp"
@@ -67,12 +67,13 @@ TEST(JointRows, RatesAndCurvaturesAreTheDerivativesOfTheErrors) {
       const std::vector<BodyState> states = {
           make_state(model_a.constants, Vec3(0.1, 1.2, -0.3), Vec3(0.5, -0.2, 0.9),
                      Quat(0.9, 0.1, -0.3, 0.2).normalized(), spin_a_here),
-          make_state(model_b.constants, Vec3(-0.4, 0.8, 0.2), b == kWorldBody ? Vec3::Zero() : Vec3(-0.3, 0.4, 0.1),
+          make_state(model_b.constants, Vec3(-0.4, 0.8, 0.2),
+                     b == kWorldBody ? Vec3::Zero() : Vec3(-0.3, 0.4, 0.1),
                      Quat(0.7, -0.2, 0.4, 0.5).normalized(), spin_b)};
-      const Joint joint = place_joint(kind, 0, b, states, Vec3(0.3, 1.0, 0.1),
-                                      kind == JointKind::distance ? Vec3(-0.2, 0.6, 0.4)
-                                                                  : Vec3(0.3, 1.0, 0.1),
-                                      Vec3(1.0, 2.0, -0.5));
+      const Joint joint =
+          place_joint(kind, 0, b, states, Vec3(0.3, 1.0, 0.1),
+                      kind == JointKind::distance ? Vec3(-0.2, 0.6, 0.4) : Vec3(0.3, 1.0, 0.1),
+                      Vec3(1.0, 2.0, -0.5));
       std::vector<JointRow> rows;
       const JointBody body_b = b == kWorldBody ? JointBody{} : JointBody::of(states[1]);
       equality_rows(joint, JointBody::of(states[0]), body_b, rows);
@@ -106,17 +107,17 @@ TEST(JointRows, RatesAndCurvaturesAreTheDerivativesOfTheErrors) {
 // its centre, released from θ0: the period 4 √(L/g) K(sin(θ0/2)) within 1e-4 relative, the rod's
 // length within 1e-6 m and the energy within 1e-6 relative over 60 s (rk4, dt = 1/240 s).
 struct PendulumRun {
-  double period = 0.0;       // s: the mean time between upward crossings of the vertical
-  double worst_length = 0.0; // m: the largest |L - 1|
-  double worst_energy = 0.0; // of the start's |E|
+  double period = 0.0;        // s: the mean time between upward crossings of the vertical
+  double worst_length = 0.0;  // m: the largest |L - 1|
+  double worst_energy = 0.0;  // of the start's |E|
 };
 
 PendulumRun swing(double theta0, Integrator integrator, double dt, double seconds) {
   const Vec3 pivot(0.0, 2.0, 0.0);
   const std::vector<BodyModel> models = {sphere(1.0, 0.05)};
-  std::vector<BodyState> states = {make_state(
-      models[0].constants, pivot + Vec3(std::sin(theta0), -std::cos(theta0), 0.0), Vec3::Zero(),
-      Quat::Identity(), Vec3::Zero())};
+  std::vector<BodyState> states = {
+      make_state(models[0].constants, pivot + Vec3(std::sin(theta0), -std::cos(theta0), 0.0),
+                 Vec3::Zero(), Quat::Identity(), Vec3::Zero())};
   JointWorld world = make_joint_world(
       {place_joint(JointKind::distance, 0, kWorldBody, states, states[0].position(), pivot)},
       models);
@@ -183,8 +184,8 @@ struct DoublePendulum {
     }
     world.joints.push_back(
         place_joint(JointKind::distance, 0, kWorldBody, states, states[0].position(), pivot));
-    world.joints.push_back(place_joint(JointKind::distance, 1, 0, states, states[1].position(),
-                                       states[0].position()));
+    world.joints.push_back(
+        place_joint(JointKind::distance, 1, 0, states, states[1].position(), states[0].position()));
     world = make_joint_world(world.joints, models);
   }
   double energy() const {
@@ -200,48 +201,23 @@ struct DoublePendulum {
   }
 };
 
-// The reduced equations of the double pendulum (m1 = m2 = 1 kg, l1 = l2 = 1 m) in the angles
-// from the downward vertical: y = (θ1, θ2, θ̇1, θ̇2).
-// A vector rather than a std::array: odeint copies its steppers' state, and GCC warns of an
-// array copied before it is written (as src/bench/reference_solver.cpp found).
-using PendulumAngles = std::vector<double>;
-void double_pendulum_rates(const PendulumAngles& y, PendulumAngles& dy, double) {
-  const double m1 = 1.0, m2 = 1.0, l1 = 1.0, l2 = 1.0;
-  const double delta = y[0] - y[1];
-  // (m1 + m2) l1 θ̈1 + m2 l2 θ̈2 cos δ = -m2 l2 θ̇2² sin δ - (m1 + m2) g sin θ1
-  // l1 θ̈1 cos δ + l2 θ̈2 = l1 θ̇1² sin δ - g sin θ2
-  const double a11 = (m1 + m2) * l1, a12 = m2 * l2 * std::cos(delta);
-  const double a21 = l1 * std::cos(delta), a22 = l2;
-  const double b1 = -m2 * l2 * y[3] * y[3] * std::sin(delta) - (m1 + m2) * kG * std::sin(y[0]);
-  const double b2 = l1 * y[2] * y[2] * std::sin(delta) - kG * std::sin(y[1]);
-  const double det = a11 * a22 - a12 * a21;
-  dy[0] = y[2];
-  dy[1] = y[3];
-  dy[2] = (b1 * a22 - a12 * b2) / det;
-  dy[3] = (a11 * b2 - a21 * b1) / det;
-}
-
 // Until t = 5 s the angles follow the reduced equations integrated at 1e-12 (Boost.Odeint's
-// Runge-Kutta-Fehlberg 7(8)) within 1e-6 rad at dt = 1/960 s.
+// Runge-Kutta-Fehlberg 7(8), bench/joint_cases.hpp) within 1e-6 rad at dt = 1/960 s.
 TEST(DoublePendulum, FollowsTheReducedEquations) {
-  namespace odeint = boost::numeric::odeint;
   DoublePendulum pendulum;
   constexpr double dt = 1.0 / 960.0;
-  PendulumAngles reference = {std::numbers::pi / 2.0, std::numbers::pi / 2.0, 0.0, 0.0};
-  auto stepper =
-      odeint::make_controlled(1e-12, 1e-12, odeint::runge_kutta_fehlberg78<PendulumAngles>());
+  std::vector<double> reference = {std::numbers::pi / 2.0, std::numbers::pi / 2.0, 0.0, 0.0};
   std::vector<BodyState> next(2);
   double worst = 0.0;
   for (int n = 0; n < 5 * 960; ++n) {
     step_joints(Integrator::rk4, pendulum.models, pendulum.states, n * dt, dt, pendulum.world,
                 next);
     pendulum.states.swap(next);
-    odeint::integrate_adaptive(stepper, double_pendulum_rates, reference, n * dt, (n + 1) * dt,
-                               dt / 4.0);
+    reference = bench::double_pendulum_angles(reference, n * dt, (n + 1) * dt, 1e-12, kG);
     const std::array<double, 2> angles = pendulum.angles();
     for (std::size_t k = 0; k < 2; ++k) {
-      worst = std::max(
-          worst, std::abs(std::remainder(angles[k] - reference[k], 2.0 * std::numbers::pi)));
+      worst = std::max(worst,
+                       std::abs(std::remainder(angles[k] - reference[k], 2.0 * std::numbers::pi)));
     }
   }
   EXPECT_LT(worst, 1e-6);
@@ -320,9 +296,9 @@ struct Chain {
     double out = 0.0;
     for (const Joint& joint : world.joints) {
       const JointBody b = joint.b == kWorldBody ? JointBody{} : JointBody::of(states[joint.b]);
-      out = std::max(out, (anchor_a_world(joint, JointBody::of(states[joint.a])) -
-                           anchor_b_world(joint, b))
-                              .norm());
+      out = std::max(
+          out, (anchor_a_world(joint, JointBody::of(states[joint.a])) - anchor_b_world(joint, b))
+                   .norm());
     }
     return out;
   }
@@ -397,7 +373,8 @@ struct Door {
     const Vec3 hinge = frame * Vec3(0.0, 1.0, 0.0);
     states.push_back(make_state(models[0].constants, frame * Vec3(0.5, 1.0, 0.0),
                                 frame * Vec3(0.0, 0.0, -0.5 * swing), frame, swing * axis));
-    world.joints.push_back(place_joint(JointKind::hinge, 0, kWorldBody, states, hinge, hinge, axis));
+    world.joints.push_back(
+        place_joint(JointKind::hinge, 0, kWorldBody, states, hinge, hinge, axis));
   }
   double angle() const {
     return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->value;
@@ -426,8 +403,8 @@ TEST(Hinge, HoldsADoorWithoutSag) {
 // more than 1e-3 rad.
 TEST(Hinge, StopsAtItsLimits) {
   Door door(3.0);
-  door.world.joints[0].limits = JointLimits{.lower = -std::numbers::pi / 4.0,
-                                            .upper = std::numbers::pi / 4.0};
+  door.world.joints[0].limits =
+      JointLimits{.lower = -std::numbers::pi / 4.0, .upper = std::numbers::pi / 4.0};
   double highest = -1.0, lowest = 1.0;
   run(Integrator::rk4, door.models, door.states, door.world, 1.0 / 240.0, 3.0,
       [&](const std::vector<BodyState>&) {
@@ -474,8 +451,8 @@ struct Incline {
     states.push_back(make_state(models[0].constants, Vec3(0.0, 3.0, 0.0), Vec3::Zero(),
                                 Quat(Eigen::AngleAxisd(-std::numbers::pi / 6.0, Vec3::UnitZ())),
                                 Vec3::Zero()));
-    world.joints.push_back(place_joint(JointKind::slider, 0, kWorldBody, states, Vec3(0.0, 3.0, 0.0),
-                                       Vec3(0.0, 3.0, 0.0), down));
+    world.joints.push_back(place_joint(JointKind::slider, 0, kWorldBody, states,
+                                       Vec3(0.0, 3.0, 0.0), Vec3(0.0, 3.0, 0.0), down));
   }
   double travel() const {
     return joint_coordinate(world.joints[0], JointBody::of(states[0]), JointBody{})->value;
@@ -555,8 +532,8 @@ TEST(Fixed, WeldsTwoBoxesIntoOneBody) {
     turn[i] = Quat(axes).conjugate() * states[i].orientation();
   }
   JointWorld world;
-  world.joints.push_back(place_joint(JointKind::fixed, 1, 0, states, Vec3(0.15, 5.2, 0.05),
-                                     Vec3(0.15, 5.2, 0.05)));
+  world.joints.push_back(
+      place_joint(JointKind::fixed, 1, 0, states, Vec3(0.15, 5.2, 0.05), Vec3(0.15, 5.2, 0.05)));
   const Joint& weld = world.joints[0];
   double worst_offset = 0.0, worst_turn = 0.0, worst_place = 0.0, worst_angle = 0.0;
   constexpr double dt = 1.0 / 240.0;
@@ -564,18 +541,16 @@ TEST(Fixed, WeldsTwoBoxesIntoOneBody) {
   run(Integrator::rk4, models, states, world, dt, 10.0, [&](const std::vector<BodyState>& now) {
     one = step(Integrator::rk4, whole, one, n * dt, dt);
     ++n;
-    worst_offset = std::max(
-        worst_offset, (anchor_a_world(weld, JointBody::of(now[1])) -
-                       anchor_b_world(weld, JointBody::of(now[0])))
-                          .norm());
-    worst_turn = std::max(worst_turn, angle_between(now[1].orientation(),
-                                                    now[0].orientation() * weld.rest));
-    for (std::size_t i = 0; i < 2; ++i) {
-      worst_place = std::max(worst_place, (now[i].position() - (one.position() +
-                                                                one.rotation() * offset[i]))
+    worst_offset = std::max(worst_offset, (anchor_a_world(weld, JointBody::of(now[1])) -
+                                           anchor_b_world(weld, JointBody::of(now[0])))
                                               .norm());
-      worst_angle = std::max(worst_angle, angle_between(now[i].orientation(),
-                                                        one.orientation() * turn[i]));
+    worst_turn =
+        std::max(worst_turn, angle_between(now[1].orientation(), now[0].orientation() * weld.rest));
+    for (std::size_t i = 0; i < 2; ++i) {
+      worst_place = std::max(
+          worst_place, (now[i].position() - (one.position() + one.rotation() * offset[i])).norm());
+      worst_angle =
+          std::max(worst_angle, angle_between(now[i].orientation(), one.orientation() * turn[i]));
     }
   });
   EXPECT_LT(worst_offset, 1e-6);
@@ -598,13 +573,13 @@ TEST(SpinningTop, PrecessesSteadilyAndKeepsItsEnergyAndMomenta) {
   const Vec3 moments = cylinder_inertia(mass, radius, thickness).diagonal();  // y: the axis
   const double i3 = moments.y(), i1 = moments.x() + mass * l * l;
   const double mgl = mass * kG * l;
-  const double omega = (i3 * spin - std::sqrt(i3 * i3 * spin * spin - 4.0 * i1 * mgl * std::cos(tilt))) /
-                       (2.0 * i1 * std::cos(tilt));
-  const std::vector<BodyModel> models = {
-      {.constants = constants_from_moments(mass, moments),
-       .forces = {Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
-       .shape = cylinder_shape(radius, 0.5 * thickness),
-       .collides = false}};
+  const double omega =
+      (i3 * spin - std::sqrt(i3 * i3 * spin * spin - 4.0 * i1 * mgl * std::cos(tilt))) /
+      (2.0 * i1 * std::cos(tilt));
+  const std::vector<BodyModel> models = {{.constants = constants_from_moments(mass, moments),
+                                          .forces = {Gravity{.acceleration = Vec3(0.0, -kG, 0.0)}},
+                                          .shape = cylinder_shape(radius, 0.5 * thickness),
+                                          .collides = false}};
   const Vec3 pivot(0.0, 1.0, 0.0);
   const Quat q(Eigen::AngleAxisd(tilt, Vec3::UnitZ()));  // its axis (body y) tilted towards -x
   const Vec3 axis = q * Vec3::UnitY();
@@ -613,7 +588,9 @@ TEST(SpinningTop, PrecessesSteadilyAndKeepsItsEnergyAndMomenta) {
       make_state(models[0].constants, pivot + l * axis, w.cross(l * axis), q, w)};
   JointWorld world;
   world.joints.push_back(place_joint(JointKind::ball, 0, kWorldBody, states, pivot, pivot));
-  const auto energy = [&](const BodyState& s) { return kinetic_energy(s) + mgl / l * s.position().y(); };
+  const auto energy = [&](const BodyState& s) {
+    return kinetic_energy(s) + mgl / l * s.position().y();
+  };
   const auto vertical_momentum = [&](const BodyState& s) {
     return (s.angular_momentum() + mass * (s.position() - pivot).cross(s.velocity())).y();
   };
@@ -629,7 +606,8 @@ TEST(SpinningTop, PrecessesSteadilyAndKeepsItsEnergyAndMomenta) {
         const Vec3 a = now[0].rotation() * Vec3::UnitY();
         worst_tilt = std::max(worst_tilt, std::abs(std::acos(a.y()) - tilt));
         // The azimuth of the axis, unwrapped.
-        turned += std::atan2(last.z() * a.x() - last.x() * a.z(), last.x() * a.x() + last.z() * a.z());
+        turned +=
+            std::atan2(last.z() * a.x() - last.x() * a.z(), last.x() * a.x() + last.z() * a.z());
         last = a;
         worst_e = std::max(worst_e, std::abs(energy(now[0]) - e0) / e0);
         worst_lz = std::max(worst_lz, std::abs(vertical_momentum(now[0]) - lz0) / std::abs(lz0));
