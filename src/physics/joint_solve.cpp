@@ -580,6 +580,57 @@ int joint_substeps(double fastest, double dt) {
   return static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(kMostJointSubsteps)));
 }
 
+namespace {
+
+// Symplectic Euler with the joints at the velocity level, from world.start to world.end over h
+// (s): each body's kick by its own laws (and the springs'), the velocities onto J v = 0 at the
+// start pose (one solve with K: the joints' impulses over the step, implicit in the velocities),
+// the limits and motors, the drift with the new velocities, then the projection.
+void symplectic_joint_step(double t, double h, JointWorld& world) {
+  const std::span<const BodyModel> models = world.models;
+  const std::size_t n = world.members.size();
+  std::vector<Wrench> springs(n);
+  for (const Joint& joint : world.local) {
+    if (joint.kind == JointKind::distance && joint.stiffness > 0.0) {
+      add_spring(joint, world.start, springs);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (models[i].is_static) {
+      world.end[i] = world.start[i];
+      continue;
+    }
+    const Wrench own = total_wrench(models[i].forces, models[i].constants, world.start[i], t);
+    PrimaryState kicked = world.start[i].primary();
+    kicked.momentum += h * (own.force + springs[i].force);
+    kicked.angular_momentum += h * (own.torque + springs[i].torque);
+    world.end[i] = BodyState(kicked, models[i].constants);
+  }
+  JointSystem& system = world.system;
+  system.build(world.local, models, world.end);
+  const std::vector<JointRow>& rows = system.rows();
+  if (!rows.empty() && system.factorise()) {
+    Eigen::VectorXd rhs(static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      rhs[static_cast<Eigen::Index>(r)] = -row_rate(rows[r], world.end);
+    }
+    std::vector<Vec3> linear(n), angular(n);
+    gather(rows, system.solve(rhs), linear, angular);
+    apply_impulses(models, system, linear, angular, 0.0, true, world.end);
+  }
+  solve_bounded(h, 0.0, world, world.end);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (models[i].is_static) continue;
+    PrimaryState moved = world.end[i].primary();
+    moved.position += h * world.end[i].velocity();
+    moved.orientation.coeffs() += h * world.end[i].spin().coeffs();
+    world.end[i] = BodyState(moved, models[i].constants);
+  }
+  project(world, world.end);
+}
+
+}  // namespace
+
 void advance_joint_members(Integrator integrator, std::span<const BodyState> in, double t,
                            double dt, JointWorld& world, std::span<BodyState> out) {
   const std::size_t n = world.members.size();
@@ -591,6 +642,14 @@ void advance_joint_members(Integrator integrator, std::span<const BodyState> in,
       joint_substeps(fastest_joint_mode(world.local, models, world.start, t, world.system), dt);
   const double h = dt / substeps;
   world.substep = h;
+  if (integrator == Integrator::symplectic_euler) {
+    for (int k = 0; k < substeps; ++k) {
+      symplectic_joint_step(t + k * h, h, world);
+      world.start.swap(world.end);
+    }
+    for (std::size_t k = 0; k < n; ++k) out[world.members[k]] = world.start[k];
+    return;
+  }
   const JointForces forces(world.local, models, world.system);
   for (int k = 0; k < substeps; ++k) {
     step_coupled(integrator, models, world.start, t + k * h, h, forces, world.end);

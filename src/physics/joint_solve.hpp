@@ -149,7 +149,7 @@ inline constexpr int kMostJointSubsteps = 64;
 int joint_substeps(double fastest /* rad/s */, double dt /* s */);
 
 // Newton iterations of the projection at most, and the error (m or rad) at which it stops.
-inline constexpr int kJointProjectionIterations = 8;
+inline constexpr int kJointProjectionIterations = 16;
 inline constexpr double kJointProjectionTolerance = 1e-13;
 // Passes of the sequential impulses over limits, motors and ranges at most; they stop earlier
 // when no impulse changes by more than kJointTolerance of the largest.
