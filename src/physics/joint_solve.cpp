@@ -135,48 +135,72 @@ void JointSystem::build_with_passed_limits(std::span<const Joint> joints,
   }
 }
 
-bool JointSystem::factorise() {
+void JointSystem::plan() {
+  // K_rs = Σ over the bodies rows r and s share: m⁻¹ l_r·l_s + w_r·I⁻¹ w_s, lower triangle; a
+  // static body (no inverse mass or inertia) adds nothing.
   const auto n = static_cast<Eigen::Index>(rows_.size());
-  if (n == 0) return true;
-  // K_rs = Σ over the bodies rows r and s share: m⁻¹ l_r·l_s + w_r·I⁻¹ w_s, lower triangle.
   std::vector<std::vector<std::pair<std::uint32_t, bool>>> by_body(inverse_masses_.size());
   for (std::uint32_t r = 0; r < rows_.size(); ++r) {
     by_body[rows_[r].a].push_back({r, false});
     if (rows_[r].b != kWorldBody) by_body[rows_[r].b].push_back({r, true});
   }
-  triplets_.clear();
-  double largest = 0.0;
+  terms_.clear();
+  std::vector<Eigen::Triplet<double>> triplets;
   for (std::uint32_t i = 0; i < by_body.size(); ++i) {
-    const double m = inverse_masses_[i];
-    const Mat3& inertia = inverse_inertias_[i];
-    if (m == 0.0 && inertia.isZero()) continue;  // static: it takes no impulse
+    if (inverse_masses_[i] == 0.0 && inverse_inertias_[i].isZero()) continue;
     for (const auto& [r, r_on_b] : by_body[i]) {
-      const JointRow& row_r = rows_[r];
-      const Vec3& l_r = r_on_b ? row_r.linear_b : row_r.linear_a;
-      const Vec3 turn_r = inertia * (r_on_b ? row_r.angular_b : row_r.angular_a);
       for (const auto& [s, s_on_b] : by_body[i]) {
         if (s > r) continue;
-        const JointRow& row_s = rows_[s];
-        const Vec3& l_s = s_on_b ? row_s.linear_b : row_s.linear_a;
-        const Vec3& w_s = s_on_b ? row_s.angular_b : row_s.angular_a;
-        const double value = m * l_r.dot(l_s) + turn_r.dot(w_s);
-        triplets_.emplace_back(r, s, value);
-        if (r == s) largest = std::max(largest, value);
+        terms_.push_back({.r = r, .s = s, .body = i, .r_on_b = r_on_b, .s_on_b = s_on_b});
+        triplets.emplace_back(r, s, 0.0);
       }
     }
   }
-  for (Eigen::Index r = 0; r < n; ++r) triplets_.emplace_back(r, r, kRegularisation * largest);
+  for (Eigen::Index r = 0; r < n; ++r) triplets.emplace_back(r, r, 0.0);
   k_.resize(n, n);
-  k_.setFromTriplets(triplets_.begin(), triplets_.end());
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pattern;
-  pattern.reserve(rows_.size());
-  for (const JointRow& row : rows_) pattern.emplace_back(row.a, row.b);
+  k_.setFromTriplets(triplets.begin(), triplets.end());
+  k_.makeCompressed();
+  const double* values = k_.valuePtr();
+  for (Term& term : terms_) term.slot = &k_.coeffRef(term.r, term.s) - values;
+  diagonal_slots_.resize(rows_.size());
+  for (Eigen::Index r = 0; r < n; ++r) diagonal_slots_[r] = &k_.coeffRef(r, r) - values;
+  pattern_.clear();
+  for (const JointRow& row : rows_) pattern_.emplace_back(row.a, row.b);
   if (!factor_) factor_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
-  if (!analysed_ || pattern != pattern_) {
-    factor_->analyzePattern(k_);
-    pattern_ = std::move(pattern);
-    analysed_ = true;
+  factor_->analyzePattern(k_);
+  analysed_ = true;
+}
+
+bool JointSystem::factorise() {
+  const std::size_t n = rows_.size();
+  if (n == 0) return true;
+  bool same = analysed_ && pattern_.size() == n;
+  for (std::size_t r = 0; same && r < n; ++r) {
+    same = pattern_[r].first == rows_[r].a && pattern_[r].second == rows_[r].b;
   }
+  if (!same) plan();
+  // Each row's image through each of its bodies' inverse inertias, once.
+  turns_.resize(2 * n);
+  for (std::size_t r = 0; r < n; ++r) {
+    const JointRow& row = rows_[r];
+    turns_[2 * r] = inverse_inertias_[row.a] * row.angular_a;
+    turns_[2 * r + 1] =
+        row.b == kWorldBody ? Vec3::Zero() : Vec3(inverse_inertias_[row.b] * row.angular_b);
+  }
+  double* values = k_.valuePtr();
+  std::fill(values, values + k_.nonZeros(), 0.0);
+  for (const Term& term : terms_) {
+    const JointRow& row_r = rows_[term.r];
+    const JointRow& row_s = rows_[term.s];
+    const Vec3& l_r = term.r_on_b ? row_r.linear_b : row_r.linear_a;
+    const Vec3& turn_r = turns_[2 * term.r + (term.r_on_b ? 1 : 0)];
+    const Vec3& l_s = term.s_on_b ? row_s.linear_b : row_s.linear_a;
+    const Vec3& w_s = term.s_on_b ? row_s.angular_b : row_s.angular_a;
+    values[term.slot] += inverse_masses_[term.body] * l_r.dot(l_s) + turn_r.dot(w_s);
+  }
+  double largest = 0.0;
+  for (const std::ptrdiff_t slot : diagonal_slots_) largest = std::max(largest, values[slot]);
+  for (const std::ptrdiff_t slot : diagonal_slots_) values[slot] += kRegularisation * largest;
   factor_->factorize(k_);
   return factor_->info() == Eigen::Success;
 }

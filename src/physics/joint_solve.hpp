@@ -78,11 +78,20 @@ class JointSystem {
 
  private:
   void masses(std::span<const BodyModel> models, std::span<const BodyState> states);
+  // For a new pattern of rows: which rows meet at which body, and where in K each product goes.
+  void plan();
+  struct Term {  // row r's and row s's parts on one body, added into K_rs
+    std::uint32_t r = 0, s = 0, body = 0;
+    bool r_on_b = false, s_on_b = false;
+    std::ptrdiff_t slot = 0;  // index into k_'s values
+  };
+  std::vector<Term> terms_;
+  std::vector<std::ptrdiff_t> diagonal_slots_;
+  std::vector<Vec3> turns_;  // I⁻¹ w of each row's a and b
   std::vector<JointRow> rows_;
   std::vector<double> inverse_masses_;
   std::vector<Mat3> inverse_inertias_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pattern_;  // the rows' bodies analysed
-  std::vector<Eigen::Triplet<double>> triplets_;
   Eigen::SparseMatrix<double> k_;
   std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> factor_;
   bool analysed_ = false;
