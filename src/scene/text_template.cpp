@@ -126,10 +126,9 @@ std::optional<Result<Placeholder>> parse_joint_value(std::string_view name,
       out.component = component;
       return Result<Placeholder>(out);
     }
-    return Result<Placeholder>(
-        Error{"unknown quantity of joint "
-              " + joint + "
-              " (expected angle, speed or force)"});
+    std::string what = "unknown quantity of joint \"";
+    what.append(joint).append("\" (expected angle, speed or force)");
+    return Result<Placeholder>(Error{what});
   }
   return std::nullopt;
 }

@@ -752,5 +752,122 @@ TEST(SceneLoader, DeeplyDottedKeysAreRefusedBeforeParsing) {
   }
 }
 
+// Every joint key is read as written, in the world frame at t = 0, and a distance's lengths
+// default as the reference says: a rod of the anchors' distance with neither, a rope (slack from
+// 0) with max_length alone, a spring with no stops.
+TEST(SceneLoader, ReadsJointsAndTheirDefaults) {
+  const Scene scene = parse_valid(R"(duration = 1.0
+[[bodies]]
+name = "door"
+shape = "box"
+size = [1.0, 2.0, 0.05]
+mass = 20.0
+position = [0.5, 1.0, 0.0]
+[[bodies]]
+name = "bob"
+shape = "sphere"
+radius = 0.1
+mass = 1.0
+position = [3.0, 0.0, 0.0]
+[[joints]]
+name = "pivot"
+kind = "hinge"
+body_a = "door"
+anchor = [0.0, 1.0, 0.0]
+axis = [0.0, 2.0, 0.0]
+lower = -0.5
+upper = 0.5
+motor_speed = 2.0
+max_motor_torque = 10.0
+collide_connected = true
+visible = false
+[[joints]]
+name = "rod"
+kind = "distance"
+body_a = "bob"
+anchor_a = [3.0, 0.0, 0.0]
+anchor_b = [3.0, 2.0, 0.0]
+[[joints]]
+name = "rope"
+kind = "distance"
+body_a = "bob"
+body_b = "door"
+anchor_a = [3.0, 0.0, 0.0]
+anchor_b = [1.0, 0.0, 0.0]
+max_length = 2.5
+[[joints]]
+name = "spring"
+kind = "distance"
+body_a = "bob"
+anchor_a = [3.0, 0.0, 0.0]
+anchor_b = [3.0, 1.0, 0.0]
+stiffness = 100.0
+damping = 2.0
+)");
+  ASSERT_EQ(scene.joints.size(), 4u);
+  const JointSpec& hinge = scene.joints[0];
+  EXPECT_EQ(hinge.kind, physics::JointKind::hinge);
+  EXPECT_EQ(hinge.body_a, 0u);
+  EXPECT_EQ(hinge.body_b, physics::kWorldBody);
+  EXPECT_EQ(hinge.anchor_a, Vec3(0.0, 1.0, 0.0));
+  EXPECT_EQ(hinge.axis, Vec3(0.0, 1.0, 0.0));  // made unit
+  ASSERT_TRUE(hinge.limits);
+  EXPECT_EQ(hinge.limits->lower, -0.5);
+  EXPECT_EQ(hinge.limits->upper, 0.5);
+  ASSERT_TRUE(hinge.motor);
+  EXPECT_EQ(hinge.motor->speed, 2.0);
+  EXPECT_EQ(hinge.motor->max_effort, 10.0);
+  EXPECT_TRUE(hinge.collide_connected);
+  EXPECT_FALSE(hinge.visible);
+  const JointSpec& rod = scene.joints[1];
+  EXPECT_EQ(rod.min_length, 2.0);
+  EXPECT_EQ(rod.max_length, 2.0);
+  EXPECT_FALSE(rod.collide_connected);
+  EXPECT_TRUE(rod.visible);
+  const JointSpec& rope = scene.joints[2];
+  EXPECT_EQ(rope.body_b, 0u);
+  EXPECT_EQ(rope.min_length, 0.0);
+  EXPECT_EQ(rope.max_length, 2.5);
+  const JointSpec& spring = scene.joints[3];
+  EXPECT_EQ(spring.stiffness, 100.0);
+  EXPECT_EQ(spring.damping, 2.0);
+  EXPECT_EQ(spring.min_length, 0.0);
+  EXPECT_EQ(spring.max_length, kInfinity);
+  // Built: the rod is rigid, the rope and the spring are not; the spring rests at 1 m.
+  const sim::Simulation simulation = build_simulation(scene);
+  const std::vector<physics::Joint>& built = simulation.joints().joints;
+  ASSERT_EQ(built.size(), 4u);
+  EXPECT_TRUE(physics::is_rigid_distance(built[1]));
+  EXPECT_FALSE(physics::is_rigid_distance(built[2]));
+  EXPECT_EQ(built[3].rest_length, 1.0);
+}
+
+// Two bodies a joint holds may start overlapping (a chain's links end to end), unless the joint
+// lets them collide.
+TEST(SceneLoader, ABodyMayOverlapTheBodyItIsJointedTo) {
+  const std::string bodies = R"(duration = 1.0
+[[bodies]]
+name = "a"
+shape = "cube"
+size = 1.0
+mass = 1.0
+[[bodies]]
+name = "b"
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0.5, 0.0, 0.0]
+[[joints]]
+kind = "ball"
+body_a = "b"
+body_b = "a"
+anchor = [0.25, 0.0, 0.0]
+)";
+  EXPECT_EQ(parse_valid(bodies).joints.size(), 1u);
+  const Result<Scene> colliding = parse_scene(bodies + "collide_connected = true\n", "joined.toml");
+  ASSERT_FALSE(colliding);
+  EXPECT_NE(colliding.error().find("start overlapping"), std::string::npos) << colliding.error();
+}
+
 }  // namespace
 }  // namespace tumble::scene

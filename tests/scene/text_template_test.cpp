@@ -92,5 +92,38 @@ TEST(TextTemplate, NamesEveryQuantity) {
   }
 }
 
+// Joints are named as bodies are: {JOINT.angle} of a hinge, {JOINT.speed} of a hinge, a slider or
+// a distance, {JOINT.force} of any, with components; what a kind lacks is refused by name.
+TEST(TextTemplate, ReadsAJointsAngleSpeedAndForce) {
+  const std::vector<JointName> joints = {{"door", physics::JointKind::hinge},
+                                         {"rod", physics::JointKind::distance},
+                                         {"pin", physics::JointKind::ball}};
+  const Result<TextTemplate> t = parse_text_template(
+      "{door.angle:.3f} {rod.speed} {pin.force.y:.1f} {cube.speed}", kBodies, joints);
+  ASSERT_TRUE(t) << t.error();
+  ASSERT_EQ(t->values.size(), 4u);
+  EXPECT_EQ(t->values[0].source, Placeholder::Source::joint);
+  EXPECT_EQ(t->values[0].joint, 0u);
+  EXPECT_EQ(t->values[0].joint_quantity, JointQuantity::angle);
+  EXPECT_EQ(t->values[0].precision, 3);
+  EXPECT_EQ(t->values[1].joint, 1u);
+  EXPECT_EQ(t->values[1].joint_quantity, JointQuantity::speed);
+  EXPECT_EQ(t->values[2].joint, 2u);
+  EXPECT_EQ(t->values[2].joint_quantity, JointQuantity::force);
+  EXPECT_EQ(t->values[2].component, 1);
+  EXPECT_EQ(t->values[3].source, Placeholder::Source::body);
+  const auto error = [&](std::string_view text) {
+    const Result<TextTemplate> out = parse_text_template(text, kBodies, joints);
+    return out ? std::string() : out.error();
+  };
+  EXPECT_EQ(error("{rod.angle}"),
+            "{rod.angle}: only a hinge has an angle (\"rod\" is a distance joint)");
+  EXPECT_EQ(error("{pin.speed}"),
+            "{pin.speed}: a hinge, a slider or a distance has a speed (\"pin\" is a ball joint)");
+  EXPECT_EQ(error("{door.angle.x}"), "{door.angle.x}: angle is a number, it has no component");
+  EXPECT_EQ(error("{door.torque}"),
+            "{door.torque}: unknown quantity of joint \"door\" (expected angle, speed or force)");
+}
+
 }  // namespace
 }  // namespace tumble::scene

@@ -54,6 +54,18 @@ TEST(OverlayValues, FormatsEachQuantityAsPrintfDoes) {
   EXPECT_EQ(formatted("{cube.kinetic_energy:.3g} J"), "31 J");
 }
 
+// A joint's placeholders read its values (joint_view.hpp): a door on a hinge turned 0.25 rad and
+// turning at 2 rad/s, pulled by 30 N along x.
+TEST(OverlayValues, FormatsAJointsValues) {
+  const Result<scene::TextTemplate> parsed = scene::parse_text_template(
+      "{door.angle:.3f} rad, {door.speed:.1f} rad/s, {door.force:.0f} N, {door.force.x:.1f}", {},
+      {{"door", physics::JointKind::hinge}});
+  ASSERT_TRUE(parsed) << parsed.error();
+  const std::vector<JointValue> values = {
+      {.coordinate = 0.25, .rate = 2.0, .force = Vec3(30.0, 0.0, -4.0)}};
+  EXPECT_EQ(format_text(*parsed, {}, 0.0, 0, values), "0.250 rad, 2.0 rad/s, (30, 0, -4) N, 30.0");
+}
+
 TEST(OverlayValues, AVectorIsItsQuantityAtItsPoint) {
   scene::BodySpec cube = spinning_cube();
   cube.forces = {physics::Gravity{}, physics::ConstantForce{.force = Vec3(1, 0, 0)}};
