@@ -4,6 +4,7 @@
 #include <memory>
 #include <variant>
 
+#include "common/printed.hpp"
 #include "physics/integrators.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
@@ -19,8 +20,11 @@ CommandResult run_check(const CheckOptions& options, std::FILE* out) {
   for (const std::string& line : warnings) std::fprintf(out, "tumble: warning: %s\n", line.c_str());
   const std::size_t bodies = scene.bodies.size();
   const std::int64_t steps = scene::step_count(scene);
-  std::fprintf(out, "%s: valid: %zu bod%s, %lld step%s of %g s with %s; %zu warning%s\n",
-               options.scene_path.c_str(), bodies, bodies == 1 ? "y" : "ies",
+  const std::size_t joints = scene.joints.size();
+  const std::string held =
+      joints == 0 ? "" : printed(" and %zu joint%s", joints, joints == 1 ? "" : "s");
+  std::fprintf(out, "%s: valid: %zu bod%s%s, %lld step%s of %g s with %s; %zu warning%s\n",
+               options.scene_path.c_str(), bodies, bodies == 1 ? "y" : "ies", held.c_str(),
                static_cast<long long>(steps), steps == 1 ? "" : "s", scene.physics.dt,
                std::string(physics::integrator_name(scene.physics.integrator)).c_str(),
                warnings.size(), warnings.size() == 1 ? "" : "s");

@@ -79,6 +79,16 @@ TEST_F(CheckCommand, PrintsTheWarningsOfAValidSceneAndExitsZero) {
   EXPECT_EQ(run.err, "");
 }
 
+// A scene with joints says how many it holds beside its bodies.
+TEST_F(CheckCommand, CountsTheJoints) {
+  const Outcome run = tumble("check " + std::string(TUMBLE_SOURCE_DIR) + "/scenes/chain.toml");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("valid: 30 bodies and 30 joints, 1920 steps of 0.00416667 s with rk4; "
+                         "0 warnings\n"),
+            std::string::npos)
+      << run.out;
+}
+
 // A 100 kg cube on a column of thirteen 1 kg cubes on the floor: 56 contact points, solved one at
 // a time, beyond the mass ratio that solver holds (a top 50 times as heavy collapses the column).
 // Two cubes alone are one block and hold it: no warning.
