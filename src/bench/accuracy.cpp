@@ -185,85 +185,84 @@ AccuracyRow measure_accuracy(const HardCase& c, physics::Integrator integrator, 
   return row;
 }
 
-AccuracyRow measure_contact_accuracy(const ContactCase& c, physics::ContactMethod method,
-                                     physics::Integrator integrator, double dt,
-                                     const TimingSettings& timing) {
-  AccuracyRow row{.case_name = c.name,
-                  .contact = physics::contact_method_name(method),
-                  .integrator = std::string(physics::integrator_name(integrator)),
-                  .dt = dt,
-                  .steps = std::llround(c.duration / dt),
-                  .measure = c.measures.at(0).name,
-                  .second_measure = c.measures.size() > 1 ? c.measures[1].name : "",
-                  .orientation_error = kNaN,
-                  .position_error = kNaN,
-                  .angular_momentum_error = kNaN,
-                  .energy_error = kNaN};
+namespace {
 
-  const double energy_bound = 2.0 * energy_above_rest(c, c.initial);  // J
+// A row of a case that measures its own errors (`measures`), with NaN in the final-state ones.
+AccuracyRow measured_row(const std::string& name, const std::string& contact,
+                         physics::Integrator integrator, double dt, double duration,
+                         const std::vector<ContactMeasure>& measures) {
+  return {.case_name = name,
+          .contact = contact,
+          .integrator = std::string(physics::integrator_name(integrator)),
+          .dt = dt,
+          .steps = std::llround(duration / dt),
+          .measure = measures.at(0).name,
+          .second_measure = measures.size() > 1 ? measures[1].name : "",
+          .orientation_error = kNaN,
+          .position_error = kNaN,
+          .angular_momentum_error = kNaN,
+          .energy_error = kNaN};
+}
+
+// A case run through sim::Simulation (`make` gives a fresh one): the error run keeps `keep(world)`
+// after each step, from `start`, and stops where the Simulation or `blew_up(kept)` says it blew
+// up; `judge(states)` gives the errors; then the timing samples of the same steps.
+template <class State, class Make, class Keep, class BlewUp, class Judge>
+void run_measured(AccuracyRow& row, const TimingSettings& timing, State start, Make make, Keep keep,
+                  BlewUp blew_up, Judge judge) {
   const Clock::time_point error_run_start = Clock::now();
-  sim::Simulation world = contact_simulation(c, method, integrator, dt);
-  std::vector<physics::BodyState> states = {c.initial};
+  sim::Simulation world = make();
+  std::vector<State> states = {std::move(start)};
   states.reserve(static_cast<std::size_t>(row.steps) + 1);
   while (world.step_count() < row.steps && !row.blew_up) {
     world.step();
-    states.push_back(world.current().front());
-    row.blew_up =
-        world.blow_up().has_value() || !(energy_above_rest(c, states.back()) <= energy_bound);
+    states.push_back(keep(world));
+    row.blew_up = world.blow_up().has_value() || blew_up(states.back());
   }
   const double error_run_seconds = seconds_since(error_run_start);
   const std::int64_t taken = world.step_count();
-
   if (row.blew_up) {
     row.error = kNaN;
   } else {
-    const std::vector<double> errors = c.judge(states, dt);
+    const std::vector<double> errors = judge(states);
     row.error = errors.at(0);
     if (errors.size() > 1) row.second_error = errors[1];
   }
   time_runs(row, timing, error_run_seconds, taken, [&] {
-    sim::Simulation timed = contact_simulation(c, method, integrator, dt);
+    sim::Simulation timed = make();
     while (timed.step_count() < taken) timed.step();
     return timed.current().front().position().x();
   });
+}
+
+}  // namespace
+
+AccuracyRow measure_contact_accuracy(const ContactCase& c, physics::ContactMethod method,
+                                     physics::Integrator integrator, double dt,
+                                     const TimingSettings& timing) {
+  AccuracyRow row = measured_row(c.name, physics::contact_method_name(method), integrator, dt,
+                                 c.duration, c.measures);
+  const double energy_bound = 2.0 * energy_above_rest(c, c.initial);  // J
+  run_measured(
+      row, timing, c.initial, [&] { return contact_simulation(c, method, integrator, dt); },
+      [](const sim::Simulation& world) { return world.current().front(); },
+      [&](const physics::BodyState& state) {
+        return !(energy_above_rest(c, state) <= energy_bound);
+      },
+      [&](const std::vector<physics::BodyState>& states) { return c.judge(states, dt); });
   return row;
 }
 
 AccuracyRow measure_joint_accuracy(const JointCase& c, physics::Integrator integrator, double dt,
                                    const TimingSettings& timing) {
-  AccuracyRow row{.case_name = c.name,
-                  .integrator = std::string(physics::integrator_name(integrator)),
-                  .dt = dt,
-                  .steps = std::llround(c.duration / dt),
-                  .measure = c.measures.at(0).name,
-                  .second_measure = c.measures.size() > 1 ? c.measures[1].name : "",
-                  .orientation_error = kNaN,
-                  .position_error = kNaN,
-                  .angular_momentum_error = kNaN,
-                  .energy_error = kNaN};
-  const Clock::time_point error_run_start = Clock::now();
-  sim::Simulation world = joint_simulation(c, integrator, dt);
-  std::vector<std::vector<physics::BodyState>> states = {c.initial};
-  states.reserve(static_cast<std::size_t>(row.steps) + 1);
-  while (world.step_count() < row.steps && !row.blew_up) {
-    world.step();
-    states.push_back(world.current());
-    row.blew_up = world.blow_up().has_value();
-  }
-  const double error_run_seconds = seconds_since(error_run_start);
-  const std::int64_t taken = world.step_count();
-  if (row.blew_up) {
-    row.error = kNaN;
-  } else {
-    const std::vector<double> errors = c.judge(states, dt);
-    row.error = errors.at(0);
-    if (errors.size() > 1) row.second_error = errors[1];
-  }
-  time_runs(row, timing, error_run_seconds, taken, [&] {
-    sim::Simulation timed = joint_simulation(c, integrator, dt);
-    while (timed.step_count() < taken) timed.step();
-    return timed.current().front().position().x();
-  });
+  AccuracyRow row = measured_row(c.name, "none", integrator, dt, c.duration, c.measures);
+  run_measured(
+      row, timing, c.initial, [&] { return joint_simulation(c, integrator, dt); },
+      [](const sim::Simulation& world) { return world.current(); },
+      [](const std::vector<physics::BodyState>&) { return false; },
+      [&](const std::vector<std::vector<physics::BodyState>>& states) {
+        return c.judge(states, dt);
+      });
   return row;
 }
 
