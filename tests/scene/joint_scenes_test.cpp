@@ -72,5 +72,62 @@ TEST(MotorWheel, RollsAtTheMotorsSpeedTimesTheRadius) {
   EXPECT_LT(worst_height, 1e-3);
 }
 
+// Penalty contact scenes may hold bodies by joints too: two cubes on a hinge along their shared
+// edge, dropped onto a penalty floor at 2000 steps a second, land with the hinge closed and
+// nothing through the floor. They do not come to rest: the cube left on its edge slides to and
+// fro at up to 0.1 m/s for as long as it is run (at dt = 0.0002 s too), where impulse contact lays
+// both flat and still; a fault of penalty contact with joints not yet found, so their rest is not
+// asserted here (docs/physics-and-contact.md, "Joints").
+TEST(PenaltyContact, HoldsJointedBodies) {
+  Result<Scene> loaded = parse_scene(R"(duration = 2.0
+[physics]
+dt = 0.0005
+contact = "penalty"
+[[planes]]
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 1.0, 0.0]
+[[bodies]]
+name = "left"
+shape = "cube"
+size = 0.2
+mass = 1.0
+position = [-0.1, 0.5, 0.0]
+[[bodies.forces]]
+kind = "gravity"
+[[bodies]]
+name = "right"
+shape = "cube"
+size = 0.2
+mass = 1.0
+position = [0.1, 0.6, 0.0]
+orientation = [0.9961946980917455, 0.0, 0.0, 0.08715574274765817]
+[[bodies.forces]]
+kind = "gravity"
+[[joints]]
+kind = "hinge"
+body_a = "right"
+body_b = "left"
+anchor = [0.0, 0.5, 0.0]
+axis = [0.0, 0.0, 1.0]
+)",
+                                     "penalty_hinge.toml");
+  ASSERT_TRUE(loaded) << loaded.error();
+  sim::Simulation simulation = build_simulation(*loaded);
+  const physics::Joint& hinge = simulation.joints().joints[0];
+  double widest = 0.0;
+  while (simulation.time() < 2.0) {
+    simulation.step();
+    ASSERT_FALSE(simulation.blow_up());
+    const auto& now = simulation.current();
+    widest = std::max(widest, (physics::anchor_a_world(hinge, physics::JointBody::of(now[1])) -
+                               physics::anchor_b_world(hinge, physics::JointBody::of(now[0])))
+                                  .norm());
+  }
+  EXPECT_LT(widest, 1e-9);
+  for (const physics::BodyState& body : simulation.current()) {
+    EXPECT_GT(body.position().y(), 0.09);  // a cube's half side less the springs' few mm
+  }
+}
+
 }  // namespace
 }  // namespace tumble::scene
