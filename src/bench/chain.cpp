@@ -37,12 +37,7 @@ ChainRun run_chain_in_tumble(int links, double seconds, double dt, physics::Inte
   const auto widest = [&](const std::vector<physics::BodyState>& now) {
     double out = 0.0;
     for (const physics::Joint& joint : joints) {
-      const physics::JointBody b = joint.b == physics::kWorldBody
-                                       ? physics::JointBody{}
-                                       : physics::JointBody::of(now[joint.b]);
-      out = std::max(out, (physics::anchor_a_world(joint, physics::JointBody::of(now[joint.a])) -
-                           physics::anchor_b_world(joint, b))
-                              .norm());
+      out = std::max(out, physics::joint_opening(joint, now));
     }
     return out;
   };

@@ -58,16 +58,8 @@ JointCase pendulum() {
       const BodyState& b = states[n][0];
       rod = std::max(rod, std::abs((b.position() - pivot).norm() - 1.0));
       if (!(a.position().x() < 0.0 && b.position().x() >= 0.0)) continue;
-      const double x0 = a.position().x(), x1 = b.position().x();
-      const double v0 = a.velocity().x() * dt, v1 = b.velocity().x() * dt;
-      double s = x0 / (x0 - x1);
-      for (int k = 0; k < 20; ++k) {  // Newton on the Hermite cubic
-        const double x = (2 * s * s * s - 3 * s * s + 1) * x0 + (s * s * s - 2 * s * s + s) * v0 +
-                         (-2 * s * s * s + 3 * s * s) * x1 + (s * s * s - s * s) * v1;
-        const double dx = (6 * s * s - 6 * s) * x0 + (3 * s * s - 4 * s + 1) * v0 +
-                          (-6 * s * s + 6 * s) * x1 + (3 * s * s - 2 * s) * v1;
-        s -= x / dx;
-      }
+      const double s = crossing_in_step(a.position().x(), a.velocity().x() * dt, b.position().x(),
+                                        b.velocity().x() * dt);
       crossings.push_back((static_cast<double>(n - 1) + s) * dt);
     }
     if (crossings.size() < 2) return std::vector<double>{1.0, rod};
@@ -177,6 +169,18 @@ JointCase heavy_top() {
 }
 
 }  // namespace
+
+double crossing_in_step(double x0, double d0, double x1, double d1) {
+  double s = x0 / (x0 - x1);
+  for (int k = 0; k < 20; ++k) {
+    const double x = (2 * s * s * s - 3 * s * s + 1) * x0 + (s * s * s - 2 * s * s + s) * d0 +
+                     (-2 * s * s * s + 3 * s * s) * x1 + (s * s * s - s * s) * d1;
+    const double dx = (6 * s * s - 6 * s) * x0 + (3 * s * s - 4 * s + 1) * d0 +
+                      (-6 * s * s + 6 * s) * x1 + (3 * s * s - 2 * s) * d1;
+    s -= x / dx;
+  }
+  return s;
+}
 
 std::vector<double> double_pendulum_angles(std::vector<double> y, double t0, double t1,
                                            double tolerance, double g) {

@@ -35,6 +35,12 @@ const JointCase* find_joint_case(const std::string& name);
 sim::Simulation joint_simulation(const JointCase& c, physics::Integrator integrator,
                                  double dt /* s */);
 
+// Where within a step a coordinate passes 0: the fraction s in [0, 1] of the step at which the
+// cubic through its values x0, x1 and its changes over the whole step d0 = ẋ0 dt, d1 = ẋ1 dt at
+// the step's two ends is 0 (Hermite, by Newton's method from the straight line's s); the
+// pendulum's periods are timed so.
+double crossing_in_step(double x0, double d0, double x1, double d1);
+
 // The double pendulum of two unit point masses on rods of 1 m, in the angles from the downward
 // vertical: y = (θ1, θ2, θ̇1, θ̇2) at t0 (s) integrated to t1 by Boost.Odeint's Runge-Kutta-
 // Fehlberg 7(8) at `tolerance` (the reference of the case "double_pendulum" and of the tests).

@@ -120,6 +120,11 @@ JointBody JointBody::of(const BodyState& state) {
           .angular_velocity = state.angular_velocity()};
 }
 
+double joint_opening(const Joint& joint, std::span<const BodyState> states) {
+  const JointBody b = joint.b == kWorldBody ? JointBody{} : JointBody::of(states[joint.b]);
+  return (anchor_a_world(joint, JointBody::of(states[joint.a])) - anchor_b_world(joint, b)).norm();
+}
+
 Joint place_joint(JointKind kind, std::uint32_t a, std::uint32_t b,
                   std::span<const BodyState> states, const Vec3& anchor_a, const Vec3& anchor_b,
                   const Vec3& axis) {

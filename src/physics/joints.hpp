@@ -129,6 +129,9 @@ JointRow coordinate_row(const Joint& joint, const JointBody& a, const JointBody&
 // The world points of the two anchors (m).
 Vec3 anchor_a_world(const Joint& joint, const JointBody& a);
 Vec3 anchor_b_world(const Joint& joint, const JointBody& b);
+// How far apart the joint's two anchors are at the bodies' `states` (m): 0 for a ball, a hinge
+// or a weld that holds.
+double joint_opening(const Joint& joint, std::span<const BodyState> states);
 
 // The joint's kind as the scene names it ("ball", "hinge", ...).
 const char* joint_kind_name(JointKind kind);

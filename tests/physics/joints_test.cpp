@@ -133,17 +133,8 @@ PendulumRun swing(double theta0, Integrator integrator, double dt, double second
     const BodyState& b = next[0];
     if (a.position().x() < 0.0 && b.position().x() >= 0.0) {
       // The crossing within the step, by the cubic through both ends' x and ẋ.
-      const double x0 = a.position().x(), x1 = b.position().x();
-      const double v0 = a.velocity().x() * dt, v1 = b.velocity().x() * dt;
-      double s = x0 / (x0 - x1);
-      for (int k = 0; k < 20; ++k) {
-        const double h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-        const double h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-        const double x = h00 * x0 + h10 * v0 + h01 * x1 + h11 * v1;
-        const double dx = (6 * s * s - 6 * s) * x0 + (3 * s * s - 4 * s + 1) * v0 +
-                          (-6 * s * s + 6 * s) * x1 + (3 * s * s - 2 * s) * v1;
-        s -= x / dx;
-      }
+      const double s = bench::crossing_in_step(a.position().x(), a.velocity().x() * dt,
+                                               b.position().x(), b.velocity().x() * dt);
       crossings.push_back((n + s) * dt);
     }
     states.swap(next);
@@ -294,12 +285,7 @@ struct Chain {
   // The largest gap between two anchors of a joint (m).
   double widest_gap() const {
     double out = 0.0;
-    for (const Joint& joint : world.joints) {
-      const JointBody b = joint.b == kWorldBody ? JointBody{} : JointBody::of(states[joint.b]);
-      out = std::max(
-          out, (anchor_a_world(joint, JointBody::of(states[joint.a])) - anchor_b_world(joint, b))
-                   .norm());
-    }
+    for (const Joint& joint : world.joints) out = std::max(out, joint_opening(joint, states));
     return out;
   }
   double energy() const {
@@ -541,9 +527,7 @@ TEST(Fixed, WeldsTwoBoxesIntoOneBody) {
   run(Integrator::rk4, models, states, world, dt, 10.0, [&](const std::vector<BodyState>& now) {
     one = step(Integrator::rk4, whole, one, n * dt, dt);
     ++n;
-    worst_offset = std::max(worst_offset, (anchor_a_world(weld, JointBody::of(now[1])) -
-                                           anchor_b_world(weld, JointBody::of(now[0])))
-                                              .norm());
+    worst_offset = std::max(worst_offset, joint_opening(weld, now));
     worst_turn =
         std::max(worst_turn, angle_between(now[1].orientation(), now[0].orientation() * weld.rest));
     for (std::size_t i = 0; i < 2; ++i) {

@@ -119,9 +119,7 @@ axis = [0.0, 0.0, 1.0]
     simulation.step();
     ASSERT_FALSE(simulation.blow_up());
     const auto& now = simulation.current();
-    widest = std::max(widest, (physics::anchor_a_world(hinge, physics::JointBody::of(now[1])) -
-                               physics::anchor_b_world(hinge, physics::JointBody::of(now[0])))
-                                  .norm());
+    widest = std::max(widest, physics::joint_opening(hinge, now));
   }
   EXPECT_LT(widest, 1e-9);
   for (const physics::BodyState& body : simulation.current()) {
