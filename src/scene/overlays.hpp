@@ -49,6 +49,14 @@ struct Placeholder {
   int component = -1;     // 0, 1, 2 for .x .y .z of a vector quantity; -1 for the whole value
   int precision = 2;      // printf's precision: digits after the point (f, e), significant (g)
   char conversion = 'f';  // printf's f, e or g; {frame} is a whole number and takes neither
+  // Python's format mini-language, the subset [[fill]align][sign][0][width]: the sign of a
+  // positive number ('-' none, '+' a plus, ' ' a space), the width each number is padded to
+  // (characters; 0 = none), with `fill`, aligned left '<', right '>', centred '^' or after the
+  // sign '='.
+  char sign = '-';
+  int width = 0;
+  char fill = ' ';
+  char align = '>';
 };
 
 // A text overlay's text as parsed at load: literal pieces and placeholders in turn, so that a

@@ -28,22 +28,51 @@ std::string quantity_list() {
   return out;
 }
 
-// ":.Nf", ":.Ne" or ":.Ng" into `out`; false for anything else.
-bool parse_format(std::string_view spec, Placeholder& out) {
-  if (spec.size() < 3 || spec.size() > 4 || spec[0] != '.') return false;
-  const std::string_view digits = spec.substr(1, spec.size() - 2);
-  int precision = 0;
-  for (const char c : digits) {
-    if (c < '0' || c > '9') return false;
-    precision = 10 * precision + (c - '0');
+constexpr int kMaxWidth = 40;  // characters a number is padded to
+
+// A format spec after the colon, Python's mini-language subset
+// [[fill]align][sign][0][width][.precision][type] with type f, e or g (default f, precision 2),
+// into `out`; `whole` (the frame number) takes neither precision nor a type but d. False for
+// anything else.
+bool parse_format(std::string_view spec, Placeholder& out, bool whole) {
+  const auto is_align = [](char c) { return c == '<' || c == '>' || c == '^' || c == '='; };
+  std::size_t i = 0;
+  if (spec.size() >= 2 && is_align(spec[1]) && spec[0] != '{' && spec[0] != '}') {
+    out.fill = spec[0];
+    out.align = spec[1];
+    i = 2;
+  } else if (!spec.empty() && is_align(spec[0])) {
+    out.align = spec[0];
+    i = 1;
   }
-  const char conversion = spec.back();
-  if (precision > kMaxPrecision || (conversion != 'f' && conversion != 'e' && conversion != 'g')) {
-    return false;
+  if (i < spec.size() && (spec[i] == '+' || spec[i] == '-' || spec[i] == ' ')) out.sign = spec[i++];
+  if (i < spec.size() && spec[i] == '0') {  // zero padding: '0' after the sign, unless given
+    if (i == 0 || (i == 1 && !is_align(spec[0]))) {
+      out.fill = '0';
+      out.align = '=';
+    }
+    ++i;
   }
-  out.precision = precision;
-  out.conversion = conversion;
-  return true;
+  const auto number = [&](int& value) {
+    const std::size_t first = i;
+    value = 0;
+    while (i < spec.size() && spec[i] >= '0' && spec[i] <= '9' && i - first < 3) {
+      value = 10 * value + (spec[i++] - '0');
+    }
+    return i > first;
+  };
+  number(out.width);
+  if (out.width > kMaxWidth) return false;
+  if (i < spec.size() && spec[i] == '.') {
+    ++i;
+    if (whole || !number(out.precision) || out.precision > kMaxPrecision) return false;
+  }
+  if (i < spec.size()) {
+    const char type = spec[i++];
+    if (whole ? type != 'd' : (type != 'f' && type != 'e' && type != 'g')) return false;
+    if (!whole) out.conversion = type;
+  }
+  return i == spec.size();
 }
 
 // NAME.QUANTITY or NAME.QUANTITY.C; an error says which part is wrong. Body names may hold dots
@@ -152,13 +181,14 @@ Result<Placeholder> parse_placeholder(std::string_view inside,
     if (!value) return value;
     out = *value;
   }
-  if (colon != std::string_view::npos && out.source == Placeholder::Source::frame) {
-    return Error{"frame is a whole number: it takes no format"};
-  }
-  if (colon != std::string_view::npos && !parse_format(inside.substr(colon + 1), out)) {
-    return Error{"unknown format \"" + std::string(inside.substr(colon)) +
-                 "\" (expected :.Nf, :.Ne or :.Ng, N from 0 to " + std::to_string(kMaxPrecision) +
-                 ")"};
+  const bool whole = out.source == Placeholder::Source::frame;
+  if (colon != std::string_view::npos && !parse_format(inside.substr(colon + 1), out, whole)) {
+    std::string what = "unknown format \"" + std::string(inside.substr(colon)) + "\" (expected ";
+    what += whole ? std::string("[[fill]align][sign][0][width][d]: frame is a whole number")
+                  : "[[fill]align][sign][0][width][.N][f|e|g], N from 0 to " +
+                        std::to_string(kMaxPrecision);
+    what += ", width up to " + std::to_string(kMaxWidth) + ")";
+    return Error{what};
   }
   return out;
 }

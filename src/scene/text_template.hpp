@@ -28,8 +28,9 @@ struct JointName {
 // {NAME.QUANTITY} with NAME one of `body_names`, or {JOINT.angle}, {JOINT.speed} or
 // {JOINT.force} with JOINT one of `joints` (an angle a hinge's, a speed a hinge's, slider's or
 // distance's), each with an optional component .x, .y or .z of a vector quantity, then an
-// optional printf-like format :.Nf, :.Ne or :.Ng (N from 0 to 17; default .2f). An error quotes
-// the placeholder and says what is wrong with it.
+// optional format in Python's mini-language, the subset [[fill]align][sign][0][width][.N][type]
+// with type f, e or g (N from 0 to 17, width up to 40; default .2f; {frame} takes no precision
+// and only the type d). An error quotes the placeholder and says what is wrong with it.
 Result<TextTemplate> parse_text_template(std::string_view text,
                                          const std::vector<std::string>& body_names,
                                          const std::vector<JointName>& joints = {});

@@ -99,12 +99,15 @@ void Simulation::step() {
   }
 }
 
+double Simulation::alpha_at(double t) const {
+  return step_count_ == 0 ? 0.0 : (t - time_of_step(step_count_ - 1)) / dt_;
+}
+
 std::vector<physics::BodyState> Simulation::states_at(double t) {
   while (time() < t && !blow_up_) step();
   if (step_count_ == 0) return current_;
-  const double previous_time = time_of_step(step_count_ - 1);
-  assert(t >= previous_time);
-  const double alpha = (t - previous_time) / dt_;
+  assert(t >= time_of_step(step_count_ - 1));
+  const double alpha = alpha_at(t);
   std::vector<physics::BodyState> out;
   out.reserve(models_.size());
   for (std::size_t i = 0; i < models_.size(); ++i) {

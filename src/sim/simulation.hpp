@@ -56,6 +56,10 @@ class Simulation {
   // previous step. Check blow_up() after each call: the states are meaningless once it is set.
   std::vector<physics::BodyState> states_at(double t);
 
+  // Where t (s) is between previous() (0) and current() (1), as states_at(t) interpolates; 0
+  // before the first step. Call after states_at(t).
+  double alpha_at(double t) const;
+
   // Set by the step at which the first body blew up (see kMaxPosition).
   const std::optional<BlowUp>& blow_up() const { return blow_up_; }
 

@@ -53,6 +53,26 @@ std::vector<JointValue> joint_values(const physics::JointWorld& joints,
   return out;
 }
 
+std::vector<JointValue> joint_values(const physics::JointWorld& joints,
+                                     const std::vector<physics::BodyState>& previous,
+                                     const std::vector<physics::BodyState>& current, double alpha,
+                                     double t_previous, double t_current) {
+  std::vector<JointValue> out = joint_values(joints, previous, t_previous);
+  if (alpha == 0.0) return out;
+  const std::vector<JointValue> after = joint_values(joints, current, t_current);
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const bool hinge = joints.joints[j].kind == physics::JointKind::hinge;  // angle in (-pi, pi]
+    double change = after[j].coordinate - out[j].coordinate;
+    if (hinge) change = std::remainder(change, 2.0 * M_PI);
+    const double at = out[j].coordinate + alpha * change;
+    out[j].coordinate = hinge && std::abs(at) > M_PI ? std::remainder(at, 2.0 * M_PI) : at;
+    out[j].rate += alpha * (after[j].rate - out[j].rate);
+    out[j].force += alpha * (after[j].force - out[j].force);
+    out[j].anchor += alpha * (after[j].anchor - out[j].anchor);
+  }
+  return out;
+}
+
 bool draws_joints(const scene::Scene& scene) {
   return std::any_of(scene.joints.begin(), scene.joints.end(), [](const scene::JointSpec& j) {
     return j.visible && (j.kind == physics::JointKind::distance ||

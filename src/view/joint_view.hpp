@@ -24,6 +24,15 @@ struct JointValue {
 std::vector<JointValue> joint_values(const physics::JointWorld& joints,
                                      const std::vector<physics::BodyState>& states, double t);
 
+// Each joint's values at a frame's time t (s), `alpha` of the way from the physics step
+// `previous` (at t_previous) to `current` (at t_current): each value at the two steps,
+// interpolated as itself (a hinge's angle the short way round), as overlay_values.hpp's
+// StepPair does the bodies' quantities.
+std::vector<JointValue> joint_values(const physics::JointWorld& joints,
+                                     const std::vector<physics::BodyState>& previous,
+                                     const std::vector<physics::BodyState>& current, double alpha,
+                                     double t_previous, double t_current);
+
 // Whether the scene draws a joint (one is `visible`): then the renderer needs round solids.
 bool draws_joints(const scene::Scene& scene);
 

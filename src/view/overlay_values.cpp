@@ -7,18 +7,46 @@
 #include "scene/text_template.hpp"
 
 namespace tumble::view {
+std::string padded(std::string text, const scene::Placeholder& as) {
+  if (static_cast<int>(text.size()) >= as.width) return text;
+  const std::size_t missing = static_cast<std::size_t>(as.width) - text.size();
+  switch (as.align) {
+    case '<':
+      return text.append(missing, as.fill);
+    case '^':
+      return std::string(missing / 2, as.fill) + text + std::string(missing - missing / 2, as.fill);
+    case '=': {  // after the sign
+      const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-' || text[0] == ' ');
+      return text.insert(sign, missing, as.fill);
+    }
+    default:
+      return std::string(missing, as.fill) + text;
+  }
+}
+
 namespace {
 
 using scene::BodyQuantity;
 
+// printf's "%<sign>.<precision><conversion>", then padded to the width as Python pads.
 std::string format_number(double value, const scene::Placeholder& as) {
-  const char pattern[] = {'%', '.', '*', as.conversion, '\0'};
-  char text[64];  // "%.17e" of any double, or "%.17f" of one up to 10^40, fits
+  char pattern[6] = {'%'};
+  std::size_t at = 1;
+  if (as.sign != '-') pattern[at++] = as.sign;
+  pattern[at++] = '.';
+  pattern[at++] = '*';
+  pattern[at++] = as.conversion;
+  char text[64];  // "%+.17e" of any double, or "%+.17f" of one up to 10^40, fits
   const int length = std::snprintf(text, sizeof text, pattern, as.precision, value);
-  if (length >= 0 && static_cast<std::size_t>(length) < sizeof text) return text;
-  char wide[400];  // "%.17f" of the largest double: 309 digits and 17 decimals
-  std::snprintf(wide, sizeof wide, pattern, as.precision, value);
-  return wide;
+  std::string out;
+  if (length >= 0 && static_cast<std::size_t>(length) < sizeof text) {
+    out = text;
+  } else {
+    char wide[400];  // "%+.17f" of the largest double: 309 digits and 17 decimals
+    std::snprintf(wide, sizeof wide, pattern, as.precision, value);
+    out = wide;
+  }
+  return padded(std::move(out), as);
 }
 
 }  // namespace
@@ -43,18 +71,26 @@ physics::Vec3 body_quantity(BodyQuantity quantity, const physics::BodyState& sta
   return physics::Vec3::Zero();
 }
 
-std::string format_value(const scene::Placeholder& value,
-                         const std::vector<physics::BodyState>& states, double t,
+physics::Vec3 body_quantity(BodyQuantity quantity, const StepPair& steps, std::size_t body) {
+  const physics::Vec3 before = body_quantity(quantity, steps.previous[body]);
+  if (steps.alpha == 0.0) return before;
+  return before + steps.alpha * (body_quantity(quantity, steps.current[body]) - before);
+}
+
+std::string format_value(const scene::Placeholder& value, const StepPair& steps, double t,
                          std::int64_t frame, std::span<const JointValue> joints) {
   physics::Vec3 quantity;
   bool vector = false;
   switch (value.source) {
     case scene::Placeholder::Source::time:
       return format_number(t, value);
-    case scene::Placeholder::Source::frame:
-      return std::to_string(frame);
+    case scene::Placeholder::Source::frame: {
+      std::string whole = std::to_string(frame);
+      if (value.sign != '-' && frame >= 0) whole.insert(0, 1, value.sign);
+      return padded(std::move(whole), value);
+    }
     case scene::Placeholder::Source::body:
-      quantity = body_quantity(value.quantity, states[value.body]);
+      quantity = body_quantity(value.quantity, steps, value.body);
       vector = scene::is_vector(value.quantity);
       break;
     case scene::Placeholder::Source::joint: {
@@ -82,26 +118,32 @@ std::string format_value(const scene::Placeholder& value,
   return out;
 }
 
-std::string format_text(const scene::TextTemplate& text,
-                        const std::vector<physics::BodyState>& states, double t, std::int64_t frame,
-                        std::span<const JointValue> joints) {
+std::string format_text(const scene::TextTemplate& text, const StepPair& steps, double t,
+                        std::int64_t frame, std::span<const JointValue> joints) {
   std::string out = text.pieces[0];
   for (std::size_t i = 0; i < text.values.size(); ++i) {
-    out += format_value(text.values[i], states, t, frame, joints);
+    out += format_value(text.values[i], steps, t, frame, joints);
     out += text.pieces[i + 1];
   }
   return out;
 }
 
 physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::BodySpec& body,
-                           const physics::BodyState& state, double t) {
+                           const StepPair& steps, const physics::BodyState& drawn, double t) {
+  const auto interpolated = [&](auto of) {
+    const physics::Vec3 before = of(steps.previous[overlay.body]);
+    return steps.alpha == 0.0 ? before
+                              : before + steps.alpha * (of(steps.current[overlay.body]) - before);
+  };
   switch (overlay.quantity) {
     case scene::VectorQuantity::velocity:
-      return physics::point_velocity(state, physics::body_point_to_world(state, overlay.point));
+      return interpolated([&](const physics::BodyState& state) {
+        return physics::point_velocity(state, physics::body_point_to_world(state, overlay.point));
+      });
     case scene::VectorQuantity::angular_velocity:
-      return state.angular_velocity();
+      return interpolated([](const physics::BodyState& state) { return state.angular_velocity(); });
     case scene::VectorQuantity::angular_momentum:
-      return state.angular_momentum();
+      return interpolated([](const physics::BodyState& state) { return state.angular_momentum(); });
     case scene::VectorQuantity::constant:
       return overlay.constant;
     case scene::VectorQuantity::joint_force:  // from the joint's values: add_vector draws it
@@ -112,7 +154,7 @@ physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::Bod
   const physics::BodyConstants constants = scene::body_constants(body);
   physics::Vec3 force = physics::Vec3::Zero();
   for (const std::size_t law : overlay.laws) {
-    force += physics::evaluate(body.forces[law], constants, state, t).force;
+    force += physics::evaluate(body.forces[law], constants, drawn, t).force;
   }
   return force;
 }

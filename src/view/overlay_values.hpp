@@ -14,25 +14,40 @@
 
 namespace tumble::view {
 
+// The two physics steps around a frame's time t. A quantity of the physics shown at t is that
+// quantity at each step, interpolated as itself (energy and speeds as numbers, momenta and
+// velocities as vectors: q(previous) + alpha (q(current) - q(previous))), not the quantity of
+// the drawn state (lerped momenta and a slerped orientation conserve nothing): a conserved
+// quantity reads constant to its printed digits. At a step's own time it is that step's value.
+struct StepPair {
+  const std::vector<physics::BodyState>& previous;
+  const std::vector<physics::BodyState>& current;
+  double alpha = 0.0;  // where t is from previous (0) to current (1)
+};
+
 // A vector quantity of the state (world frame; m, m/s, rad/s or kg m²/s); for a number
 // quantity, the number in x and zeros.
 physics::Vec3 body_quantity(scene::BodyQuantity quantity, const physics::BodyState& state);
+// The same of body `body` at the frame's time, interpolated as the quantity (StepPair).
+physics::Vec3 body_quantity(scene::BodyQuantity quantity, const StepPair& steps, std::size_t body);
 
-// One placeholder as printf's "%.<precision><conversion>" writes it; a whole vector as
-// "(x, y, z)". `states` are every body's at time t (s), the frame's number `frame`, `joints`
-// every joint's values there (joint_view.hpp).
-std::string format_value(const scene::Placeholder& value,
-                         const std::vector<physics::BodyState>& states, double t,
+// `text` padded to the placeholder's width with its fill and alignment, as Python pads.
+std::string padded(std::string text, const scene::Placeholder& as);
+
+// One placeholder as printf's "%<sign>.<precision><conversion>" writes it, padded to its width;
+// a whole vector as "(x, y, z)", each number padded. `steps` are every body's around time t (s),
+// the frame's number `frame`, `joints` every joint's values there (joint_view.hpp).
+std::string format_value(const scene::Placeholder& value, const StepPair& steps, double t,
                          std::int64_t frame, std::span<const JointValue> joints = {});
 
 // The whole text with each placeholder formatted.
-std::string format_text(const scene::TextTemplate& text,
-                        const std::vector<physics::BodyState>& states, double t, std::int64_t frame,
-                        std::span<const JointValue> joints = {});
+std::string format_text(const scene::TextTemplate& text, const StepPair& steps, double t,
+                        std::int64_t frame, std::span<const JointValue> joints = {});
 
 // The vector the overlay's arrow draws (world frame, in the quantity's unit: m/s, rad/s,
-// kg m²/s, N, or as written for a constant) for `body` in `state` at time t (s).
+// kg m²/s, N, or as written for a constant) for `body`: a quantity of the state interpolated as
+// itself (StepPair), a force as the force laws give it on the drawn state `drawn` at time t (s).
 physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::BodySpec& body,
-                           const physics::BodyState& state, double t);
+                           const StepPair& steps, const physics::BodyState& drawn, double t);
 
 }  // namespace tumble::view

@@ -24,12 +24,11 @@ double text_opacity(const scene::TextOverlay& text, double t) {
   return std::clamp(std::min(t - text.start, text.end - t) / text.fade, 0.0, 1.0);
 }
 
-void add_text(const scene::TextOverlay& overlay, const std::vector<physics::BodyState>& states,
-              double t, std::int64_t frame, std::span<const JointValue> joints,
-              render::FrameView& view) {
+void add_text(const scene::TextOverlay& overlay, const StepPair& steps, double t,
+              std::int64_t frame, std::span<const JointValue> joints, render::FrameView& view) {
   const double opacity = text_opacity(overlay, t);
   if (opacity <= 0.0) return;
-  view.texts.push_back(render::Text{.text = format_text(overlay.text, states, t, frame, joints),
+  view.texts.push_back(render::Text{.text = format_text(overlay.text, steps, t, frame, joints),
                                     .anchor = overlay.anchor,
                                     .offset = overlay.offset,
                                     .height = overlay.size,
@@ -39,7 +38,7 @@ void add_text(const scene::TextOverlay& overlay, const std::vector<physics::Body
 }
 
 void add_vector(const scene::VectorOverlay& overlay, const scene::Scene& scene,
-                const std::vector<physics::BodyState>& states, double t,
+                const std::vector<physics::BodyState>& states, const StepPair& steps, double t,
                 std::span<const JointValue> joints, render::FrameView& view) {
   const physics::BodyState& state = states[overlay.body];
   physics::Vec3 from, to;
@@ -48,7 +47,7 @@ void add_vector(const scene::VectorOverlay& overlay, const scene::Scene& scene,
     to = from + overlay.scale * joints[overlay.joint].force;
   } else {
     from = physics::body_point_to_world(state, overlay.point);
-    to = from + overlay.scale * vector_value(overlay, scene.bodies[overlay.body], state, t);
+    to = from + overlay.scale * vector_value(overlay, scene.bodies[overlay.body], steps, state, t);
   }
   view.arrows.push_back(render::Arrow{.from = from, .to = to, .color = overlay.color});
   if (!overlay.label.empty()) {
@@ -136,15 +135,15 @@ void OverlayItems::record(const std::vector<physics::BodyState>& states, double 
   }
 }
 
-void OverlayItems::add_to(const std::vector<physics::BodyState>& states, double t,
-                          std::int64_t frame, render::FrameView& view,
+void OverlayItems::add_to(const std::vector<physics::BodyState>& states, const StepPair& steps,
+                          double t, std::int64_t frame, render::FrameView& view,
                           std::span<const JointValue> joints) const {
   for (std::size_t i = 0; i < scene_.overlays.size(); ++i) {
     const scene::OverlaySpec& overlay = scene_.overlays[i];
     if (const auto* text = std::get_if<scene::TextOverlay>(&overlay)) {
-      add_text(*text, states, t, frame, joints, view);
+      add_text(*text, steps, t, frame, joints, view);
     } else if (const auto* vector = std::get_if<scene::VectorOverlay>(&overlay)) {
-      add_vector(*vector, scene_, states, t, joints, view);
+      add_vector(*vector, scene_, states, steps, t, joints, view);
     } else if (const auto* axes = std::get_if<scene::AxesOverlay>(&overlay)) {
       add_axes(*axes, states, view);
     } else if (const auto* trail = std::get_if<scene::TrailOverlay>(&overlay)) {

@@ -13,6 +13,7 @@
 #include "render/frame.hpp"
 #include "scene/scene.hpp"
 #include "view/joint_view.hpp"
+#include "view/overlay_values.hpp"
 
 namespace tumble::view {
 
@@ -42,10 +43,12 @@ class OverlayItems {
   // Takes in the bodies' states at time t (s) for the trails. Times increase from call to call.
   void record(const std::vector<physics::BodyState>& states, double t);
 
-  // Adds the overlays' items for frame `frame` at time t (s), whose states were just record()ed,
-  // and the joints' values there (joint_view.hpp).
-  void add_to(const std::vector<physics::BodyState>& states, double t, std::int64_t frame,
-              render::FrameView& view, std::span<const JointValue> joints = {}) const;
+  // Adds the overlays' items for frame `frame` at time t (s), whose drawn states were just
+  // record()ed: drawn where `states` put the bodies, showing the values of the physics steps
+  // around t (`steps`, overlay_values.hpp) and the joints' values there (joint_view.hpp).
+  void add_to(const std::vector<physics::BodyState>& states, const StepPair& steps, double t,
+              std::int64_t frame, render::FrameView& view,
+              std::span<const JointValue> joints = {}) const;
 
  private:
   struct TrailPoint {

@@ -247,14 +247,21 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};
   render::FrameView view = frame_view(scene_, framing_, *states, t);
+  // The values shown: of the two steps around t, each interpolated as itself.
+  const StepPair steps{simulation_.previous(), simulation_.current(), simulation_.alpha_at(t)};
   std::vector<JointValue> joints;
   if (!scene_.joints.empty()) {
     add_joints(scene_, simulation_.joints(), *states, view);
-    if (overlays_) joints = joint_values(simulation_.joints(), *states, t);
+    if (overlays_) {
+      const std::int64_t n = simulation_.step_count();
+      joints = joint_values(simulation_.joints(), steps.previous, steps.current, steps.alpha,
+                            simulation_.time_of_step(std::max<std::int64_t>(n - 1, 0)),
+                            simulation_.time_of_step(n));
+    }
   }
   if (overlays_) {
     overlays_->record(*states, t);
-    overlays_->add_to(*states, t, frame, view, joints);
+    overlays_->add_to(*states, steps, t, frame, view, joints);
   }
   return view;
 }

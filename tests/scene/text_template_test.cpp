@@ -60,6 +60,28 @@ TEST(TextTemplate, DefaultsToTwoDecimals) {
   EXPECT_EQ(t.values[0].conversion, 'f');
 }
 
+// Python's mini-language subset [[fill]align][sign][0][width][.N][type].
+TEST(TextTemplate, ReadsSignWidthFillAndAlignment) {
+  const TextTemplate t = parsed("{time:+8.3f} {time:*^10e} {time: 06.1g} {time:<7} {frame:5d}");
+  ASSERT_EQ(t.values.size(), 5u);
+  EXPECT_EQ(t.values[0].sign, '+');
+  EXPECT_EQ(t.values[0].width, 8);
+  EXPECT_EQ(t.values[0].precision, 3);
+  EXPECT_EQ(t.values[0].align, '>');
+  EXPECT_EQ(t.values[1].fill, '*');
+  EXPECT_EQ(t.values[1].align, '^');
+  EXPECT_EQ(t.values[1].conversion, 'e');
+  EXPECT_EQ(t.values[2].sign, ' ');
+  EXPECT_EQ(t.values[2].fill, '0');
+  EXPECT_EQ(t.values[2].align, '=');
+  EXPECT_EQ(t.values[2].width, 6);
+  EXPECT_EQ(t.values[3].align, '<');
+  EXPECT_EQ(t.values[3].width, 7);
+  EXPECT_EQ(t.values[3].precision, 2);  // the defaults: .2f
+  EXPECT_EQ(t.values[3].conversion, 'f');
+  EXPECT_EQ(t.values[4].width, 5);
+}
+
 TEST(TextTemplate, DoubledBracesAreLiteralBraces) {
   const TextTemplate t = parsed("{{x}} = {time}}}");
   ASSERT_EQ(t.values.size(), 1u);
@@ -78,7 +100,13 @@ TEST(TextTemplate, EachMistakeIsAnErrorQuotingThePlaceholder) {
   EXPECT_NE(error_of("{time:5d}").find("unknown format \":5d\""), std::string::npos);
   EXPECT_NE(error_of("{time:.18f}").find("unknown format"), std::string::npos);
   EXPECT_NE(error_of("t = {time").find("without its"), std::string::npos);
-  EXPECT_EQ(error_of("{frame:.2f}"), "{frame:.2f}: frame is a whole number: it takes no format");
+  EXPECT_NE(error_of("{frame:.2f}").find("{frame:.2f}: unknown format \":.2f\" (expected "
+                                         "[[fill]align][sign][0][width][d]: frame is a whole"),
+            std::string::npos);
+  EXPECT_NE(error_of("{time:+41.2f}").find("width up to 40"), std::string::npos);
+  EXPECT_NE(error_of("{time:+8.3q}").find("unknown format"), std::string::npos);
+  EXPECT_NE(error_of("{time:8.3f!}").find("unknown format"), std::string::npos);
+  EXPECT_NE(error_of("{time:.f}").find("unknown format"), std::string::npos);
   EXPECT_NE(error_of("a } b").find("lone"), std::string::npos);
 }
 
