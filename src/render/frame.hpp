@@ -92,15 +92,24 @@ struct Text {
   Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);  // of the glyphs
   std::optional<Rgba> background = std::nullopt;  // a box behind the text, padded around it
   double opacity = 1.0;                           // of glyphs and box together, to fade (0-1)
+  // A label's (Label): its box pushed inside the frame, then down clear of the boxes of the
+  // earlier texts that keep apart, so that labels never cover each other (place_apart).
+  bool keep_apart = false;
 };
 
 // An arrow in the 3D scene (a body's vector, one of its axes): a shaft and a head of fixed widths
 // on the picture (overlay_geometry.hpp), so that it reads alike near and far.
+// One shorter than kMinArrowPixels on the picture (a zero vector, or one pointing at the camera)
+// draws neither itself nor its label.
 struct Arrow {
   Vec3 from = Vec3::Zero();  // world frame (m)
   Vec3 to = Vec3::UnitX();   // the tip, world frame (m)
   Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+  std::string label = {};     // UTF-8 text at the tip, as a Label there; empty for none
+  double label_height = 28.0;  // its em size (px at 720 rows)
 };
+// px at 720 rows: below this an arrow's direction cannot be read.
+inline constexpr double kMinArrowPixels = 3.0;
 
 // A line through points of the 3D scene (a trail), each point with an opacity of its own so that
 // the line can fade along its length. Fixed width on the picture.
@@ -110,14 +119,18 @@ struct Polyline {
   Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
 };
 
-// Text at a point of the 3D scene (an arrow's name at its tip): its box's left edge just right of
-// the point on the picture, centred on it vertically. Not drawn when the point is behind the
-// camera.
+// Text at a point of the 3D scene (an arrow's name at its tip, a caption that follows a body):
+// its box's left edge just right of the point on the picture (and `offset` from there), centred
+// on it vertically. Kept inside the frame, and moved down clear of the labels drawn before it
+// (Text::keep_apart). Not drawn when the point is behind the camera.
 struct Label {
   std::string text;              // UTF-8
   Vec3 position = Vec3::Zero();  // world frame (m)
   double height = 28.0;          // em size (px at 720 rows)
   Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();  // x right, y down (px at 720 rows)
+  std::optional<Rgba> background = std::nullopt;     // a box behind the text
+  double opacity = 1.0;                              // of glyphs and box together (0-1)
 };
 
 // Fixed for a whole render: what the scene asks for (common/render_settings.hpp, with the back

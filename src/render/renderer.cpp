@@ -170,6 +170,9 @@ struct Renderer::Resources {
   void read_pixels(io::Image& out, const std::vector<PixelBox>& text_boxes);
   // The labels placed on the picture where their points land, then the texts.
   std::vector<Text> texts_with_labels(const FrameView& view, const FrameSetup& frame) const;
+  // Whether the arrow is at least kMinArrowPixels long on the picture (then it and its label
+  // are drawn).
+  bool shows(const Arrow& arrow, const FrameSetup& frame) const;
 };
 
 Result<void> Renderer::Resources::create(const std::string& shader_directory) {
@@ -597,25 +600,48 @@ void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox
   if (settings.transparent) copy_alpha(rgba, settings.width, settings.height, out.alpha);
 }
 
+bool Renderer::Resources::shows(const Arrow& arrow, const FrameSetup& frame) const {
+  const auto from =
+      project_to_pixel(frame.view_projection, arrow.from, settings.width, settings.height);
+  const auto to = project_to_pixel(frame.view_projection, arrow.to, settings.width, settings.height);
+  if (!from || !to) return (arrow.to - arrow.from).norm() > 0.0;  // partly behind: clipped
+  return (*to - *from).norm() >= scale_to_frame(kMinArrowPixels, settings.height);
+}
+
 std::vector<Text> Renderer::Resources::texts_with_labels(const FrameView& view,
                                                          const FrameSetup& frame) const {
-  if (view.labels.empty()) return view.texts;
+  const bool arrow_labels = std::any_of(view.arrows.begin(), view.arrows.end(),
+                                        [](const Arrow& a) { return !a.label.empty(); });
+  if (view.labels.empty() && !arrow_labels) return view.texts;
   std::vector<Text> out;
   // A gap between the point and the label's box, so that the label clears an arrow's tip.
   constexpr double kLabelGap = 6.0;  // px at 720 rows
   const double reference = static_cast<double>(kTextReferenceHeight) / settings.height;
-  for (const Label& label : view.labels) {
+  const auto add = [&](const Label& label) {
     const auto pixel =
         project_to_pixel(frame.view_projection, label.position, settings.width, settings.height);
-    if (!pixel) continue;
+    if (!pixel) return;
     // Anchored left and middle: x from the left edge, y from the frame's middle row.
-    out.push_back(Text{.text = label.text,
-                       .anchor = Anchor::kLeft,
-                       .offset = Eigen::Vector2d(pixel->x() * reference + kLabelGap,
-                                                 (pixel->y() - 0.5 * settings.height) * reference),
-                       .height = label.height,
-                       .color = label.color});
+    out.push_back(Text{
+        .text = label.text,
+        .anchor = Anchor::kLeft,
+        .offset = Eigen::Vector2d(pixel->x() * reference + kLabelGap,
+                                  (pixel->y() - 0.5 * settings.height) * reference) +
+                  label.offset,
+        .height = label.height,
+        .color = label.color,
+        .background = label.background,
+        .opacity = label.opacity,
+        .keep_apart = true});
+  };
+  for (const Arrow& arrow : view.arrows) {
+    if (arrow.label.empty() || !shows(arrow, frame)) continue;
+    add(Label{.text = arrow.label,
+              .position = arrow.to,
+              .height = arrow.label_height,
+              .color = arrow.color});
   }
+  for (const Label& label : view.labels) add(label);
   out.insert(out.end(), view.texts.begin(), view.texts.end());
   return out;
 }
@@ -660,10 +686,16 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   // frame without overlays or text never reaches their layers.
   if (!view.lines.empty() || !view.arrows.empty()) {
     assert(r.overlay && "FrameView::lines and arrows need RenderSettings::overlays");
-    if (r.overlay) r.overlay->draw(view.lines, view.arrows, frame.view_projection);
+    std::vector<Arrow> arrows;
+    for (const Arrow& arrow : view.arrows) {
+      if (r.shows(arrow, frame)) arrows.push_back(arrow);
+    }
+    if (r.overlay) r.overlay->draw(view.lines, arrows, frame.view_projection);
   }
-  const bool text = (!view.texts.empty() || !view.labels.empty()) && r.text;
-  assert((text || (view.texts.empty() && view.labels.empty())) &&
+  const bool labelled = std::any_of(view.arrows.begin(), view.arrows.end(),
+                                    [](const Arrow& a) { return !a.label.empty(); });
+  const bool text = (!view.texts.empty() || !view.labels.empty() || labelled) && r.text;
+  assert((text || (view.texts.empty() && view.labels.empty() && !labelled)) &&
          "FrameView::texts and labels need RenderSettings::font");
   std::vector<PixelBox> text_boxes;
   if (text) text_boxes = r.text->lay_out(r.texts_with_labels(view, frame));

@@ -92,10 +92,22 @@ void TextLayer::add(const PixelBox& box, int texel_x, int texel_y, const Eigen::
 std::vector<PixelBox> TextLayer::lay_out(const std::vector<Text>& texts) {
   pieces_.clear();
   std::vector<PixelBox> drawn_on;
+  std::vector<PixelBox> labels;  // the boxes of the texts that keep apart, so far
   for (const Text& text : texts) {
-    const Result<TextLayout> layout = render::lay_out(*font_, text, width_, height_);
+    Result<TextLayout> layout = render::lay_out(*font_, text, width_, height_);
     assert(layout.ok() && "text must be checked with decode_utf8 before it is drawn");
     if (!layout) continue;
+    if (text.keep_apart) {
+      // A label's gap: a tenth of its em size, at least a pixel.
+      const int gap = std::max(1, layout->pixel_height / 10);
+      const PixelBox placed = place_apart(layout->box, labels, width_, height_, gap);
+      for (PlacedGlyph& glyph : layout->glyphs) {
+        glyph.x += placed.x - layout->box.x;
+        glyph.y += placed.y - layout->box.y;
+      }
+      layout->box = placed;
+      labels.push_back(placed);
+    }
     std::vector<PixelBox> kept;
     const Eigen::Vector4f background =
         premultiply(text.background.value_or(Rgba::Zero()), text.opacity);

@@ -103,4 +103,26 @@ Result<TextLayout> lay_out(Font& font, const Text& text, int frame_width, int fr
   return out;
 }
 
+PixelBox place_apart(PixelBox box, const std::vector<PixelBox>& taken, int frame_width,
+                     int frame_height, int gap) {
+  box.x = std::clamp(box.x, 0, std::max(frame_width - box.width, 0));
+  box.y = std::clamp(box.y, 0, std::max(frame_height - box.height, 0));
+  // The first taken box the box at row y meets (with the gap), or null.
+  const auto meets = [&](int y) -> const PixelBox* {
+    for (const PixelBox& other : taken) {
+      if (box.x < other.x + other.width + gap && other.x < box.x + box.width + gap &&
+          y < other.y + other.height + gap && other.y < y + box.height + gap) {
+        return &other;
+      }
+    }
+    return nullptr;
+  };
+  int down = box.y;
+  while (const PixelBox* other = meets(down)) down = other->y + other->height + gap;
+  if (down + box.height <= frame_height) return {box.x, down, box.width, box.height};
+  int up = box.y;
+  while (const PixelBox* other = meets(up)) up = other->y - gap - box.height;
+  return {box.x, up >= 0 ? up : down, box.width, box.height};
+}
+
 }  // namespace tumble::render

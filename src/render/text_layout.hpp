@@ -44,6 +44,12 @@ int text_pixel_height(double height_at_reference, int frame_height);
 // naming the byte (decode_utf8).
 Result<TextLayout> lay_out(Font& font, const Text& text, int frame_width, int frame_height);
 
+// Where a label's box goes: `box` moved inside the frame (frame_width × frame_height px), then
+// the nearest place straight down, or else straight up, where it is clear of every box of
+// `taken` by `gap` px; if neither fits in the frame, the place below. The same size.
+PixelBox place_apart(PixelBox box, const std::vector<PixelBox>& taken, int frame_width,
+                     int frame_height, int gap);
+
 // The anchor a scene names (common/anchor.hpp).
 using common::anchor_from_name;
 

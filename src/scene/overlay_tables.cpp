@@ -22,10 +22,14 @@ constexpr double kMaxTextSize = 720.0;  // px at 720 rows
 constexpr double kDefaultMargin = 24.0;  // px at 720 rows
 
 // A default colour per quantity, so that two arrows on one body tell apart unasked.
-const Rgba kVelocityColor(0.17, 0.63, 0.17, 1.0);
-const Rgba kAngularVelocityColor(0.84, 0.15, 0.16, 1.0);
-const Rgba kAngularMomentumColor(0.13, 0.38, 1.0, 1.0);
-const Rgba kForceColor(1.0, 0.62, 0.11, 1.0);
+// Each quantity's default colour, none near the red, green and blue of a body's axes (an
+// `axes` overlay) nor near another's: cyan, magenta, yellow, orange.
+const Rgba kVelocityColor(0.0, 0.72, 0.80, 1.0);
+const Rgba kAngularVelocityColor(0.80, 0.20, 0.80, 1.0);
+const Rgba kAngularMomentumColor(0.95, 0.85, 0.15, 1.0);
+const Rgba kForceColor(1.0, 0.50, 0.05, 1.0);
+const Rgba kContactForceColor(0.55, 0.30, 0.10, 1.0);  // brown
+const Rgba kTorqueColor(1.0, 0.45, 0.70, 1.0);         // pink
 const Rgba kConstantColor(0.35, 0.35, 0.38, 1.0);
 
 // The index of the body `key` names; an error suggests a near name.
@@ -75,12 +79,30 @@ std::vector<JointName> joint_names(const Scene& scene) {
   return out;
 }
 
+// A `point` given on a hull is in the frame of its points (m), as they are; left out, the centre
+// of mass.
+physics::Vec3 on_body(TableReader& in, const BodySpec& body, const physics::Vec3& point) {
+  return body.hull && in.has("point") ? body.hull->body_point(point) : point;
+}
+
 TextOverlay read_text(TableReader& in, const Scene& scene) {
   TextOverlay out;
   const Result<TextTemplate> text =
       parse_text_template(in.required_string("text"), body_names(scene), joint_names(scene));
   if (!text) in.fail("text", text.error());
   out.text = *text;
+  if (in.has("body")) {
+    if (in.has("anchor")) {
+      in.fail("anchor", "a text that follows a body (`body`) is drawn at its point: it takes no "
+                        "anchor (`offset` moves it from the point)");
+    }
+    out.body = read_body(in, scene);
+    out.point =
+        vector_within(in, "point", in.optional_vector("point", out.point), sim::kMaxPosition, "m");
+    out.point = on_body(in, scene.bodies[*out.body], out.point);
+  } else if (in.has("point")) {
+    in.fail("point", "only a text that follows a body (`body = \"NAME\"`) takes a point");
+  }
   const std::string anchor = in.optional_string("anchor", "top-left");
   const std::optional<common::Anchor> known = common::anchor_from_name(anchor);
   if (!known) {
@@ -89,7 +111,9 @@ TextOverlay read_text(TableReader& in, const Scene& scene) {
                           "bottom-left, bottom or bottom-right)");
   }
   out.anchor = *known;
-  out.offset = in.has("offset") ? read_offset(in) : default_offset(out.anchor);
+  out.offset = in.has("offset")  ? read_offset(in)
+               : out.body ? Eigen::Vector2d::Zero()
+                          : default_offset(out.anchor);
   out.size = in.optional_number("size", out.size);
   if (!(out.size > 0.0 && out.size <= kMaxTextSize)) {
     in.fail("size", "must be more than 0 and at most " + format_number(kMaxTextSize) +
@@ -138,12 +162,6 @@ std::vector<std::size_t> read_laws(TableReader& in, const BodySpec& body) {
   return laws;
 }
 
-// A `point` given on a hull is in the frame of its points (m), as they are; left out, the centre
-// of mass.
-physics::Vec3 on_body(TableReader& in, const BodySpec& body, const physics::Vec3& point) {
-  return body.hull && in.has("point") ? body.hull->body_point(point) : point;
-}
-
 // `joint = "NAME"` of a joint_force vector: drawn at the joint's anchor on its body_a.
 void read_joint_force(TableReader& in, const Scene& scene, VectorOverlay& out) {
   for (const char* key : {"body", "point"}) {
@@ -188,7 +206,9 @@ VectorOverlay read_vector(TableReader& in, const Scene& scene) {
       {"velocity", {VectorQuantity::velocity, kVelocityColor}},
       {"angular_velocity", {VectorQuantity::angular_velocity, kAngularVelocityColor}},
       {"angular_momentum", {VectorQuantity::angular_momentum, kAngularMomentumColor}},
-      {"force", {VectorQuantity::force, kForceColor}}};
+      {"force", {VectorQuantity::force, kForceColor}},
+      {"contact_force", {VectorQuantity::contact_force, kContactForceColor}},
+      {"torque", {VectorQuantity::torque, kTorqueColor}}};
   Rgba color = kConstantColor;
   if (quantity.is_array()) {
     out.quantity = VectorQuantity::constant;
@@ -198,17 +218,20 @@ VectorOverlay read_vector(TableReader& in, const Scene& scene) {
                                      [&](const auto& entry) { return entry.first == name; });
     if (!quantity.is_string() || known == std::end(kNames)) {
       in.fail("quantity",
-              "expected velocity, angular_velocity, angular_momentum, force, joint_force or a "
-              "constant vector [x, y, z], found " +
+              "expected velocity, angular_velocity, angular_momentum, force, contact_force, "
+              "torque, joint_force or a constant vector [x, y, z], found " +
                   (quantity.is_string() ? in_quotes(name) : std::string(type_name(quantity))));
     }
     out.quantity = known->second.first;
     color = known->second.second;
   }
-  if (out.quantity == VectorQuantity::force) {
+  if (out.quantity == VectorQuantity::force || out.quantity == VectorQuantity::torque) {
     out.laws = read_laws(in, scene.bodies[out.body]);
   } else if (in.has("law")) {
-    in.fail("law", "only a vector of quantity = \"force\" takes a law");
+    in.fail("law", "only a vector of quantity = \"force\" or \"torque\" takes a law");
+  }
+  if (out.quantity == VectorQuantity::contact_force && in.has("point")) {
+    in.fail("point", "a contact force is drawn at its centre of pressure: it takes no point");
   }
   out.point =
       vector_within(in, "point", in.optional_vector("point", out.point), sim::kMaxPosition, "m");

@@ -77,6 +77,11 @@ struct TextOverlay {
   double start = 0.0;                                    // s
   double end = std::numeric_limits<double>::infinity();  // s
   double fade = 0.0;  // s of fading in after start and out before end
+  // A text that follows a body (`body = "NAME"`): drawn at `point` of it (body frame, m) as a
+  // label is (render::Label: beside the point, `offset` from there, kept inside the frame and
+  // clear of other labels); its `anchor` is then not used.
+  std::optional<std::size_t> body;
+  physics::Vec3 point = physics::Vec3::Zero();
 };
 
 // What a vector overlay's arrow shows.
@@ -86,7 +91,9 @@ enum class VectorQuantity {
   angular_momentum,  // about the centre (kg m²/s)
   force,             // the sum of some of the body's force laws (N)
   constant,          // a fixed world vector
-  joint_force        // the force a joint applies to its body_a (N), at its anchor
+  joint_force,       // the force a joint applies to its body_a (N), at its anchor
+  contact_force,     // the total contact force on the body (N), at its centre of pressure
+  torque             // the torque of some of the body's force laws about its centre (N m)
 };
 
 // An arrow from a body's centre (or a body point) along one of its vectors.

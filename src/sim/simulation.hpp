@@ -74,6 +74,9 @@ class Simulation {
   const std::vector<physics::BodyState>& previous() const { return previous_; }
   // The joints and what they keep (their last impulses, for joint_wrenches).
   const physics::JointWorld& joints() const { return joints_; }
+  // The contacts of the last step with impulse contact (empty otherwise): each body's manifolds
+  // with the planes and each touching pair's, with their points' impulses.
+  const physics::ContactMemory& contact_memory() const { return contacts_.memory; }
 
  private:
   std::vector<physics::BodyModel> models_;

@@ -1,6 +1,7 @@
 #include "view/overlay_values.hpp"
 
 #include <cstdio>
+#include <variant>
 
 #include "physics/forces.hpp"
 #include "scene/scene_builder.hpp"
@@ -146,17 +147,99 @@ physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::Bod
       return interpolated([](const physics::BodyState& state) { return state.angular_momentum(); });
     case scene::VectorQuantity::constant:
       return overlay.constant;
-    case scene::VectorQuantity::joint_force:  // from the joint's values: add_vector draws it
+    case scene::VectorQuantity::joint_force:    // from the joint's values: add_vector draws it
+    case scene::VectorQuantity::contact_force:  // from contact_forces: add_vector draws it
       return physics::Vec3::Zero();
     case scene::VectorQuantity::force:
+    case scene::VectorQuantity::torque:
       break;
   }
   const physics::BodyConstants constants = scene::body_constants(body);
-  physics::Vec3 force = physics::Vec3::Zero();
+  physics::Wrench sum;
   for (const std::size_t law : overlay.laws) {
-    force += physics::evaluate(body.forces[law], constants, drawn, t).force;
+    const physics::Wrench wrench = physics::evaluate(body.forces[law], constants, drawn, t);
+    sum.force += wrench.force;
+    sum.torque += wrench.torque;
   }
-  return force;
+  return overlay.quantity == scene::VectorQuantity::torque ? sum.torque : sum.force;
+}
+
+namespace {
+
+// A body's contact points at the last step and their normal impulses (world frame).
+void add_contact_points(const physics::ContactMemory& memory,
+                        std::span<const physics::BodyState> states, std::size_t body,
+                        physics::Vec3& weighted, double& weight, physics::Vec3& plain,
+                        int& count) {
+  const auto add = [&](const physics::Vec3& point, double impulse) {
+    weighted += impulse * point;
+    weight += impulse;
+    plain += point;
+    ++count;
+  };
+  if (body < memory.planes.size()) {
+    for (const physics::Manifold& manifold : memory.planes[body]) {
+      for (int k = 0; k < manifold.count; ++k) {
+        const physics::ContactPoint& p = manifold.points[static_cast<std::size_t>(k)];
+        add(physics::body_point_to_world(states[body], p.body_point), p.impulses.normal);
+      }
+    }
+  }
+  for (const physics::PairContact& pair : memory.pairs) {
+    const bool is_a = pair.bodies.first == body, is_b = pair.bodies.second == body;
+    if (!is_a && !is_b) continue;
+    for (int k = 0; k < pair.manifold.count; ++k) {
+      const physics::PairPoint& p = pair.manifold.points[static_cast<std::size_t>(k)];
+      add(physics::body_point_to_world(states[body], is_a ? p.point_a : p.point_b),
+          p.impulses.normal);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<BodyContact> contact_forces(const sim::Simulation& simulation) {
+  const std::vector<physics::BodyState>& before = simulation.previous();
+  const std::vector<physics::BodyState>& after = simulation.current();
+  const std::vector<physics::BodyModel>& models = simulation.models();
+  std::vector<BodyContact> out(after.size());
+  const std::int64_t n = simulation.step_count();
+  if (n == 0) {
+    for (std::size_t i = 0; i < out.size(); ++i) out[i].point = after[i].position();
+    return out;
+  }
+  const double dt = simulation.dt();
+  const double t0 = simulation.time_of_step(n - 1), t1 = simulation.time_of_step(n);  // s
+  // The joints' forces over the step, as the trapezoid too.
+  std::vector<physics::Vec3> joint_impulse(after.size(), physics::Vec3::Zero());
+  const physics::JointWorld& joints = simulation.joints();
+  if (!joints.joints.empty()) {
+    const std::vector<physics::Wrench> at_start = physics::joint_wrenches(joints, before, t0);
+    const std::vector<physics::Wrench> at_end = physics::joint_wrenches(joints, after, t1);
+    for (std::size_t j = 0; j < joints.joints.size(); ++j) {
+      const physics::Vec3 impulse = 0.5 * dt * (at_start[j].force + at_end[j].force);
+      joint_impulse[joints.joints[j].a] += impulse;
+      if (joints.joints[j].b != physics::kWorldBody) joint_impulse[joints.joints[j].b] -= impulse;
+    }
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    physics::Vec3 impulse = after[i].momentum() - before[i].momentum() - joint_impulse[i];
+    for (const physics::ForceLaw& law : models[i].forces) {
+      if (std::holds_alternative<physics::PenaltyContact>(law)) continue;  // the contact itself
+      impulse -= 0.5 * dt *
+                 (physics::evaluate(law, models[i].constants, before[i], t0).force +
+                  physics::evaluate(law, models[i].constants, after[i], t1).force);
+    }
+    out[i].force = models[i].is_static ? physics::Vec3::Zero() : physics::Vec3(impulse / dt);
+    physics::Vec3 weighted = physics::Vec3::Zero(), plain = physics::Vec3::Zero();
+    double weight = 0.0;
+    int count = 0;
+    add_contact_points(simulation.contact_memory(), after, i, weighted, weight, plain, count);
+    out[i].point = weight > 0.0  ? physics::Vec3(weighted / weight)
+                   : count > 0   ? physics::Vec3(plain / count)
+                                 : after[i].position();
+  }
+  return out;
 }
 
 }  // namespace tumble::view

@@ -10,6 +10,7 @@
 #include "physics/rigid_body.hpp"
 #include "scene/overlays.hpp"
 #include "scene/scene.hpp"
+#include "sim/simulation.hpp"
 #include "view/joint_view.hpp"
 
 namespace tumble::view {
@@ -45,9 +46,25 @@ std::string format_text(const scene::TextTemplate& text, const StepPair& steps, 
                         std::int64_t frame, std::span<const JointValue> joints = {});
 
 // The vector the overlay's arrow draws (world frame, in the quantity's unit: m/s, rad/s,
-// kg m²/s, N, or as written for a constant) for `body`: a quantity of the state interpolated as
-// itself (StepPair), a force as the force laws give it on the drawn state `drawn` at time t (s).
+// kg m²/s, N, N m, or as written for a constant) for `body`: a quantity of the state
+// interpolated as itself (StepPair), a force or torque as the force laws give it on the drawn
+// state `drawn` at time t (s). A contact force and a joint's come from contact_forces and the
+// joints' values: zero here.
 physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::BodySpec& body,
                            const StepPair& steps, const physics::BodyState& drawn, double t);
+
+// The contacts on one body over a physics step.
+struct BodyContact {
+  physics::Vec3 force = physics::Vec3::Zero();  // world frame (N)
+  physics::Vec3 point = physics::Vec3::Zero();  // its centre of pressure, world frame (m)
+};
+
+// Each body's contact force over the simulation's last step, from previous() to current(): the
+// change of its momentum less the impulse of its force laws (the trapezoid rule over the step:
+// exact for gravity and constant forces) and of its joints, over dt. With penalty contact its
+// contact law is the contact. The centre of pressure is the mean of the body's contact points
+// at the last step weighted by their normal impulses (their plain mean when all are zero; the
+// body's centre when it touches nothing, or with penalty contact).
+std::vector<BodyContact> contact_forces(const sim::Simulation& simulation);
 
 }  // namespace tumble::view

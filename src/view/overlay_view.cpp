@@ -24,10 +24,22 @@ double text_opacity(const scene::TextOverlay& text, double t) {
   return std::clamp(std::min(t - text.start, text.end - t) / text.fade, 0.0, 1.0);
 }
 
-void add_text(const scene::TextOverlay& overlay, const StepPair& steps, double t,
-              std::int64_t frame, std::span<const JointValue> joints, render::FrameView& view) {
+void add_text(const scene::TextOverlay& overlay, const std::vector<physics::BodyState>& states,
+              const StepPair& steps, double t, std::int64_t frame,
+              std::span<const JointValue> joints, render::FrameView& view) {
   const double opacity = text_opacity(overlay, t);
   if (opacity <= 0.0) return;
+  if (overlay.body) {  // at its point on the drawn body, as a label
+    view.labels.push_back(render::Label{
+        .text = format_text(overlay.text, steps, t, frame, joints),
+        .position = physics::body_point_to_world(states[*overlay.body], overlay.point),
+        .height = overlay.size,
+        .color = overlay.color,
+        .offset = overlay.offset,
+        .background = overlay.background,
+        .opacity = opacity});
+    return;
+  }
   view.texts.push_back(render::Text{.text = format_text(overlay.text, steps, t, frame, joints),
                                     .anchor = overlay.anchor,
                                     .offset = overlay.offset,
@@ -39,21 +51,26 @@ void add_text(const scene::TextOverlay& overlay, const StepPair& steps, double t
 
 void add_vector(const scene::VectorOverlay& overlay, const scene::Scene& scene,
                 const std::vector<physics::BodyState>& states, const StepPair& steps, double t,
-                std::span<const JointValue> joints, render::FrameView& view) {
+                std::span<const JointValue> joints, std::span<const BodyContact> contacts,
+                render::FrameView& view) {
   const physics::BodyState& state = states[overlay.body];
   physics::Vec3 from, to;
   if (overlay.quantity == scene::VectorQuantity::joint_force) {
     from = joints[overlay.joint].anchor;
     to = from + overlay.scale * joints[overlay.joint].force;
+  } else if (overlay.quantity == scene::VectorQuantity::contact_force) {
+    from = contacts[overlay.body].point;
+    to = from + overlay.scale * contacts[overlay.body].force;
   } else {
     from = physics::body_point_to_world(state, overlay.point);
     to = from + overlay.scale * vector_value(overlay, scene.bodies[overlay.body], steps, state, t);
   }
-  view.arrows.push_back(render::Arrow{.from = from, .to = to, .color = overlay.color});
-  if (!overlay.label.empty()) {
-    view.labels.push_back(render::Label{
-        .text = overlay.label, .position = to, .height = kLabelSize, .color = overlay.color});
-  }
+  // A label at the tip; the renderer draws neither when the arrow is too short to read.
+  view.arrows.push_back(render::Arrow{.from = from,
+                                      .to = to,
+                                      .color = overlay.color,
+                                      .label = overlay.label,
+                                      .label_height = kLabelSize});
 }
 
 void add_axes(const scene::AxesOverlay& overlay, const std::vector<physics::BodyState>& states,
@@ -135,15 +152,23 @@ void OverlayItems::record(const std::vector<physics::BodyState>& states, double 
   }
 }
 
+bool OverlayItems::needs_contacts() const {
+  return std::any_of(scene_.overlays.begin(), scene_.overlays.end(), [](const auto& overlay) {
+    const auto* vector = std::get_if<scene::VectorOverlay>(&overlay);
+    return vector && vector->quantity == scene::VectorQuantity::contact_force;
+  });
+}
+
 void OverlayItems::add_to(const std::vector<physics::BodyState>& states, const StepPair& steps,
                           double t, std::int64_t frame, render::FrameView& view,
-                          std::span<const JointValue> joints) const {
+                          std::span<const JointValue> joints,
+                          std::span<const BodyContact> contacts) const {
   for (std::size_t i = 0; i < scene_.overlays.size(); ++i) {
     const scene::OverlaySpec& overlay = scene_.overlays[i];
     if (const auto* text = std::get_if<scene::TextOverlay>(&overlay)) {
-      add_text(*text, steps, t, frame, joints, view);
+      add_text(*text, states, steps, t, frame, joints, view);
     } else if (const auto* vector = std::get_if<scene::VectorOverlay>(&overlay)) {
-      add_vector(*vector, scene_, states, steps, t, joints, view);
+      add_vector(*vector, scene_, states, steps, t, joints, contacts, view);
     } else if (const auto* axes = std::get_if<scene::AxesOverlay>(&overlay)) {
       add_axes(*axes, states, view);
     } else if (const auto* trail = std::get_if<scene::TrailOverlay>(&overlay)) {

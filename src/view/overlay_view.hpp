@@ -46,9 +46,13 @@ class OverlayItems {
   // Adds the overlays' items for frame `frame` at time t (s), whose drawn states were just
   // record()ed: drawn where `states` put the bodies, showing the values of the physics steps
   // around t (`steps`, overlay_values.hpp) and the joints' values there (joint_view.hpp).
+  // `contacts` are every body's contact force (contact_forces) when needs_contacts().
   void add_to(const std::vector<physics::BodyState>& states, const StepPair& steps, double t,
-              std::int64_t frame, render::FrameView& view,
-              std::span<const JointValue> joints = {}) const;
+              std::int64_t frame, render::FrameView& view, std::span<const JointValue> joints = {},
+              std::span<const BodyContact> contacts = {}) const;
+
+  // Whether an overlay shows a contact force: then add_to needs every body's.
+  bool needs_contacts() const;
 
  private:
   struct TrailPoint {

@@ -261,7 +261,9 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
   }
   if (overlays_) {
     overlays_->record(*states, t);
-    overlays_->add_to(*states, steps, t, frame, view, joints);
+    std::vector<BodyContact> contacts;
+    if (overlays_->needs_contacts()) contacts = contact_forces(simulation_);
+    overlays_->add_to(*states, steps, t, frame, view, joints, contacts);
   }
   return view;
 }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "render/font.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -137,6 +139,30 @@ TEST(OverlayLayer, FramesWithoutOverlaysAreThoseOfARendererWithoutThem) {
 
 // Six vertices (two triangles) a line segment; an arrow's shaft and head nine; what is behind
 // the camera nothing; a segment crossing the near plane cut, not dropped.
+// A zero vector (and one too short to read, under kMinArrowPixels on the picture) draws neither
+// its arrow nor its label: the frame is the cube's alone, byte for byte. One just long enough
+// draws both.
+TEST(OverlayLayer, AnArrowTooShortToReadDrawsNeitherItselfNorItsLabel) {
+  RenderSettings settings = overlay_settings(320, 180);
+  settings.font = std::string(kDefaultFontFamily);
+  FrameView plain = cube_with_arrow();
+  plain.arrows.clear();
+  const io::Image expected = draw(settings, plain);
+  FrameView zero = plain;
+  zero.arrows.push_back(
+      Arrow{.from = Vec3(0.5, 0.5, 0.5), .to = Vec3(0.5, 0.5, 0.5), .color = kMagenta, .label = "L"});
+  EXPECT_EQ(draw(settings, zero).rgb, expected.rgb);
+  // 1 mm at ~4.7 m: about 0.04 px at 180 rows, under the 3 px (at 720 rows) to read it.
+  FrameView tiny = plain;
+  tiny.arrows.push_back(
+      Arrow{.from = Vec3(0.5, 0.5, 0.5), .to = Vec3(0.501, 0.5, 0.5), .color = kMagenta, .label = "L"});
+  EXPECT_EQ(draw(settings, tiny).rgb, expected.rgb);
+  FrameView shown = plain;
+  shown.arrows.push_back(
+      Arrow{.from = Vec3(0.5, 0.5, 0.5), .to = Vec3(1.5, 0.5, 0.5), .color = kMagenta, .label = "L"});
+  EXPECT_NE(draw(settings, shown).rgb, expected.rgb);
+}
+
 TEST(OverlayGeometry, TrianglesPerItemAndTheNearPlane) {
   const Mat4 view_projection = perspective(M_PI / 4.0, 16.0 / 9.0, 0.1, 100.0) *
                                look_at(Vec3(0, 0, 5), Vec3::Zero(), Vec3::UnitY());

@@ -190,5 +190,35 @@ TEST(TextLayer, AFontFontconfigDoesNotHaveIsAnErrorAtCreate) {
       << error;
 }
 
+// Two labels of aligned vectors, asked at the same tip (their texts keep apart): their boxes
+// (each text's background, holding its glyphs) are disjoint on the picture.
+TEST(TextLayer, LabelsAtTheSamePointDoNotOverlap) {
+  const Result<std::unique_ptr<TextLayer>> layer =
+      TextLayer::create(640, 360, kDefaultFontFamily);
+  ASSERT_TRUE(layer) << layer.error();
+  const Text label{.text = "\xCF\x89",
+                   .anchor = Anchor::kLeft,
+                   .offset = Eigen::Vector2d(300.0, -20.0),
+                   .height = 28.0,
+                   .background = Rgba(0.0, 0.0, 0.0, 0.5),
+                   .keep_apart = true};
+  Text other = label;
+  other.text = "L";
+  const std::vector<PixelBox> boxes = (*layer)->lay_out({label, other});
+  ASSERT_EQ(boxes.size(), 2u);
+  const PixelBox& a = boxes[0];
+  const PixelBox& b = boxes[1];
+  EXPECT_TRUE(a.x + a.width <= b.x || b.x + b.width <= a.x || a.y + a.height <= b.y ||
+              b.y + b.height <= a.y)
+      << a.x << "," << a.y << " " << a.width << "x" << a.height << " against " << b.x << ","
+      << b.y << " " << b.width << "x" << b.height;
+  // Without keep_apart they would be drawn on top of each other.
+  Text plain = label, plain_other = other;
+  plain.keep_apart = plain_other.keep_apart = false;
+  const std::vector<PixelBox> stacked = (*layer)->lay_out({plain, plain_other});
+  ASSERT_EQ(stacked.size(), 2u);
+  EXPECT_EQ(stacked[0].y, stacked[1].y);
+}
+
 }  // namespace
 }  // namespace tumble::render

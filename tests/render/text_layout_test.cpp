@@ -159,6 +159,28 @@ TEST(TextLayout, InvalidUtf8IsAnErrorNamingTheByte) {
   EXPECT_NE(layout.error().find("invalid UTF-8 at byte 4"), std::string::npos) << layout.error();
 }
 
+bool disjoint(const PixelBox& a, const PixelBox& b) {
+  return a.x + a.width <= b.x || b.x + b.width <= a.x || a.y + a.height <= b.y ||
+         b.y + b.height <= a.y;
+}
+
+// Labels asked at the same place (two aligned vectors' tips) go one below the other, the gap
+// apart; one past the frame's edge comes inside; one that cannot go down goes up.
+TEST(TextLayout, PlaceApartMovesALabelClearOfTheOthersAndIntoTheFrame) {
+  const PixelBox asked{100, 50, 40, 20};
+  const PixelBox first = place_apart(asked, {}, 320, 180, 2);
+  EXPECT_EQ(first, asked);
+  const PixelBox second = place_apart(asked, {first}, 320, 180, 2);
+  EXPECT_TRUE(disjoint(first, second));
+  EXPECT_EQ(second, (PixelBox{100, 72, 40, 20}));  // 50 + 20 + the gap of 2
+  const PixelBox third = place_apart(asked, {first, second}, 320, 180, 2);
+  EXPECT_EQ(third, (PixelBox{100, 94, 40, 20}));
+  EXPECT_EQ(place_apart({300, -5, 40, 20}, {}, 320, 180, 2), (PixelBox{280, 0, 40, 20}));
+  const PixelBox low{100, 155, 40, 20};
+  const PixelBox above = place_apart(low, {low}, 320, 180, 2);
+  EXPECT_EQ(above, (PixelBox{100, 133, 40, 20}));
+}
+
 TEST(TextLayout, AnchorNamesAreTheScenesWords) {
   EXPECT_EQ(anchor_from_name("top-left"), Anchor::kTopLeft);
   EXPECT_EQ(anchor_from_name("top"), Anchor::kTop);

@@ -317,5 +317,159 @@ TEST(OverlayView, OnlyWhatTheOverlaysDrawIsSetUp) {
   EXPECT_EQ(overlay_font(axes), render::kDefaultFontFamily);
 }
 
+// A 1 kg cube resting on the floor (impulse contact, and penalty contact): the contact force
+// arrow points up with length m g × scale within 1 %, from the centre of its bottom face.
+TEST(OverlayView, AContactForceArrowOnARestingCubeIsItsWeightUp) {
+  for (const char* method : {"impulse", "penalty"}) {
+    const std::string text = std::string(R"(name = "resting"
+duration = 2.0
+[physics]
+dt = 0.005
+contact = ")") + method + R"("
+gravity = [0, -9.81, 0]
+[[planes]]
+point = [0, 0, 0]
+normal = [0, 1, 0]
+[[bodies]]
+name = "cube"
+shape = "cube"
+size = 1.0
+mass = 1.0
+position = [0, 0.5, 0]
+[camera]
+position = [3, 3, 7]
+look_at = [0, 0.5, 0]
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "contact_force"
+scale = 0.1
+)";
+    const Result<scene::Scene> loaded = scene::parse_scene(text, "resting.toml");
+    ASSERT_TRUE(loaded) << loaded.error();
+    const Result<Framing> framing = frame_scene(*loaded, 60, [] { return false; });
+    ASSERT_TRUE(framing);
+    SimulatedFrames source(*loaded, *framing, [] { return false; });
+    for (const std::int64_t frame : {30, 45, 59}) {
+      const Result<render::FrameView> view = source.view(frame);
+      ASSERT_TRUE(view && view->arrows.size() == 1u) << method;
+      const physics::Vec3 arrow = view->arrows[0].to - view->arrows[0].from;
+      EXPECT_NEAR(arrow.y(), 0.981, 0.01 * 0.981) << method << " frame " << frame;
+      EXPECT_NEAR(arrow.x(), 0.0, 1e-3 * 0.981) << method;
+      EXPECT_NEAR(arrow.z(), 0.0, 1e-3 * 0.981) << method;
+      if (std::string(method) == "impulse") {  // its contact points: the bottom face's corners
+        EXPECT_NEAR(view->arrows[0].from.y(), 0.0, 0.01) << "frame " << frame;
+        EXPECT_NEAR(view->arrows[0].from.x(), 0.0, 1e-6);
+        EXPECT_NEAR(view->arrows[0].from.z(), 0.0, 1e-6);
+      }
+    }
+  }
+}
+
+// A torque arrow is the torque of the body's force laws about its centre: a push of 2 N along z
+// at (1, 0, 0) of the body turns it about -y with 2 N m.
+TEST(OverlayView, ATorqueArrowIsTheTorqueOfTheLaws) {
+  const scene::Scene scene = parse(R"(
+[[bodies.forces]]
+kind = "force_at_point"
+force = [0, 0, 2]
+point = [1, 0, 0]
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "torque"
+law = "force_at_point"
+scale = 1.0
+)");
+  const Result<Framing> framing = frame_scene(scene, 1, [] { return false; });
+  ASSERT_TRUE(framing);
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  const Result<render::FrameView> view = source.view(0);
+  ASSERT_TRUE(view && view->arrows.size() == 1u);
+  const physics::Vec3 torque = view->arrows[0].to - view->arrows[0].from;
+  EXPECT_TRUE(torque.isApprox(physics::Vec3(0, -2, 0), 1e-12)) << torque.transpose();
+}
+
+// A text with `body` is a label at the body's point (offset kept), not a text at an anchor.
+TEST(OverlayView, ATextThatFollowsABodyIsALabelAtItsPoint) {
+  const scene::Scene scene = parse(R"(
+[[overlays]]
+kind = "text"
+text = "cube {cube.speed:.1f} m/s"
+body = "cube"
+point = [0.0, 0.5, 0.0]
+offset = [4, -10]
+background = "#00000080"
+)");
+  const Result<Framing> framing = frame_scene(scene, 60, [] { return false; });
+  ASSERT_TRUE(framing);
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  const Result<render::FrameView> view = source.view(0);
+  ASSERT_TRUE(view);
+  EXPECT_TRUE(view->texts.empty());
+  ASSERT_EQ(view->labels.size(), 1u);
+  EXPECT_EQ(view->labels[0].text, "cube 3.2 m/s");  // |(1, 3, 0)| = 3.16
+  EXPECT_TRUE(view->labels[0].position.isApprox(physics::Vec3(0, 0.5, 0)));  // starts at 0
+  EXPECT_EQ(view->labels[0].offset, Eigen::Vector2d(4, -10));
+  EXPECT_TRUE(view->labels[0].background.has_value());
+}
+
+// The vectors' default colours are none of the axes' red, green and blue, nor near each other.
+TEST(OverlayView, DefaultVectorColoursAreNotTheAxesColours) {
+  const scene::Scene scene = parse(R"(
+[[bodies.forces]]
+kind = "force"
+force = [0, 0, 1]
+[[overlays]]
+kind = "axes"
+body = "cube"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "velocity"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "angular_velocity"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "angular_momentum"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "force"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "contact_force"
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "torque"
+)");
+  std::vector<render::Rgba> axes, vectors;
+  for (const scene::OverlaySpec& overlay : scene.overlays) {
+    if (const auto* vector = std::get_if<scene::VectorOverlay>(&overlay)) {
+      vectors.push_back(vector->color);
+    }
+  }
+  const Result<Framing> framing = frame_scene(scene, 1, [] { return false; });
+  ASSERT_TRUE(framing);
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  const Result<render::FrameView> view = source.view(0);
+  ASSERT_TRUE(view && view->arrows.size() >= 3u);
+  for (int i = 0; i < 3; ++i) axes.push_back(view->arrows[static_cast<std::size_t>(i)].color);
+  ASSERT_EQ(vectors.size(), 6u);
+  for (std::size_t i = 0; i < vectors.size(); ++i) {
+    for (const render::Rgba& axis : axes) {
+      EXPECT_GT((vectors[i] - axis).head<3>().norm(), 0.35) << "vector " << i;
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      EXPECT_GT((vectors[i] - vectors[j]).head<3>().norm(), 0.3) << i << " and " << j;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tumble::view
