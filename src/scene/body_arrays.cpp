@@ -47,8 +47,8 @@ void read_counts(TableReader& in, BodyArray& array) {
       array.counts[a] = count_of(in, (*grid)[a]);
       array.steps[a][axis] = spacing[axis];
       if (array.counts[a] > 1 && spacing[axis] == 0.0) {
-        in.fail("spacing", std::string("spacing along ") + "xyz"[axis] +
-                               " is 0 but the grid has " + std::to_string(array.counts[a]) +
+        in.fail("spacing", std::string("spacing along ") + "xyz"[axis] + " is 0 but the grid has " +
+                               std::to_string(array.counts[a]) +
                                " bodies that way: they would all be in one place");
       }
     }
@@ -108,8 +108,8 @@ std::vector<BodySpec> expand_body_array(TableReader& in, const BodySpec& body,
   if (!array.written) return {body};
   const std::string last_name = body.name + "_" + std::to_string(array.size() - 1);
   if (!is_safe_name(last_name)) {
-    in.fail("name", "the array's names (up to " + in_quotes(last_name) + ") " +
-                        std::string(kSafeNameRule));
+    in.fail("name",
+            "the array's names (up to " + in_quotes(last_name) + ") " + std::string(kSafeNameRule));
   }
   const bool colored = in.has("color");
   std::vector<BodySpec> out;

@@ -390,8 +390,8 @@ Scene read_scene(const toml::table& root, const std::string& file) {
     if (!table) in.fail("physics", "expected a [physics] table");
     TableReader physics(*table, "physics", file);
     if (physics.has("gravity")) {
-      gravity = vector_within(physics, "gravity", physics.required_vector("gravity"), kLargest,
-                              "m/s²");
+      gravity =
+          vector_within(physics, "gravity", physics.required_vector("gravity"), kLargest, "m/s²");
     }
     scene.physics.dt = physics.optional_number("dt", scene.physics.dt);
     require_positive(physics, "dt", scene.physics.dt);

@@ -60,8 +60,9 @@ std::vector<std::string> stability_warnings(const scene::Scene& scene) {
   if (!weightless.empty()) {
     lines.push_back(names_of(scene, weightless) +
                     ": no gravity acts, yet a floor (a plane facing up) lies below, which "
-                    "nothing will ever bring " + (weightless.size() == 1 ? "it" : "them") +
-                    " down to; if " + (weightless.size() == 1 ? "it" : "they") +
+                    "nothing will ever bring " +
+                    (weightless.size() == 1 ? "it" : "them") + " down to; if " +
+                    (weightless.size() == 1 ? "it" : "they") +
                     " should fall, add [physics] gravity = [0, -9.81, 0]");
   }
   for (const sim::BodiesAdvice& advice :

@@ -79,19 +79,22 @@ TEST(BodyArrays, BodiesWithoutAColourTakeTheDefaultOfTheirPlaceInTheScene) {
       "count = 3\nspacing = [1.0, 0.0, 0.0]\n"
       "[[bodies]]\nshape = \"cube\"\nsize = 0.5\nmass = 1.0\nposition = [0.0, 2.0, 0.0]\n");
   ASSERT_EQ(scene.bodies.size(), 4u);
-  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(scene.bodies[i].color, detail::default_body_color(i));
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(scene.bodies[i].color, detail::default_body_color(i));
   // The body after the array is the scene's fourth: its default name says so.
   EXPECT_EQ(scene.bodies[3].name, "body3");
 }
 
 TEST(BodyArrays, AnArrayOfOneIsItsBodyRenamed) {
-  const Scene scene = parse_valid(testing::cube_scene(1.0) + "name = \"one\"\ncount = 1\nspacing = [0, 0, 0]\n");
+  const Scene scene =
+      parse_valid(testing::cube_scene(1.0) + "name = \"one\"\ncount = 1\nspacing = [0, 0, 0]\n");
   ASSERT_EQ(scene.bodies.size(), 1u);
   EXPECT_EQ(scene.bodies[0].name, "one_0");
 }
 
 TEST(BodyArrays, AnOverlapWithinAnArrayIsBlamedOnItsSpacing) {
-  EXPECT_EQ(testing::error_of(testing::cube_scene(1.0) + "name = \"r\"\ncount = 2\nspacing = [0.5, 0, 0]\n"),
+  EXPECT_EQ(testing::error_of(testing::cube_scene(1.0) +
+                              "name = \"r\"\ncount = 2\nspacing = [0.5, 0, 0]\n"),
             "test.toml:8:11: bodies[0].spacing: bodies \"r_0\" and \"r_1\" start overlapping by "
             "0.5 m (bodies collide; give one `collide = false`, or set [physics] "
             "collide_bodies = false)");

@@ -315,8 +315,8 @@ TEST(WeightlessAboveFloor, NamesTheMovingBodiesWithNoGravityThatStartAboveAPlane
 
 TEST(WeightlessAboveFloor, IsQuietWithGravityForStaticBodiesBelowAFloorOrBesideWalls) {
   const std::vector<physics::Plane> floor = {physics::Plane{}};
-  EXPECT_TRUE(weightless_above_floor({cube_with({physics::Gravity{}})}, {at_height(2.0)}, floor)
-                  .empty());
+  EXPECT_TRUE(
+      weightless_above_floor({cube_with({physics::Gravity{}})}, {at_height(2.0)}, floor).empty());
   EXPECT_TRUE(weightless_above_floor({cube_with({}, true)}, {at_height(2.0)}, floor).empty());
   EXPECT_TRUE(weightless_above_floor({cube_with({})}, {at_height(-2.0)}, floor).empty());
   const std::vector<physics::Plane> walls = {
