@@ -6,6 +6,7 @@ import math
 import random
 
 HEADER_PHYSICS = """[physics]
+gravity = [0.0, -9.81, 0.0]  # on every moving body
 dt = 0.0166666666666666667  # 1/60 s
 integrator = "rk4"
 contact = "impulse"
@@ -41,7 +42,6 @@ def body(name, size, mass, position, velocity=None, orientation=None, angular=No
     lines += [f"restitution = {restitution}", f"friction = {friction}"]
     if color:
         lines.append('color = "%s"' % color)
-    lines += ["", "[[bodies.forces]]", 'kind = "gravity"']
     return "\n".join(lines) + "\n"
 
 

@@ -71,6 +71,7 @@ name = "galton_board"
 duration = {args.duration}
 
 [physics]
+gravity = [0.0, -9.81, 0.0]  # on every moving body
 dt = 0.0166666666666666667  # 1/60 s
 integrator = "rk4"
 
@@ -148,7 +149,6 @@ size = [3.2, {{PANE_HEIGHT!r}}]
                               f"radius = {BALL_RADIUS}", "mass = 0.05",
                               f"position = [{x!r}, {y!r}, 0.0]", f"restitution = {args.restitution}",
                               f"friction = {args.friction}", 'color = "#e3662e"']))
-            out.append(block(["", "[[bodies.forces]]", 'kind = "gravity"']))
             if args.drag > 0.0:
                 out.append(block(["", "[[bodies.forces]]", 'kind = "linear_damping"',
                                   f"coefficient = {args.drag}"]))

@@ -61,7 +61,8 @@ PlaneSpec read_plane(TableReader& in, std::size_t index) {
 
 // A body's initial box must be outside every plane: the contact would otherwise start by
 // throwing it out. Blamed on the body's position if written, else on the plane's point.
-void refuse_bodies_inside(const TableReader& root, const Scene& scene) {
+void refuse_bodies_inside(const TableReader& root, const Scene& scene,
+                          std::span<const std::size_t> table_of_body) {
   const toml::array& bodies = *root.table().get("bodies")->as_array();
   const toml::array& planes = *root.table().get("planes")->as_array();
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
@@ -75,9 +76,10 @@ void refuse_bodies_inside(const TableReader& root, const Scene& scene) {
       if (!(depth > kStartOverlapAllowed)) continue;
       const std::string what = "body " + in_quotes(body.name) + " starts " + format_number(depth) +
                                " m inside plane " + in_quotes(spec.name);
-      const toml::table& body_table = *bodies[i].as_table();
+      const std::size_t table = table_of_body[i];
+      const toml::table& body_table = *bodies[table].as_table();
       if (body_table.contains("position")) {
-        TableReader(body_table, "bodies[" + std::to_string(i) + "]", root.file())
+        TableReader(body_table, "bodies[" + std::to_string(table) + "]", root.file())
             .fail("position", what);
       }
       TableReader(*planes[j].as_table(), "planes[" + std::to_string(j) + "]", root.file())
@@ -147,7 +149,8 @@ double start_overlap(const BodySpec& a, const BodySpec& b) {
 
 }  // namespace
 
-void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
+void refuse_overlapping_bodies(const TableReader& root, const Scene& scene,
+                               std::span<const std::size_t> table_of_body) {
   // Both methods act between bodies: impulse contact would throw overlapping bodies apart, and
   // penalty contact's springs would start compressed by the overlap.
   if (!scene.physics.contact.collide_bodies) return;
@@ -181,16 +184,23 @@ void refuse_overlapping_bodies(const TableReader& root, const Scene& scene) {
                                     ? " m (a static body holds its place: move the other out)"
                                     : " m (bodies collide; give one `collide = false`, or set "
                                       "[physics] collide_bodies = false)");
-      const toml::table& table = *bodies[b].as_table();
-      TableReader reader(table, "bodies[" + std::to_string(b) + "]", root.file());
-      if (table.contains("position")) reader.fail("position", what);
-      TableReader(*bodies[a].as_table(), "bodies[" + std::to_string(a) + "]", root.file())
-          .fail("position", what);
+      const auto reader_of = [&](std::size_t body) {
+        const std::size_t table = table_of_body[body];
+        return TableReader(*bodies[table].as_table(), "bodies[" + std::to_string(table) + "]",
+                           root.file());
+      };
+      // Two bodies of one array overlap by its spacing.
+      TableReader reader = reader_of(b);
+      if (table_of_body[a] == table_of_body[b] && reader.table().contains("spacing")) {
+        reader.fail("spacing", what);
+      }
+      if (reader.table().contains("position")) reader.fail("position", what);
+      reader_of(a).fail("position", what);
     }
   }
 }
 
-void read_planes(TableReader& root, Scene& scene) {
+void read_planes(TableReader& root, Scene& scene, std::span<const std::size_t> table_of_body) {
   if (!root.has("planes")) return;
   const toml::array* planes = root.table().get("planes")->as_array();
   if (!planes) root.fail("planes", "expected [[planes]] tables");
@@ -209,7 +219,7 @@ void read_planes(TableReader& root, Scene& scene) {
                               "duplicate plane name " + in_quotes(scene.planes.back().name));
                     }
                   });
-  refuse_bodies_inside(root, scene);
+  refuse_bodies_inside(root, scene, table_of_body);
 }
 
 }  // namespace tumble::scene::detail

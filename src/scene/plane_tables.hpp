@@ -2,6 +2,8 @@
 // the contact settings in [physics]. Internal to src/scene/.
 #pragma once
 
+#include <span>
+
 #include "scene/scene.hpp"
 #include "scene/table_reader.hpp"
 
@@ -16,11 +18,13 @@ physics::Material read_material(TableReader& in, const physics::Material& fallba
 physics::ContactSettings read_contact_settings(TableReader& physics);
 
 // The [[planes]] tables of `root` into scene.planes, then refuses a body that starts inside a
-// plane. Needs scene.bodies read.
-void read_planes(TableReader& root, Scene& scene);
+// plane. Needs scene.bodies read; `table_of_body` says which [[bodies]] table wrote each (a body
+// array writes many), for the message's place.
+void read_planes(TableReader& root, Scene& scene, std::span<const std::size_t> table_of_body);
 
 // Refuses two colliding bodies whose boxes overlap at the start, naming both, but for two that a
 // joint keeps from colliding. Needs scene.bodies, scene.physics and scene.joints read.
-void refuse_overlapping_bodies(const TableReader& root, const Scene& scene);
+void refuse_overlapping_bodies(const TableReader& root, const Scene& scene,
+                               std::span<const std::size_t> table_of_body);
 
 }  // namespace tumble::scene::detail

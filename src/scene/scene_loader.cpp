@@ -1,9 +1,11 @@
 #include "scene/scene_loader.hpp"
 
+#include "scene/body_arrays.hpp"
 #include "scene/joint_tables.hpp"
 #include "scene/key_depth.hpp"
 #include "scene/limits.hpp"
 #include "scene/mesh_file.hpp"
+#include "scene/orientation_keys.hpp"
 #include "scene/overlay_tables.hpp"
 #include "scene/plane_tables.hpp"
 #include "scene/render_tables.hpp"
@@ -21,20 +23,17 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <variant>
 #include <vector>
 
 namespace tumble::scene {
 namespace {
 
 using namespace detail;
-
-// Body colours when a scene gives none (sRGB): distinct, and calm enough for documentation.
-const std::array<Vec3, 5> kPalette = {Vec3(0.89, 0.40, 0.18), Vec3(0.20, 0.51, 0.78),
-                                      Vec3(0.35, 0.67, 0.33), Vec3(0.85, 0.70, 0.20),
-                                      Vec3(0.60, 0.40, 0.70)};
 
 constexpr double kLargest = std::numeric_limits<double>::max();
 
@@ -301,7 +300,7 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   }
   body.position = in.optional_vector("position", Vec3::Zero());
   body.velocity = in.optional_vector("velocity", Vec3::Zero());
-  body.orientation = in.optional_quaternion("orientation");
+  body.orientation = read_orientation(in);
   // A hull's body axes are its principal axes, turned from the frame its points were given in.
   if (body.hull) body.orientation = (body.orientation * Quat(body.hull->axes)).normalized();
   body.angular_velocity = in.optional_vector("angular_velocity", Vec3::Zero());
@@ -321,7 +320,7 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
   }
   body.material = read_material(in, body.material);
   body.collide = in.optional_bool("collide", body.collide);
-  body.color = in.optional_color("color", kPalette[index % kPalette.size()]);
+  body.color = in.optional_color("color", default_body_color(index));
   if (in.has("forces")) {
     const toml::array* forces = in.table().get("forces")->as_array();
     if (!forces) in.fail("forces", "expected [[bodies.forces]] tables");
@@ -347,8 +346,27 @@ BodySpec read_body(TableReader& in, std::size_t index, const std::string& file) 
       }
     }
   }
-  in.reject_unknown_keys();
   return body;
+}
+
+// [physics] gravity: a law of its own ahead of the body's laws, for every moving body whose
+// table lists no gravity law (its own wins); written first, it is summed as a body's first law.
+void add_scene_gravity(BodySpec& body, const std::optional<Vec3>& gravity) {
+  if (!gravity || body.is_static) return;
+  for (const physics::ForceLaw& law : body.forces) {
+    if (std::holds_alternative<physics::Gravity>(law)) return;
+  }
+  body.forces.insert(body.forces.begin(), physics::Gravity{.acceleration = *gravity});
+}
+
+// The bodies of one [[bodies]] table, the `index`-th body of the scene first: one, or an array's.
+std::vector<BodySpec> read_bodies(TableReader& in, std::size_t index, const std::string& file,
+                                  const std::optional<Vec3>& gravity) {
+  BodySpec body = read_body(in, index, file);
+  add_scene_gravity(body, gravity);
+  const BodyArray array = read_body_array(in, body.position);
+  in.reject_unknown_keys();
+  return expand_body_array(in, body, array, index);
 }
 
 Scene read_scene(const toml::table& root, const std::string& file) {
@@ -366,10 +384,15 @@ Scene read_scene(const toml::table& root, const std::string& file) {
   scene.duration = in.required_number("duration");
   require_positive(in, "duration", scene.duration);
 
+  std::optional<Vec3> gravity;  // m/s², world frame: [physics] gravity
   if (in.has("physics")) {
     const toml::table* table = root.get("physics")->as_table();
     if (!table) in.fail("physics", "expected a [physics] table");
     TableReader physics(*table, "physics", file);
+    if (physics.has("gravity")) {
+      gravity =
+          vector_within(physics, "gravity", physics.required_vector("gravity"), kLargest, "m/s²");
+    }
     scene.physics.dt = physics.optional_number("dt", scene.physics.dt);
     require_positive(physics, "dt", scene.physics.dt);
     const std::string name = physics.optional_string(
@@ -406,12 +429,21 @@ Scene read_scene(const toml::table& root, const std::string& file) {
   const toml::array* bodies = in.required("bodies").as_array();
   if (!bodies || bodies->empty()) in.fail("bodies", "expected at least one [[bodies]] table");
   std::set<std::string> names;
+  std::vector<std::size_t> table_of_body;  // which [[bodies]] table wrote each body
   in.each_table(*bodies, "bodies", static_cast<std::size_t>(kMaxBodies), "a [[bodies]] table",
                 [&](TableReader& body, std::size_t i) {
-                  scene.bodies.push_back(read_body(body, i, file));
-                  refuse_what_the_contact_cannot_hold(body, scene.bodies.back(), scene.physics);
-                  if (!names.insert(scene.bodies.back().name).second) {
-                    body.fail("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
+                  for (BodySpec& made : read_bodies(body, scene.bodies.size(), file, gravity)) {
+                    refuse_what_the_contact_cannot_hold(body, made, scene.physics);
+                    if (!names.insert(made.name).second) {
+                      body.fail("name", "duplicate body name \"" + made.name + "\"");
+                    }
+                    scene.bodies.push_back(std::move(made));
+                    table_of_body.push_back(i);
+                  }
+                  if (scene.bodies.size() > static_cast<std::size_t>(kMaxBodies)) {
+                    body.fail("count", std::to_string(scene.bodies.size()) +
+                                           " bodies in all, more than the limit of " +
+                                           std::to_string(kMaxBodies));
                   }
                 });
   const double body_steps =
@@ -424,9 +456,9 @@ Scene read_scene(const toml::table& root, const std::string& file) {
                   scene.bodies.size(), body_steps, static_cast<double>(kMaxBodySteps));
     fail_on_dt(what);
   }
-  read_planes(in, scene);
+  read_planes(in, scene, table_of_body);
   read_joints(in, scene);
-  refuse_overlapping_bodies(in, scene);
+  refuse_overlapping_bodies(in, scene, table_of_body);
   read_render_tables(in, scene);
   read_overlays(in, scene);
   in.reject_unknown_keys();

@@ -56,6 +56,15 @@ std::vector<std::string> stability_warnings(const scene::Scene& scene) {
     models.push_back(scene::body_model(scene, body));
     initial.push_back(scene::initial_state(body));
   }
+  const std::vector<std::size_t> weightless = sim::weightless_above_floor(models, initial, planes);
+  if (!weightless.empty()) {
+    lines.push_back(names_of(scene, weightless) +
+                    ": no gravity acts, yet a floor (a plane facing up) lies below, which "
+                    "nothing will ever bring " +
+                    (weightless.size() == 1 ? "it" : "them") + " down to; if " +
+                    (weightless.size() == 1 ? "it" : "they") +
+                    " should fall, add [physics] gravity = [0, -9.81, 0]");
+  }
   for (const sim::BodiesAdvice& advice :
        sim::check_contact_world(models, initial, planes, scene.physics.contact,
                                 scene.physics.integrator, scene.physics.dt)) {

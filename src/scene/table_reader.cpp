@@ -116,8 +116,10 @@ std::optional<std::vector<double>> hex_components(const std::string& text, bool 
 }  // namespace
 
 Vec3 TableReader::optional_color(std::string_view key, const Vec3& fallback) {
-  if (!has(key)) return fallback;
-  const toml::node& node = *table_.get(key);
+  return has(key) ? color(key, *table_.get(key)) : fallback;
+}
+
+Vec3 TableReader::color(std::string_view key, const toml::node& node) const {
   if (node.is_string()) {
     const std::string text = *node.value<std::string>();
     const auto hex = hex_components(text, false);

@@ -167,6 +167,8 @@ class TableReader {
 
   // An sRGB colour: [r, g, b] with components in [0, 1], or "#rrggbb".
   Vec3 optional_color(std::string_view key, const Vec3& fallback);
+  // The colour `node` (at `key`, or an element of it) holds, as optional_color reads it.
+  Vec3 color(std::string_view key, const toml::node& node) const;
   // An sRGB colour with a straight opacity: "#rrggbb", "#rrggbbaa", [r, g, b] or [r, g, b, a],
   // components in [0, 1] (opacity 1 when not given).
   Eigen::Vector4d optional_rgba(std::string_view key, const Eigen::Vector4d& fallback);

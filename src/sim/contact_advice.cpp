@@ -101,6 +101,21 @@ bool touch(const physics::BodyModel& a, const physics::BodyState& sa, const phys
 
 }  // namespace
 
+std::vector<std::size_t> weightless_above_floor(const std::vector<physics::BodyModel>& models,
+                                                const std::vector<physics::BodyState>& initial,
+                                                const std::vector<physics::Plane>& planes) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    if (models[i].is_static || !constant_gravity(models[i]).isZero(0.0)) continue;
+    const physics::Vec3& centre = initial[i].position();  // world frame (m)
+    const auto floor_below = [&](const physics::Plane& plane) {
+      return plane.normal.y() > 0.0 && plane.normal.dot(centre) > plane.offset;
+    };
+    if (std::any_of(planes.begin(), planes.end(), floor_below)) out.push_back(i);
+  }
+  return out;
+}
+
 TouchingAtStart touching_at_start(const std::vector<physics::BodyModel>& models,
                                   const std::vector<physics::BodyState>& initial,
                                   const std::vector<physics::Plane>& planes,

@@ -50,6 +50,15 @@ struct BodiesAdvice {
   std::optional<double> suggested_damping = {};    // N s/m
 };
 
+// The moving bodies that start above a floor with no gravity at all (no gravity law, or laws
+// that add up to 0): a floor is a plane facing up (its normal's y, up in tumble's world, above
+// 0), and a body is above it when its centre is on the normal's side. Nothing brings such a body
+// down to the floor, which is seldom what a scene with a floor means: most often [physics]
+// gravity, or the body's gravity law, was left out. Indices into `models`, in order.
+std::vector<std::size_t> weightless_above_floor(const std::vector<physics::BodyModel>& models,
+                                                const std::vector<physics::BodyState>& initial,
+                                                const std::vector<physics::Plane>& planes);
+
 // Which bodies touch at the start (closer than a millimetre): each other (pairs of colliding
 // bodies, when settings.collide_bodies) and planes, and the groups the pairs join.
 struct TouchingAtStart {

@@ -42,6 +42,29 @@ TEST_F(CheckCommand, EveryExampleSceneIsValidWithoutWarnings) {
   }
 }
 
+// A cube over a floor with no gravity: check says so, and is quiet once [physics] gravity is given.
+TEST_F(CheckCommand, WarnsOfABodyAboveAFloorThatNoGravityPullsDown) {
+  const std::string bodies =
+      "[[planes]]\nname = \"floor\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, "
+      "0.0]\n[[bodies]]\nname = \"cube\"\nshape = \"cube\"\n"
+      "size = 1.0\nmass = 1.0\nposition = [0.0, 2.0, 0.0]\n";
+  const Outcome floating =
+      tumble("check " + write("floating.toml", "duration = 1.0\n" + bodies).string());
+  EXPECT_EQ(floating.exit_code, 0) << floating.err;
+  EXPECT_NE(floating.out.find("tumble: warning: body \"cube\": no gravity acts, yet a floor (a "
+                              "plane facing up) lies below, which nothing will ever bring it down "
+                              "to; if it should fall, add [physics] gravity = [0, -9.81, 0]\n"),
+            std::string::npos)
+      << floating.out;
+  EXPECT_NE(floating.out.find("; 1 warning\n"), std::string::npos) << floating.out;
+  const Outcome falling =
+      tumble("check " + write("falling.toml",
+                              "duration = 1.0\n[physics]\ngravity = [0.0, -9.81, 0.0]\n" + bodies)
+                            .string());
+  EXPECT_EQ(falling.exit_code, 0) << falling.err;
+  EXPECT_NE(falling.out.find("; 0 warnings\n"), std::string::npos) << falling.out;
+}
+
 // A hull of a 100-gon prism has 200 corners: tumble keeps 64, and says so.
 TEST_F(CheckCommand, SaysAHullOfManyCornersIsReduced) {
   std::string text =

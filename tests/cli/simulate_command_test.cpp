@@ -158,6 +158,49 @@ TEST_F(SimulateCommand, FourHundredSeparateBoxesGiveTheCsvRecordedBeforeContact)
   EXPECT_EQ(fnv1a_digest(read_file(path("now.csv"))), recorded);
 }
 
+// scenes/tower.toml gives gravity once in [physics]; tests/data/tower_per_body_gravity.toml is the
+// same scene with a gravity law on each of its eleven bodies, as it was written before.
+TEST_F(SimulateCommand, PhysicsGravityGivesTheCsvOfAGravityLawOnEachBody) {
+  const std::string source = TUMBLE_SOURCE_DIR;
+  ASSERT_NE(read_file(source + "/scenes/tower.toml").find("\ngravity = [0.0, -9.81, 0.0]"),
+            std::string::npos);
+  const Outcome once = tumble("simulate " + source + "/scenes/tower.toml --out " + path("a.csv"));
+  ASSERT_EQ(once.exit_code, 0) << once.err;
+  const Outcome each = tumble("simulate " + source +
+                              "/tests/data/tower_per_body_gravity.toml --out " + path("b.csv"));
+  ASSERT_EQ(each.exit_code, 0) << each.err;
+  const std::string a = read_file(path("a.csv"));
+  EXPECT_EQ(parse_csv(a).size(), 1u + 11u * 361u);  // header, then 11 bodies at 361 times
+  EXPECT_TRUE(a == read_file(path("b.csv")));       // not EXPECT_EQ: 1.3 MB each
+}
+
+// A body array of 20 boxes falling onto a floor and each other, against the same 20 written out.
+TEST_F(SimulateCommand, ABodyArrayOfTwentyGivesTheCsvOfTwentyBodiesWrittenOut) {
+  const std::string head =
+      "duration = 1.5\n[physics]\ngravity = [0.0, -9.81, 0.0]\n"
+      "[[planes]]\nname = \"floor\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, "
+      "0.0]\nrestitution = 0.3\n";
+  const std::string body =
+      "shape = \"box\"\nsize = [0.4, 0.3, 0.5]\nmass = 1.5\n"
+      "angular_velocity = [0.0, 1.0, 2.0]\n"
+      "rotation = { axis = [1, 0, 1], degrees = 30 }\n";
+  std::string written = head;
+  for (int i = 0; i < 20; ++i) {
+    char position[96];
+    std::snprintf(position, sizeof position, "position = [%.17g, %.17g, 0.0]\n", -8.0 + 0.8 * i,
+                  1.0 + 0.25 * i);
+    written += "[[bodies]]\nname = \"box_" + std::to_string(i) + "\"\n" + body + position;
+  }
+  const std::string array = head + "[[bodies]]\nname = \"box\"\n" + body +
+                            "position = [-8.0, 1.0, 0.0]\ncount = 20\nspacing = [0.8, 0.25, 0.0]\n";
+  const Outcome a = tumble("simulate " + write("array.toml", array).string());
+  const Outcome b = tumble("simulate " + write("written.toml", written).string());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(parse_csv(a.out).size(), 1u + 20u * 151u);
+  EXPECT_TRUE(a.out == b.out);
+}
+
 INSTANTIATE_TEST_SUITE_P(Every, ShippedSceneWithoutPlanes,
                          ::testing::Values("spinning_cube", "thrown_cube", "pushed_cube",
                                            "intermediate_axis", "cube_on_spring"));

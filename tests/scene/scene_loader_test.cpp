@@ -869,5 +869,37 @@ anchor = [0.25, 0.0, 0.0]
   EXPECT_NE(colliding.error().find("start overlapping"), std::string::npos) << colliding.error();
 }
 
+// [physics] gravity is each moving body's first law, as if written first in its table.
+TEST(SceneLoader, PhysicsGravityIsTheFirstLawOfEveryMovingBodyWithoutOne) {
+  const Scene scene = parse_valid(
+      "duration = 1.0\n[physics]\ngravity = [0.5, -3.0, 0.25]\n"
+      "[[bodies]]\nname = \"pushed\"\nshape = \"cube\"\nsize = 1.0\nmass = 2.0\n" +
+      std::string(testing::kTorqueX) +
+      "[[bodies]]\nname = \"own\"\nshape = \"cube\"\nsize = 1.0\nmass = 1.0\n"
+      "position = [3.0, 0.0, 0.0]\n"
+      "[[bodies.forces]]\nkind = \"torque\"\ntorque = [0.0, 1.0, 0.0]\n"
+      "[[bodies.forces]]\nkind = \"gravity\"\nacceleration = [0.0, -1.0, 0.0]\n"
+      "[[bodies]]\nname = \"peg\"\nshape = \"cube\"\nsize = 1.0\nstatic = true\n"
+      "position = [6.0, 0.0, 0.0]\n");
+  ASSERT_EQ(scene.bodies.size(), 3u);
+  const BodySpec& pushed = scene.bodies[0];
+  ASSERT_EQ(pushed.forces.size(), 2u);
+  EXPECT_EQ(force_as<physics::Gravity>(pushed, 0).acceleration, Vec3(0.5, -3.0, 0.25));
+  EXPECT_EQ(force_as<physics::ConstantTorque>(pushed, 1).torque, Vec3(1.0, 0.0, 0.0));
+  // A body's own gravity law wins: it keeps its laws as written, and no other.
+  const BodySpec& own = scene.bodies[1];
+  ASSERT_EQ(own.forces.size(), 2u);
+  EXPECT_EQ(force_as<physics::ConstantTorque>(own, 0).torque, Vec3(0.0, 1.0, 0.0));
+  EXPECT_EQ(force_as<physics::Gravity>(own, 1).acceleration, Vec3(0.0, -1.0, 0.0));
+  // A static body takes no law.
+  EXPECT_TRUE(scene.bodies[2].forces.empty());
+}
+
+TEST(SceneLoader, WithoutPhysicsGravityABodyHasOnlyItsOwnLaws) {
+  const Scene scene = parse_valid(testing::cube_scene(1.0));
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_TRUE(scene.bodies[0].forces.empty());
+}
+
 }  // namespace
 }  // namespace tumble::scene

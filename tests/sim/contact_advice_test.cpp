@@ -285,5 +285,46 @@ TEST(PenaltyPairAdvice, NamesTheTwoLightestBodiesThatMayMeet) {
   EXPECT_TRUE(pair_advice(c, physics::Integrator::rk4, 1e-4).empty());
 }
 
+// A unit cube at `height` (m) above the origin with the laws `forces`.
+physics::BodyModel cube_with(std::vector<physics::ForceLaw> forces, bool is_static = false) {
+  physics::BodyModel model = cube(0.0);
+  model.forces = std::move(forces);
+  model.is_static = is_static;
+  return model;
+}
+
+physics::BodyState at_height(double height) {
+  return physics::make_state(physics::cube_constants(1.0, 1.0), physics::Vec3(0.0, height, 0.0),
+                             physics::Vec3::Zero(), physics::Quat::Identity(),
+                             physics::Vec3::Zero());
+}
+
+TEST(WeightlessAboveFloor, NamesTheMovingBodiesWithNoGravityThatStartAboveAPlaneFacingUp) {
+  const physics::Plane slope{.normal = physics::Vec3(0.6, 0.8, 0.0), .offset = 0.0};
+  const std::vector<physics::BodyModel> models = {
+      cube_with({}), cube_with({physics::Gravity{}}),
+      cube_with({physics::ConstantForce{.force = physics::Vec3(0.0, -1.0, 0.0)}}),
+      cube_with({physics::Gravity{.acceleration = physics::Vec3::Zero()}})};
+  const std::vector<physics::BodyState> initial = {at_height(2.0), at_height(2.0), at_height(2.0),
+                                                   at_height(2.0)};
+  // A force that is not gravity is no gravity; nor is a gravity law of 0.
+  const std::vector<std::size_t> expected = {0, 2, 3};
+  EXPECT_EQ(weightless_above_floor(models, initial, {physics::Plane{}}), expected);
+  EXPECT_EQ(weightless_above_floor(models, initial, {slope}), expected);
+}
+
+TEST(WeightlessAboveFloor, IsQuietWithGravityForStaticBodiesBelowAFloorOrBesideWalls) {
+  const std::vector<physics::Plane> floor = {physics::Plane{}};
+  EXPECT_TRUE(
+      weightless_above_floor({cube_with({physics::Gravity{}})}, {at_height(2.0)}, floor).empty());
+  EXPECT_TRUE(weightless_above_floor({cube_with({}, true)}, {at_height(2.0)}, floor).empty());
+  EXPECT_TRUE(weightless_above_floor({cube_with({})}, {at_height(-2.0)}, floor).empty());
+  const std::vector<physics::Plane> walls = {
+      {.normal = physics::Vec3::UnitX(), .offset = -3.0},
+      {.normal = physics::Vec3(0.0, -1.0, 0.0), .offset = -5.0}};  // and a ceiling
+  EXPECT_TRUE(weightless_above_floor({cube_with({})}, {at_height(2.0)}, walls).empty());
+  EXPECT_TRUE(weightless_above_floor({cube_with({})}, {at_height(2.0)}, {}).empty());
+}
+
 }  // namespace
 }  // namespace tumble::sim
