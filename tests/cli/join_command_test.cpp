@@ -158,6 +158,21 @@ TEST_F(JoinCommand, ThreeUnevenChunksJoinIntoTheWholeRender) {
   EXPECT_NE(report.find("\"first\": 7, \"end\": 8"), std::string::npos);
 }
 
+// Chunks without PNG frames still give the whole render's poster; the contact sheet, which needs
+// the frames' pixels, is left out, and the join says so.
+TEST_F(JoinCommand, ChunksWithoutFramesGiveThePosterAndSayThereIsNoContactSheet) {
+  const fs::path whole = render("whole", "--no-frames");
+  const fs::path a = render("a", "--frames 0:9 --no-frames"),
+                 b = render("b", "--frames 9:15 --no-frames");
+  const Outcome run = join({a, b});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const fs::path joined = dir_ / "joined";
+  EXPECT_EQ(names_in(joined), (std::vector<std::string>{"poster.png", "report.json", "spin.mp4"}));
+  EXPECT_EQ(read_file(joined / "poster.png"), read_file(whole / "poster.png"));
+  EXPECT_NE(run.err.find("no contact_sheet.png: the chunks hold no PNG frames"), std::string::npos)
+      << run.err;
+}
+
 // --chunk I/N renders line I of `plan --chunks N` into <directory>.chunk-I-of-N, and the chunks
 // of a plan join into the whole render.
 TEST_F(JoinCommand, ChunkIOfNRendersLineIOfThePlanAndTheChunksJoin) {
