@@ -238,7 +238,8 @@ TEST_F(JoinCommand, ChunksWithAnMp4AndAWebmJoinIntoBoth) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const fs::path joined = dir_ / "joined";
   EXPECT_EQ(names_in(joined),
-            (std::vector<std::string>{"frames", "report.json", "spin.mp4", "spin.webm"}));
+            (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png", "report.json",
+                                      "spin.mp4", "spin.webm"}));
   const auto webm = tumble::testing::read_video((joined / "spin.webm").string());
   ASSERT_EQ(webm.error, "");
   ASSERT_EQ(webm.pictures.size(), 15u);
