@@ -13,6 +13,7 @@
 #include "io/staged_directory.hpp"
 #include "io/video_join.hpp"
 #include "job/join_inputs.hpp"
+#include "job/joined_stills.hpp"
 #include "job/output_folder.hpp"
 #include "pipeline/frame_sinks.hpp"
 #include "sys/interrupt.hpp"
@@ -93,6 +94,7 @@ std::string joined_report(const std::vector<job::ChunkReport>& chunks, const fs:
   std::ostringstream text;
   // The first line as every render's report.json starts (output_folder.cpp knows it by that).
   text << "{\n  \"scene\": " << io::json_string(first.scene)
+       << ",\n  \"version\": " << io::json_string(TUMBLE_VERSION)
        << ",\n  \"scene_file\": " << io::json_string(first.scene_file)
        << ",\n  \"scene_hash\": " << io::json_string(first.scene_hash)
        << ",\n  \"scene_frames\": " << first.scene_frames << ",\n  \"chunk\": null"
@@ -135,9 +137,9 @@ Result<void> check_segment(const std::string& path, const job::FrameRange& frame
   return {};
 }
 
-// The joined render written into `staging`.
+// The joined render written into `staging`, with the stills a whole render writes.
 Result<void> write_joined(const std::vector<job::ChunkReport>& chunks, const fs::path& staging,
-                          const fs::path& out) {
+                          const fs::path& out, job::JoinedStills& stills) {
   const job::ChunkReport& first = chunks.front();
   if (first.has_frames) {
     if (Result<void> merged = merge_frames(chunks, staging / "frames"); !merged) return merged;
@@ -152,6 +154,9 @@ Result<void> write_joined(const std::vector<job::ChunkReport>& chunks, const fs:
       return joined;
     }
   }
+  Result<job::JoinedStills> written = job::write_joined_stills(chunks, staging);
+  if (!written) return Error{written.error()};
+  stills = *written;
   return io::write_file_atomically((staging / "report.json").string(), joined_report(chunks, out));
 }
 
@@ -168,7 +173,8 @@ CommandResult run_join(const JoinOptions& options, std::FILE* err) {
   }
   Result<io::StagedDirectory> staged = io::StagedDirectory::create(folder.string());
   if (!staged) return Error{"join: " + staged.error()};
-  Result<void> joined = write_joined(*chunks, staged->path(), folder);
+  job::JoinedStills stills;
+  Result<void> joined = write_joined(*chunks, staged->path(), folder, stills);
   if (const int signal = sys::interrupt_signal()) {
     std::fprintf(err, "tumble: join stopped by %s; %s was left as it was\n",
                  sys::signal_name(signal), folder.c_str());
@@ -182,8 +188,18 @@ CommandResult run_join(const JoinOptions& options, std::FILE* err) {
   if (!staged->leftover().empty())
     std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
   if (!options.quiet) {
-    std::fprintf(err, "tumble: joined %zu chunks, frames 0:%lld -> %s\n", chunks->size(),
-                 static_cast<long long>(chunks->front().scene_frames), folder.c_str());
+    const job::ChunkReport& first = chunks->front();
+    std::string files = first.has_frames ? "frames/, " : "";
+    for (const std::string& name : first.video_names) files += name + ", ";
+    if (stills.poster) files += "poster.png, ";
+    if (stills.contact_sheet) files += "contact_sheet.png, ";
+    std::fprintf(err, "tumble: joined %zu chunks, frames 0:%lld -> %s/: %sreport.json\n",
+                 chunks->size(), static_cast<long long>(first.scene_frames), folder.c_str(),
+                 files.c_str());
+    if (!first.has_frames) {
+      std::fprintf(err,
+                   "tumble: no contact_sheet.png: the chunks hold no PNG frames to make it of\n");
+    }
   }
   return kExitOk;
 }

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <new>
+#include <string>
 
 #include "cli/bench_command.hpp"
 #include "cli/check_command.hpp"
@@ -19,6 +20,8 @@ int main(int argc, char** argv) {
   tumble::sys::set_up_process();
   CLI::App app{"tumble: rigid-body scenes to frames and video, headless"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("tumble ") + TUMBLE_VERSION,
+                       "Print tumble's version and exit");
   Commands commands;
   add_simulate_command(app, commands);
   add_render_command(app, commands);

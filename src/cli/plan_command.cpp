@@ -39,6 +39,12 @@ CommandResult run_plan(const PlanOptions& options, std::FILE* out) {
   // The overrides render takes, so that plan and render count the same frames.
   const Result<scene::Scene> scene = job::scene_as_rendered(*loaded, options.render);
   if (!scene) return Error{scene.error()};
+  // Every chunk of the plan would be refused on the farm: refused here, before it is sent.
+  if (const Result<void> joinable =
+          job::check_joinable_formats(*scene, "plan: " + options.render.scene_path);
+      !joinable) {
+    return Error{joinable.error()};
+  }
   const std::int64_t frame_count = scene::frame_count(*scene);
   Result<std::int64_t> chunks = options.chunks
                                     ? Result<std::int64_t>(*options.chunks)

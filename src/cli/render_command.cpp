@@ -14,6 +14,7 @@
 #include "io/atomic_file.hpp"
 #include "io/json_text.hpp"
 #include "io/staged_directory.hpp"
+#include "job/kept_files.hpp"
 #include "job/output_folder.hpp"
 #include "job/render_golden.hpp"
 #include "job/render_job.hpp"
@@ -79,8 +80,21 @@ std::string videos_json(const job::RenderJob& job) {
   return out + "}";
 }
 
+// {"fps": F, "colors": N, "dither": NAME} of the GIF written, or null: F is the rate it plays
+// at, 100 / its delay in centiseconds (io::gif_delay_centiseconds).
+std::string gif_json(const job::RenderJob& job) {
+  if (job.video_path(job.directory, io::VideoFormat::gif).empty()) return "null";
+  const scene::OutputSpec& output = job.scene.output;
+  const int asked = std::min(output.gif_fps.value_or(job.scene.fps), job.scene.fps);
+  std::ostringstream out;
+  out << "{\"fps\": " << 100.0 / io::gif_delay_centiseconds(asked)
+      << ", \"colors\": " << output.gif_colors
+      << ", \"dither\": " << io::json_string(common::gif_dither_name(output.gif_dither)) << "}";
+  return out.str();
+}
+
 std::string report_json(const job::RenderJob& job, const job::RenderResult& result,
-                        double total_seconds) {
+                        const std::vector<job::RenderedFile>& kept, double total_seconds) {
   const scene::Scene& scene = job.scene;
   const pipeline::PipelineReport& p = result.pipeline;
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
@@ -92,6 +106,7 @@ std::string report_json(const job::RenderJob& job, const job::RenderResult& resu
   out.precision(17);
   // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
   out << "{\n  \"scene\": " << io::json_string(scene.name)
+      << ",\n  \"version\": " << io::json_string(TUMBLE_VERSION)
       << ",\n  \"scene_file\": " << io::json_string(scene.source_path)
       << ",\n  \"scene_hash\": " << io::json_string(job.scene_hash)
       << ",\n  \"scene_frames\": " << job.frame_count << ",\n  \"chunk\": " << chunk_json(job)
@@ -105,7 +120,8 @@ std::string report_json(const job::RenderJob& job, const job::RenderResult& resu
       << ", \"count\": " << job.end - job.first << "},\n  \"frames_directory\": "
       << (frames_directory.empty() ? "null" : io::json_string(frames_directory))
       << ",\n  \"video\": " << (video_path.empty() ? "null" : io::json_string(video_path))
-      << ",\n  \"videos\": " << videos_json(job)
+      << ",\n  \"videos\": " << videos_json(job) << ",\n  \"kept\": " << job::kept_json(kept)
+      << ",\n  \"gif\": " << gif_json(job)
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
       << ",\n  \"renderer\": " << io::json_string(result.renderer)
       << ",\n  \"backend\": " << io::json_string(result.backend)
@@ -138,6 +154,28 @@ std::string report_json(const job::RenderJob& job, const job::RenderResult& resu
   return out.str();
 }
 
+// "tumble: N frames in S s (F frames/s, BACKEND) -> DIR/: FILE, ..., report.json", and the files
+// kept of an earlier render on a line of their own.
+void print_summary(const job::RenderJob& job, const job::RenderResult& result,
+                   const std::vector<std::string>& written,
+                   const std::vector<job::RenderedFile>& kept, double total_seconds,
+                   std::FILE* err) {
+  const auto listed = [](const std::string& name) { return name == "frames" ? "frames/" : name; };
+  std::string files;
+  for (const std::string& name : written) files += listed(name) + ", ";
+  files += "report.json";
+  const std::string drawn_by = result.backend + (result.device.empty() ? "" : ", " + result.device);
+  const long long count = job.end - job.first;
+  std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s, %s) -> %s/: %s\n", count,
+               total_seconds, static_cast<double>(count) / total_seconds, drawn_by.c_str(),
+               job.directory.c_str(), files.c_str());
+  if (kept.empty()) return;
+  std::string names;
+  for (const job::RenderedFile& file : kept) names += (names.empty() ? "" : ", ") + listed(file.name);
+  std::fprintf(err, "tumble: kept of the earlier render of this scene in %s/: %s\n",
+               job.directory.c_str(), names.c_str());
+}
+
 }  // namespace
 
 CommandResult run_render(const job::RenderOptions& options,
@@ -152,6 +190,11 @@ CommandResult run_render(const job::RenderOptions& options,
   Result<job::RenderJob> made = job::make_render_job(*loaded, options);
   if (!made) return Error{made.error()};
   made->scene_hash = job::scene_hash(*text, made->scene);
+  // An earlier render of this scene in the folder keeps what this one does not write (the MP4
+  // beside a GIF rendered apart); another scene's is replaced whole, and that is said.
+  const job::EarlierRender earlier =
+      job::read_earlier_render(made->directory, *text, made->scene);
+  made->stills = job::writes_own_stills(made->scene, earlier);
   const job::RenderJob& job = *made;
   if (golden) {
     if (const Result<void> usable = job::check_golden(*golden, job); !usable) {
@@ -166,6 +209,10 @@ CommandResult run_render(const job::RenderOptions& options,
           job::check_replaceable(job.output_root, job.scene.output.directory);
       !replaceable) {
     return Error{replaceable.error()};
+  }
+  if (!options.quiet && earlier.kind == job::EarlierRender::Kind::other_scene) {
+    std::fprintf(err, "tumble: %s holds %s: it is replaced as a whole, nothing of it kept\n",
+                 job.directory.c_str(), earlier.why.c_str());
   }
   Result<io::StagedDirectory> staged = io::StagedDirectory::create(job.directory.string());
   if (!staged) return Error{staged.error()};
@@ -198,25 +245,22 @@ CommandResult run_render(const job::RenderOptions& options,
   // Two lines, each "tumble: ...": what failed, then what became of the output.
   if (!rendered) return Error{rendered.error() + "\ntumble: " + stopped("render failed")};
 
-  const double total_seconds = seconds_since(start);
-  Result<void> kept = io::write_file_atomically((staging / "report.json").string(),
-                                                report_json(job, result, total_seconds));
-  // Checked again: the folder may have been made or filled while the frames were drawn.
-  if (kept) kept = job::check_replaceable(job.output_root, job.scene.output.directory);
-  if (kept) kept = staged->commit();
+  const std::vector<std::string> written = job::render_files(staging, job.scene.name);
+  // Read again: what is kept is what the folder holds now, just before the swap.
+  const Result<std::vector<job::RenderedFile>> kept = job::keep_earlier_files(
+      job::read_earlier_render(job.directory, *text, job.scene), job.directory, staging,
+      job.stills);
   if (!kept) return Error{kept.error() + "\ntumble: " + stopped("render failed")};
+  const double total_seconds = seconds_since(start);
+  Result<void> done = io::write_file_atomically((staging / "report.json").string(),
+                                                report_json(job, result, *kept, total_seconds));
+  // Checked again: the folder may have been made or filled while the frames were drawn.
+  if (done) done = job::check_replaceable(job.output_root, job.scene.output.directory);
+  if (done) done = staged->commit();
+  if (!done) return Error{done.error() + "\ntumble: " + stopped("render failed")};
   if (!staged->leftover().empty())
     std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
-  if (!options.quiet) {
-    const std::string shown = job.scene.output.video
-                                  ? job.video_path(job.directory, job.scene.output.formats.front())
-                                  : job.frames_path(job.directory);
-    const std::string drawn_by =
-        result.backend + (result.device.empty() ? "" : ", " + result.device);
-    std::fprintf(err, "tumble: %lld frames in %.1f s (%.1f frames/s, %s) -> %s\n",
-                 static_cast<long long>(count), total_seconds,
-                 static_cast<double>(count) / total_seconds, drawn_by.c_str(), shown.c_str());
-  }
+  if (!options.quiet) print_summary(job, result, written, *kept, total_seconds, err);
   return golden ? job::compare_with_golden(*golden, job, out) : kExitOk;
 }
 

@@ -52,4 +52,29 @@ constexpr bool joins_in_segments(VideoFormat format) {
   return format != VideoFormat::gif;
 }
 
+// How a GIF's frames are mapped onto its palette ([output] gif_dither): not at all (flat areas,
+// bands in gradients), ordered (a Bayer pattern that stays put from frame to frame) or by error
+// diffusion (Floyd-Steinberg: finer, but its pattern crawls wherever anything moves).
+enum class GifDither { none, bayer, floyd_steinberg };
+
+inline constexpr GifDither kAllGifDithers[] = {GifDither::none, GifDither::bayer,
+                                               GifDither::floyd_steinberg};
+
+// "none", "bayer", "floyd_steinberg": the name in scenes, and libavfilter paletteuse's.
+constexpr const char* gif_dither_name(GifDither dither) {
+  switch (dither) {
+    case GifDither::none:
+      return "none";
+    case GifDither::bayer:
+      return "bayer";
+    case GifDither::floyd_steinberg:
+      return "floyd_steinberg";
+  }
+  return "?";
+}
+
+inline constexpr int kMinGifColors = 2;    // GIF's smallest palette (1 bit)
+inline constexpr int kMaxGifColors = 256;  // and its largest (8 bits)
+inline constexpr int kMaxGifFps = 50;      // 2 cs per frame: browsers slow anything faster
+
 }  // namespace tumble::common

@@ -63,6 +63,11 @@ std::string invalid_settings(const VideoSettings& settings) {
     return "first_frame must be 0, or a segment's first frame (got " +
            std::to_string(settings.first_frame) + ")";
   }
+  if (settings.gif_fps < 0 || settings.gif_colors < common::kMinGifColors ||
+      settings.gif_colors > common::kMaxGifColors) {
+    return "gif_fps must be 0 or more and gif_colors in 2..256 (got " +
+           std::to_string(settings.gif_fps) + " and " + std::to_string(settings.gif_colors) + ")";
+  }
   if (settings.threads < 1) {
     return "threads must be at least 1 (got " + std::to_string(settings.threads) + ")";
   }
@@ -132,6 +137,8 @@ struct VideoEncoder::State {
   std::string open_file();
   std::string encode(const AVFrame* input);
   std::string take_gif_frame(const Image& image);
+  std::string max_colors_option() const;
+  std::string dither_options() const;
   std::string encode_gif_frames();
 };
 
@@ -165,7 +172,8 @@ std::string VideoEncoder::State::set_up_codec() {
   if (kind == VideoFormat::gif) {
     codec->pix_fmt = AV_PIX_FMT_PAL8;
     codec->time_base = AVRational{1, 100};  // GIF's own unit of delay
-    gif_delay = gif_delay_centiseconds(settings.fps);
+    gif_delay = gif_delay_centiseconds(
+        settings.gif_fps > 0 ? std::min(settings.gif_fps, settings.fps) : settings.fps);
     codec->framerate = AVRational{100, gif_delay};
     code = avcodec_open2(codec.get(), encoder, nullptr);
     if (code < 0) return fail("avcodec_open2(gif)", code);
@@ -263,7 +271,8 @@ std::string VideoEncoder::State::set_up_gif() {
   const std::string rgb_source = "video_size=" + size_text(settings.width, settings.height) +
                                  ":pix_fmt=rgb24:time_base=1/100:pixel_aspect=1/1";
   if (std::string failure =
-          palette_stats.build("[in0]palettegen=stats_mode=full[out]", {rgb_source});
+          palette_stats.build("[in0]palettegen=stats_mode=full" + max_colors_option() + "[out]",
+                              {rgb_source});
       !failure.empty()) {
     return error = path + ": " + failure;
   }
@@ -324,6 +333,23 @@ std::string VideoEncoder::State::take_gif_frame(const Image& image) {
   return {};
 }
 
+// palettegen's colour count: none at 256, its default, so the filter text (and the bytes) of a
+// scene without gif_colors stay as they were. palettegen keeps one of them for transparency.
+std::string VideoEncoder::State::max_colors_option() const {
+  if (settings.gif_colors == 256) return {};
+  return ":max_colors=" + std::to_string(settings.gif_colors);
+}
+
+// Ordered (Bayer) dithering by default: a still area keeps its pattern from frame to frame,
+// where error diffusion's patterns crawl whenever anything in the frame moves, and smooth
+// gradients (the sky, a lit face) show no bands. Scale 3 of 0..5: a fine pattern that still
+// breaks the bands.
+std::string VideoEncoder::State::dither_options() const {
+  const std::string name = common::gif_dither_name(settings.gif_dither);
+  return "dither=" + name +
+         (settings.gif_dither == common::GifDither::bayer ? ":bayer_scale=3" : "");
+}
+
 // Every spooled frame mapped onto the video's palette and encoded, in order.
 std::string VideoEncoder::State::encode_gif_frames() {
   if (std::string failure = palette_stats.push(0, nullptr); !failure.empty()) {
@@ -334,9 +360,6 @@ std::string VideoEncoder::State::encode_gif_frames() {
   if (const int got = palette_stats.pull(palette.get()); got != 1) {
     return fail("av_buffersink_get_frame(palettegen)", got < 0 ? got : AVERROR_BUG);
   }
-  // Ordered (Bayer) dithering: a still area keeps its pattern from frame to frame, where error
-  // diffusion's patterns crawl whenever anything in the frame moves, and smooth gradients (the
-  // sky, a lit face) show no bands. Scale 3 of 0..5: a fine pattern that still breaks the bands.
   // Only the changed rectangle of each frame is mapped again (diff_mode=rectangle).
   av::FilterGraph mapping;
   const std::string rgb_source = "video_size=" + size_text(settings.width, settings.height) +
@@ -346,7 +369,7 @@ std::string VideoEncoder::State::encode_gif_frames() {
       std::string(av_get_pix_fmt_name(static_cast<AVPixelFormat>(palette->format))) +
       ":time_base=1/100:pixel_aspect=1/1";
   std::string failure =
-      mapping.build("[in0][in1]paletteuse=dither=bayer:bayer_scale=3:diff_mode=rectangle[out]",
+      mapping.build("[in0][in1]paletteuse=" + dither_options() + ":diff_mode=rectangle[out]",
                     {rgb_source, palette_source});
   if (failure.empty()) failure = mapping.push(1, palette.get());
   if (failure.empty()) failure = mapping.push(1, nullptr);

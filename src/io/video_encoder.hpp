@@ -40,6 +40,11 @@ struct VideoSettings {
   // 2 levels RMS of its source (tests/io/video_encoder_test.cpp).
   int vp9_crf = 30;
   bool loop = true;  // GIF: play forever (else once)
+  // GIF: its frames per second as asked (0: fps; more than fps: fps), then as
+  // gif_delay_centiseconds allows; its palette's colours (2 to 256); how frames map onto it.
+  int gif_fps = 0;
+  int gif_colors = 256;
+  common::GifDither gif_dither = common::GifDither::bayer;
   // WebM only: VP9 in yuva420p, its alpha plane from each Image's alpha (which must be there).
   // libvpx codes the alpha as a second stream that the WebM muxer stores in BlockAdditional
   // elements (alpha_mode 1); libavcodec's libvpx-vp9 decoder reads it back, its native vp9

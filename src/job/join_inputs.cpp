@@ -60,6 +60,11 @@ Result<ChunkReport> chunk_fields(const io::JsonValue& report, const fs::path& fo
     chunk.video_names.push_back(fs::path(path.string).filename().string());
   }
   chunk.has_frames = frames_directory->kind == io::JsonValue::Kind::string;
+  if (const io::JsonValue* kept = report.find("kept")) {
+    for (const io::JsonValue& item : kept->items) {
+      if (const io::JsonValue* name = item.find("file")) chunk.kept.push_back(name->string);
+    }
+  }
   chunk.scene = *scene;
   chunk.scene_file = *file;
   chunk.scene_hash = *hash;

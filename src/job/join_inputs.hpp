@@ -26,6 +26,7 @@ struct ChunkReport {
   bool has_frames = false;               // frames/ holds its PNG frames
   std::vector<std::string> video_names;  // its videos' file names in the folder ("spin.mp4")
   std::string renderer;                  // the OpenGL and back end that drew it
+  std::vector<std::string> kept;         // files kept of an earlier render (job/kept_files.hpp)
 };
 
 // Reads `folder`/report.json; errors name the folder and what is missing or malformed.

@@ -75,15 +75,20 @@ Result<std::vector<std::unique_ptr<pipeline::FrameSink>>> open_sinks(const Rende
   }
   for (const io::VideoFormat format :
        scene.output.video ? scene.output.formats : std::vector<io::VideoFormat>{}) {
+    // A GIF of part of the frames is a GIF of its own (its own palette), not a segment.
+    const bool segment = job.partial() && common::joins_in_segments(format);
     const io::VideoSettings settings{.format = format,
                                      .width = scene.render.width,
                                      .height = scene.render.height,
                                      .fps = scene.fps,
                                      .crf = scene.output.crf,
                                      .loop = scene.output.gif_loop,
+                                     .gif_fps = scene.output.gif_fps.value_or(0),
+                                     .gif_colors = scene.output.gif_colors,
+                                     .gif_dither = scene.output.gif_dither,
                                      .alpha = scene.render.transparent,
-                                     .segment = job.partial(),
-                                     .first_frame = job.partial() ? job.first : 0,
+                                     .segment = segment,
+                                     .first_frame = segment ? job.first : 0,
                                      .preset = scene.output.preset};
     const std::string path = job.video_path(folder, format);
     Result<std::unique_ptr<pipeline::FrameSink>> video = pipeline::VideoSink::open(path, settings);
@@ -209,6 +214,20 @@ Result<scene::Scene> scene_as_rendered(scene::Scene written, const RenderOptions
   return scene;
 }
 
+Result<void> check_joinable_formats(const scene::Scene& scene, const std::string& asked_by) {
+  if (!scene.output.video) return {};
+  for (const io::VideoFormat format : scene.output.formats) {
+    if (common::joins_in_segments(format)) continue;
+    const std::string name = io::video_format_name(format);
+    return Error{asked_by + ": " + name +
+                 " is not written in parts (its palette is chosen for the frames it holds, so "
+                 "parts of one do not join): leave it out with --format mp4 or --format webm (or "
+                 "[output] formats), and render the " +
+                 name + " whole, or of a frame range with --frames"};
+  }
+  return {};
+}
+
 Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& options) {
   Result<scene::Scene> overridden = scene_as_rendered(std::move(loaded), options);
   if (!overridden) return Error{overridden.error()};
@@ -216,15 +235,9 @@ Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& opti
   const std::int64_t total = scene::frame_count(scene);
   Result<FrameRange> range = frame_range(options, total);
   if (!range) return Error{range.error()};
-  if (*range != FrameRange{0, total} && scene.output.video) {
-    for (const io::VideoFormat format : scene.output.formats) {
-      if (common::joins_in_segments(format)) continue;
-      const std::string name = io::video_format_name(format);
-      return Error{std::string(options.chunk ? "--chunk" : "--frames") + ": " + name +
-                   " is not written in parts (its palette is chosen for the frames it holds, so "
-                   "parts of one do not join): leave it out with --format mp4 or --format webm, "
-                   "and render the " +
-                   name + " whole"};
+  if (options.chunk) {
+    if (const Result<void> joinable = check_joinable_formats(scene, "--chunk"); !joinable) {
+      return Error{joinable.error()};
     }
   }
   if (options.chunk) {

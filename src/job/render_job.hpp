@@ -75,6 +75,11 @@ struct RenderJob {
 // break them). Errors name the scene file and the key.
 Result<scene::Scene> scene_as_rendered(scene::Scene scene, const RenderOptions& options);
 
+// Succeeds when every video the scene writes can be written in parts that `tumble join` joins
+// (not a GIF: its palette is its own frames'); else the error, after `asked_by` ("--chunk",
+// "plan"). One home for the rule of `render --chunk` and `tumble plan`.
+Result<void> check_joinable_formats(const scene::Scene& scene, const std::string& asked_by);
+
 // scene_as_rendered, with its frame range (all, --frames or --chunk) and shaders.
 Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& options);
 

@@ -32,11 +32,26 @@ std::vector<common::VideoFormat> read_formats(TableReader& in) {
   return formats;
 }
 
+common::GifDither read_dither(TableReader& in) {
+  const std::string name = in.required_string("gif_dither");
+  for (const common::GifDither dither : common::kAllGifDithers) {
+    if (name == common::gif_dither_name(dither)) return dither;
+  }
+  in.fail("gif_dither",
+          "unknown dithering " + in_quotes(name) + " (\"none\", \"bayer\" or \"floyd_steinberg\")");
+}
+
 }  // namespace
 
 void read_output_choices(TableReader& in, OutputSpec& output) {
   if (in.has("formats")) output.formats = read_formats(in);
   output.gif_loop = in.optional_bool("gif_loop", output.gif_loop);
+  if (in.has("gif_fps")) {
+    output.gif_fps = static_cast<int>(in.optional_integer("gif_fps", 0, 1, common::kMaxGifFps));
+  }
+  output.gif_colors = static_cast<int>(in.optional_integer(
+      "gif_colors", output.gif_colors, common::kMinGifColors, common::kMaxGifColors));
+  if (in.has("gif_dither")) output.gif_dither = read_dither(in);
   if (in.has("poster_time")) {
     output.poster_time = in.required_number("poster_time");
     require_non_negative(in, "poster_time", *output.poster_time);

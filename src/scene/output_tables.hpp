@@ -1,5 +1,6 @@
 // The keys that choose what a render writes beyond PNG frames and an MP4: [output] formats,
-// gif_loop and poster_time, and [render] background = "transparent". Internal to src/scene/.
+// gif_loop, gif_fps, gif_colors, gif_dither and poster_time, and [render] background =
+// "transparent". Internal to src/scene/.
 #pragma once
 
 #include "scene/scene.hpp"
@@ -7,7 +8,7 @@
 
 namespace tumble::scene::detail {
 
-// [output] formats, gif_loop and poster_time (`in` is the [output] table), into `output`.
+// [output] formats, the gif_ keys and poster_time (`in` is the [output] table), into `output`.
 void read_output_choices(TableReader& in, OutputSpec& output);
 
 // [render] background: a colour, or "transparent" (`in` is the [render] table).

@@ -90,7 +90,20 @@ TEST_F(JoinCommand, ThreeUnevenChunksJoinIntoTheWholeRender) {
   const Outcome run = join({c, a, b});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const fs::path joined = dir_ / "joined";
-  EXPECT_EQ(names_in(joined), (std::vector<std::string>{"frames", "report.json", "spin.mp4"}));
+  EXPECT_NE(read_file(joined / "report.json").find("\"version\": \"" TUMBLE_VERSION "\""),
+            std::string::npos);
+  EXPECT_EQ(names_in(joined),
+            (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png", "report.json",
+                                      "spin.mp4"}));
+  // The stills a whole render writes, byte for byte: the poster of the chunk that drew its frame
+  // (7, the middle: chunk b) and the contact sheet composed again from the joined frames.
+  for (const char* still : {"poster.png", "contact_sheet.png"}) {
+    ASSERT_TRUE(fs::exists(whole / still)) << still;
+    EXPECT_EQ(read_file(joined / still), read_file(whole / still)) << still;
+  }
+  EXPECT_FALSE(fs::exists(a / "poster.png"));  // a chunk without the poster frame writes none
+  EXPECT_NE(run.err.find("poster.png, contact_sheet.png, report.json"), std::string::npos)
+      << run.err;
 
   // The PNG frames: the same names and the same bytes.
   ASSERT_EQ(names_in(joined / "frames"), names_in(whole / "frames"));
@@ -143,6 +156,21 @@ TEST_F(JoinCommand, ThreeUnevenChunksJoinIntoTheWholeRender) {
             std::string::npos);
   EXPECT_NE(report.find("\"joined_from\": ["), std::string::npos);
   EXPECT_NE(report.find("\"first\": 7, \"end\": 8"), std::string::npos);
+}
+
+// Chunks without PNG frames still give the whole render's poster; the contact sheet, which needs
+// the frames' pixels, is left out, and the join says so.
+TEST_F(JoinCommand, ChunksWithoutFramesGiveThePosterAndSayThereIsNoContactSheet) {
+  const fs::path whole = render("whole", "--no-frames");
+  const fs::path a = render("a", "--frames 0:9 --no-frames"),
+                 b = render("b", "--frames 9:15 --no-frames");
+  const Outcome run = join({a, b});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const fs::path joined = dir_ / "joined";
+  EXPECT_EQ(names_in(joined), (std::vector<std::string>{"poster.png", "report.json", "spin.mp4"}));
+  EXPECT_EQ(read_file(joined / "poster.png"), read_file(whole / "poster.png"));
+  EXPECT_NE(run.err.find("no contact_sheet.png: the chunks hold no PNG frames"), std::string::npos)
+      << run.err;
 }
 
 // --chunk I/N renders line I of `plan --chunks N` into <directory>.chunk-I-of-N, and the chunks
@@ -210,7 +238,8 @@ TEST_F(JoinCommand, ChunksWithAnMp4AndAWebmJoinIntoBoth) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const fs::path joined = dir_ / "joined";
   EXPECT_EQ(names_in(joined),
-            (std::vector<std::string>{"frames", "report.json", "spin.mp4", "spin.webm"}));
+            (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png", "report.json",
+                                      "spin.mp4", "spin.webm"}));
   const auto webm = tumble::testing::read_video((joined / "spin.webm").string());
   ASSERT_EQ(webm.error, "");
   ASSERT_EQ(webm.pictures.size(), 15u);
@@ -269,17 +298,21 @@ TEST_F(JoinCommand, RefusesATruncatedWebmSegment) {
   expect_refused({a, c}, webm.string());
 }
 
-// A GIF's palette is its own frames': --frames and --chunk refuse it before rendering anything.
-TEST_F(JoinCommand, APartOfAGifIsRefusedBeforeRendering) {
-  for (const std::string part : {"--frames 0:7", "--chunk 1/2"}) {
-    const Outcome run =
-        tumble("render " + scene() + " " + part + " --format mp4,gif -o " + path("out"));
-    EXPECT_EQ(run.exit_code, 2) << part;
-    EXPECT_NE(run.err.find(part.substr(0, part.find(' ')) + ": gif is not written in parts"),
-              std::string::npos)
-        << run.err;
-    EXPECT_FALSE(fs::exists(dir_ / "out")) << part;
-  }
+// A GIF's palette is its own frames': --chunk refuses it before rendering anything, and so does
+// `tumble plan` of a scene that writes one (every chunk of it would be refused on the farm).
+TEST_F(JoinCommand, AChunkOfAGifIsRefusedBeforeRendering) {
+  const Outcome run = tumble("render " + scene() + " --chunk 1/2 --format mp4,gif -o " + path("out"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--chunk: gif is not written in parts"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  const std::string gif_scene =
+      write("gif.toml", kScene + "[output]\nformats = [\"mp4\", \"gif\"]\n").string();
+  const Outcome plan = tumble("plan " + gif_scene + " --chunks 2");
+  EXPECT_EQ(plan.exit_code, 2);
+  EXPECT_EQ(plan.out, "");
+  EXPECT_NE(plan.err.find("tumble: plan: " + gif_scene + ": gif is not written in parts"),
+            std::string::npos)
+      << plan.err;
 }
 
 TEST_F(JoinCommand, ChunkRefusesFramesBesideItAndAChunkPastTheFrames) {

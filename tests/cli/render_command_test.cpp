@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "diff/image_diff.hpp"
@@ -434,6 +435,144 @@ TEST_F(RenderCommand, SceneBackendKeyChoosesTheOpenGLAndTheOptionOverridesIt) {
   };
   EXPECT_NE(renderer("scene", "").find("(EGL surfaceless)\""), std::string::npos);
   EXPECT_NE(renderer("option", "--backend osmesa").find("(OSMesa)\""), std::string::npos);
+}
+
+// Every file of a render folder below `folder` (frames/ included), by name, with its bytes.
+std::map<std::string, std::string> files_of(const fs::path& folder) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    if (entry.is_regular_file()) {
+      files[fs::relative(entry.path(), folder).string()] = read_file(entry.path());
+    }
+  }
+  return files;
+}
+
+// The README's advice: a small GIF rendered in a run of its own into the same -o. The second
+// run writes the GIF and keeps every file of the first that it does not write, byte for byte,
+// and report.json says which render each kept file came from.
+TEST_F(RenderCommand, AGifRenderedApartKeepsTheEarlierMp4FramesAndStills) {
+  const std::string small = write("small.toml", tumble::testing::spin_scene(64, 36)).string();
+  ASSERT_EQ(tumble("render -q " + small + " --format mp4 -o " + path("out")).exit_code, 0);
+  std::map<std::string, std::string> first = files_of(dir_ / "out/spin");
+  first.erase("report.json");
+  ASSERT_EQ(first.size(), 15u + 3u);  // frames, spin.mp4, poster.png, contact_sheet.png
+
+  const Outcome gif = tumble("render " + small +
+                             " --format gif --width 48 --height 28 --no-frames -o " + path("out"));
+  ASSERT_EQ(gif.exit_code, 0) << gif.err;
+  std::map<std::string, std::string> second = files_of(dir_ / "out/spin");
+  ASSERT_TRUE(second.count("spin.gif"));
+  second.erase("spin.gif");
+  second.erase("report.json");
+  EXPECT_EQ(second, first);  // the same names and the same bytes
+  EXPECT_NE(gif.err.find(path("out/spin") + "/: spin.gif, report.json\n"), std::string::npos)
+      << gif.err;
+  EXPECT_NE(gif.err.find("kept of the earlier render of this scene in " + path("out/spin") +
+                         "/: frames/, spin.mp4, poster.png, contact_sheet.png\n"),
+            std::string::npos)
+      << gif.err;
+  const auto report = tumble::io::parse_json(read_file(dir_ / "out/spin/report.json"));
+  ASSERT_TRUE(report) << report.error();
+  const tumble::io::JsonValue* kept = report->find("kept");
+  ASSERT_TRUE(kept);
+  ASSERT_EQ(kept->items.size(), 4u);
+  EXPECT_EQ(kept->items[1].find("file")->string, "spin.mp4");
+  EXPECT_EQ(kept->items[1].find("from")->find("width")->number, 64);
+  EXPECT_EQ(report->find("videos")->text, "{\"gif\": \"" + path("out/spin/spin.gif") + "\"}");
+  EXPECT_EQ(report->find("frames_directory")->kind, tumble::io::JsonValue::Kind::null);
+
+  // A third run at the first size writes its own MP4 and keeps the GIF of the second, whose
+  // origin is the second run's size, and the frames of the first.
+  const Outcome mp4 = tumble("render -q " + small + " --format mp4 --no-frames -o " + path("out"));
+  ASSERT_EQ(mp4.exit_code, 0) << mp4.err;
+  const auto third = tumble::io::parse_json(read_file(dir_ / "out/spin/report.json"));
+  ASSERT_TRUE(third) << third.error();
+  const tumble::io::JsonValue& kept_third = *third->find("kept");
+  ASSERT_EQ(kept_third.items.size(), 2u);
+  EXPECT_EQ(kept_third.items[0].find("file")->string, "frames");
+  EXPECT_EQ(kept_third.items[0].find("from")->find("width")->number, 64);
+  EXPECT_EQ(kept_third.items[1].find("file")->string, "spin.gif");
+  EXPECT_EQ(kept_third.items[1].find("from")->find("width")->number, 48);
+  EXPECT_TRUE(fs::exists(dir_ / "out/spin/poster.png"));  // its own, with the MP4
+  EXPECT_EQ(files_of(dir_ / "out/spin").size(), 15u + 5u);
+}
+
+// Another scene file in the folder's place: replaced as a whole, as before, and said.
+TEST_F(RenderCommand, ARenderOfAnotherSceneReplacesTheFolderWholeAndSaysSo) {
+  const std::string small = write("small.toml", tumble::testing::spin_scene(64, 36)).string();
+  ASSERT_EQ(tumble("render -q " + small + " --format mp4 -o " + path("out")).exit_code, 0);
+  const std::string edited =
+      write("small.toml", tumble::testing::spin_scene(64, 36) + "# edited\n").string();
+  const Outcome gif = tumble("render " + edited + " --format gif --no-frames -o " + path("out"));
+  ASSERT_EQ(gif.exit_code, 0) << gif.err;
+  EXPECT_NE(gif.err.find(path("out/spin") + " holds a render of another scene file"),
+            std::string::npos)
+      << gif.err;
+  EXPECT_NE(gif.err.find("it is replaced as a whole, nothing of it kept"), std::string::npos);
+  std::map<std::string, std::string> files = files_of(dir_ / "out/spin");
+  EXPECT_EQ(files.size(), 4u);  // spin.gif, poster.png, contact_sheet.png, report.json
+  EXPECT_TRUE(files.count("spin.gif"));
+  EXPECT_FALSE(files.count("spin.mp4"));
+  EXPECT_NE(files["report.json"].find("\"kept\": []"), std::string::npos);
+}
+
+TEST_F(RenderCommand, VersionFlagAndReportNameTheProjectVersion) {
+  const Outcome version = tumble("--version");
+  EXPECT_EQ(version.exit_code, 0) << version.err;
+  EXPECT_EQ(version.out, "tumble " TUMBLE_VERSION "\n");
+  EXPECT_EQ(std::string(TUMBLE_VERSION).find_first_not_of("0123456789."), std::string::npos);
+  ASSERT_EQ(tumble("render -q --no-video --frames 0:1 " + scene() + " -o " + path("o")).exit_code,
+            0);
+  EXPECT_NE(read_file(dir_ / "o/spin/report.json").find("\"version\": \"" TUMBLE_VERSION "\""),
+            std::string::npos);
+}
+
+// 2.6 s at 25 frames/s, 64x36: 65 frames. At 25 frames/s a GIF shows every frame (4 cs each).
+std::string gif_scene(const std::string& output) {
+  std::string text = tumble::testing::spin_scene(64, 36, tumble::testing::kTorqueX);
+  text.replace(text.find("duration = 0.5"), 14, "duration = 2.6");
+  text.replace(text.find("fps = 30"), 8, "fps = 25");
+  return text + "[output]\nformats = [\"gif\"]\nframes = false\n" + output;
+}
+
+// --frames A:B writes a GIF of those frames alone, with a palette of its own.
+TEST_F(RenderCommand, AGifOfAFrameRangeHoldsThoseFrames) {
+  const Outcome run = tumble("render -q " + write("gif.toml", gif_scene("")).string() +
+                             " --frames 30:60 -o " + path("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto gif = tumble::testing::read_video(path("out/spin/spin.gif"));
+  ASSERT_EQ(gif.error, "");
+  EXPECT_EQ(gif.codec, AV_CODEC_ID_GIF);
+  EXPECT_EQ(gif.pictures.size(), 30u);
+  EXPECT_NEAR(gif.duration, 30 * 0.04, 1e-9);
+}
+
+// gif_colors, gif_fps and gif_dither change the GIF as they say; a scene without them gives the
+// GIF it gave before they existed (its filters' text is unchanged; see io/video_encoder.cpp).
+TEST_F(RenderCommand, GifKeysChooseColoursRateAndDithering) {
+  const auto gif_of = [&](const std::string& name, const std::string& output) {
+    const Outcome run = tumble("render -q " + write(name + ".toml", gif_scene(output)).string() +
+                               " --frames 0:30 -o " + path(name));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return read_file(dir_ / name / "spin/spin.gif");
+  };
+  const std::string full = gif_of("full", "");
+  const std::string few = gif_of("few", "gif_colors = 32\n");
+  std::printf("[ measured ] GIF of 30 frames at 64x36: %zu bytes at 256 colours, %zu at 32\n",
+              full.size(), few.size());
+  EXPECT_LT(few.size(), full.size());
+  EXPECT_EQ(gif_of("same", "gif_colors = 256\ngif_dither = \"bayer\"\n"), full);
+  EXPECT_NE(gif_of("plain", "gif_dither = \"none\"\n"), full);
+  EXPECT_NE(gif_of("diffused", "gif_dither = \"floyd_steinberg\"\n"), full);
+  // 10 frames/s: a GIF frame every 10 cs shows video frame round(2.5 j), j = 0 .. 11, of 30.
+  gif_of("slow", "gif_fps = 10\n");
+  const auto slow = tumble::testing::read_video(path("slow/spin/spin.gif"));
+  ASSERT_EQ(slow.error, "");
+  EXPECT_EQ(slow.pictures.size(), 12u);
+  EXPECT_NE(read_file(dir_ / "slow/spin/report.json")
+                .find("\"gif\": {\"fps\": 10, \"colors\": 256, \"dither\": \"bayer\"}"),
+            std::string::npos);
 }
 
 }  // namespace
