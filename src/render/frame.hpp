@@ -133,6 +133,22 @@ struct Label {
   double opacity = 1.0;                              // of glyphs and box together (0-1)
 };
 
+// A filled rectangle on the picture (a plot's background), in px at 720 rows from the frame's
+// top-left corner, x right, y down: it scales with the frame's height, as Text does.
+struct Panel {
+  Eigen::Vector2d corner = Eigen::Vector2d::Zero();  // top-left
+  Eigen::Vector2d size = Eigen::Vector2d::Zero();    // width, height
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+};
+
+// A line through points on the picture (a plot's curve, axis or tick), antialiased, `width` px
+// at 720 rows wide, in px at 720 rows from the frame's top-left corner as Panel.
+struct Stroke {
+  std::vector<Eigen::Vector2d> points;
+  double width = 2.0;
+  Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
+};
+
 // Fixed for a whole render: what the scene asks for (common/render_settings.hpp, with the back
 // end that draws it), and the font its text is drawn in.
 struct RenderSettings : common::RenderSettings {
@@ -161,6 +177,10 @@ struct FrameView {
   std::vector<Polyline> lines;
   std::vector<Arrow> arrows;
   std::vector<Label> labels;
+  // Drawn over the picture after lines and arrows, before labels and texts: panels, then
+  // strokes, each in order (sketch_layer.hpp).
+  std::vector<Panel> panels;
+  std::vector<Stroke> strokes;
   std::vector<Text> texts;  // drawn in order, each over the ones before
 };
 

@@ -18,6 +18,7 @@
 #include "render/overlay_geometry.hpp"
 #include "render/overlay_layer.hpp"
 #include "render/shader_program.hpp"
+#include "render/sketch_layer.hpp"
 #include "render/text_layer.hpp"
 
 namespace tumble::render {
@@ -700,6 +701,7 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   std::vector<PixelBox> text_boxes;
   if (text) text_boxes = r.text->lay_out(r.texts_with_labels(view, frame));
   r.read_pixels(out, text_boxes);
+  if (!view.panels.empty() || !view.strokes.empty()) draw_sketch(view.panels, view.strokes, out);
   if (text) r.text->draw(out);
 }
 

@@ -267,6 +267,115 @@ AxesOverlay read_axes(TableReader& in, const Scene& scene) {
   return out;
 }
 
+// Colours of a plot's curves, in turn: none of them the axes' red, green or blue.
+const Rgba kPlotColors[] = {Rgba(0.0, 0.45, 0.70, 1.0), Rgba(0.84, 0.37, 0.0, 1.0),
+                            Rgba(0.0, 0.62, 0.45, 1.0), Rgba(0.80, 0.47, 0.65, 1.0),
+                            Rgba(0.35, 0.35, 0.38, 1.0), Rgba(0.90, 0.62, 0.0, 1.0)};
+constexpr std::size_t kMaxPlotValues = 8;
+constexpr double kMaxPlotWindow = 600.0;  // s
+
+// The strings of the array at `key`, at most `limit`.
+std::vector<std::string> read_strings(TableReader& in, std::string_view key, std::size_t limit) {
+  const toml::array* array = in.table().get(key)->as_array();
+  if (!array || array->empty() || array->size() > limit) {
+    in.fail(key, "expected an array of 1 to " + std::to_string(limit) + " strings");
+  }
+  std::vector<std::string> out;
+  for (const toml::node& node : *array) {
+    if (!node.is_string()) in.fail(key, "expected strings, found " + std::string(type_name(node)));
+    out.push_back(*node.value<std::string>());
+  }
+  return out;
+}
+
+PlotOverlay read_plot(TableReader& in, const Scene& scene) {
+  PlotOverlay out;
+  in.required("values");
+  const std::vector<std::string> values = read_strings(in, "values", kMaxPlotValues);
+  for (const std::string& value : values) {
+    const Result<TextTemplate> parsed =
+        parse_text_template(value, body_names(scene), joint_names(scene));
+    if (!parsed) in.fail("values", parsed.error());
+    if (parsed->values.size() != 1 || !parsed->pieces[0].empty() || !parsed->pieces[1].empty()) {
+      in.fail("values", "each value is one placeholder alone, such as \"{cube.kinetic_energy}\" "
+                        "(found " + in_quotes(value) + ")");
+    }
+    const Placeholder& p = parsed->values[0];
+    const bool number =
+        (p.source == Placeholder::Source::body && (p.component >= 0 || !is_vector(p.quantity))) ||
+        (p.source == Placeholder::Source::joint &&
+         (p.component >= 0 || p.joint_quantity != JointQuantity::force));
+    if (!number) {
+      in.fail("values", value + ": a plot draws numbers: a body's or a joint's quantity, a "
+                                "vector's with .x, .y or .z");
+    }
+    out.values.push_back(p);
+    out.labels.push_back(value.substr(1, value.size() - 2));
+  }
+  if (in.has("labels")) {
+    out.labels = read_strings(in, "labels", kMaxPlotValues);
+    if (out.labels.size() != out.values.size()) {
+      in.fail("labels", "one label per value: " + std::to_string(out.values.size()) +
+                            " values, " + std::to_string(out.labels.size()) + " labels");
+    }
+  }
+  for (std::size_t i = 0; i < out.values.size(); ++i) {
+    out.colors.push_back(kPlotColors[i % std::size(kPlotColors)]);
+  }
+  if (in.has("colors")) {
+    const toml::array* array = in.table().get("colors")->as_array();
+    if (!array || array->size() != out.values.size()) {
+      in.fail("colors", "expected one colour per value (" + std::to_string(out.values.size()) +
+                            ")");
+    }
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      const Vec3 rgb = in.color("colors", *array->get(i));
+      out.colors[i] = Rgba(rgb.x(), rgb.y(), rgb.z(), 1.0);
+    }
+  }
+  out.window = in.optional_number("window", out.window);
+  if (!(out.window > 0.0 && out.window <= kMaxPlotWindow)) {
+    in.fail("window", "must be more than 0 and at most " + format_number(kMaxPlotWindow) +
+                          " s (got " + format_number(out.window) + ")");
+  }
+  if (in.has("y_min")) out.y_min = in.optional_number("y_min", 0.0);
+  if (in.has("y_max")) out.y_max = in.optional_number("y_max", 0.0);
+  if (out.y_min.has_value() != out.y_max.has_value()) {
+    in.fail(out.y_min ? "y_min" : "y_max", "give y_min and y_max together, or neither (the "
+                                           "values' range)");
+  }
+  if (out.y_min && !(*out.y_min < *out.y_max)) {
+    in.fail("y_min", "y_min (" + format_number(*out.y_min) + ") must be below y_max (" +
+                         format_number(*out.y_max) + ")");
+  }
+  out.unit = in.optional_string("unit", out.unit);
+  const std::string anchor = in.optional_string("anchor", "top-right");
+  const std::optional<common::Anchor> known = common::anchor_from_name(anchor);
+  if (!known) {
+    in.fail("anchor", "unknown anchor " + in_quotes(anchor) +
+                          " (expected top-left, top, top-right, left, centre, right, "
+                          "bottom-left, bottom or bottom-right)");
+  }
+  out.anchor = *known;
+  out.offset = in.has("offset") ? read_offset(in) : default_offset(out.anchor);
+  if (in.has("size")) {
+    const toml::array* array = in.table().get("size")->as_array();
+    if (!array || array->size() != 2) in.fail("size", "expected [width, height] (px at 720 rows)");
+    out.size = Eigen::Vector2d(in.number("size", *array->get(0)), in.number("size", *array->get(1)));
+    if (!(out.size.x() >= 120.0 && out.size.y() >= 80.0 && out.size.maxCoeff() <= 4000.0)) {
+      in.fail("size", "must be at least [120, 80] and at most 4000 px at 720 rows");
+    }
+  }
+  out.text_size = in.optional_number("text_size", out.text_size);
+  if (!(out.text_size >= 6.0 && out.text_size <= 0.25 * out.size.y())) {
+    in.fail("text_size", "must be at least 6 and at most a quarter of the plot's height (" +
+                             format_number(0.25 * out.size.y()) + " px at 720 rows)");
+  }
+  out.background = in.optional_rgba("background", out.background);
+  out.ink = in.optional_rgba("color", out.ink);
+  return out;
+}
+
 OverlaySpec read_overlay(TableReader& in, const Scene& scene) {
   const std::string kind = in.required_string("kind");
   OverlaySpec out;
@@ -278,9 +387,11 @@ OverlaySpec read_overlay(TableReader& in, const Scene& scene) {
     out = read_trail(in, scene);
   } else if (kind == "axes") {
     out = read_axes(in, scene);
+  } else if (kind == "plot") {
+    out = read_plot(in, scene);
   } else {
-    in.fail("kind",
-            "unknown overlay kind " + in_quotes(kind) + " (expected text, vector, trail or axes)");
+    in.fail("kind", "unknown overlay kind " + in_quotes(kind) +
+                        " (expected text, vector, trail, axes or plot)");
   }
   in.reject_unknown_keys();
   return out;

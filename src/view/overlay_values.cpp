@@ -1,5 +1,6 @@
 #include "view/overlay_values.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <variant>
 
@@ -76,6 +77,23 @@ physics::Vec3 body_quantity(BodyQuantity quantity, const StepPair& steps, std::s
   const physics::Vec3 before = body_quantity(quantity, steps.previous[body]);
   if (steps.alpha == 0.0) return before;
   return before + steps.alpha * (body_quantity(quantity, steps.current[body]) - before);
+}
+
+double placeholder_number(const scene::Placeholder& value, const StepPair& steps,
+                          std::span<const JointValue> joints) {
+  const int component = std::max(value.component, 0);
+  if (value.source == scene::Placeholder::Source::joint) {
+    const JointValue& joint = joints[value.joint];
+    switch (value.joint_quantity) {
+      case scene::JointQuantity::angle:
+        return joint.coordinate;
+      case scene::JointQuantity::speed:
+        return joint.rate;
+      case scene::JointQuantity::force:
+        return joint.force[component];
+    }
+  }
+  return body_quantity(value.quantity, steps, value.body)[component];
 }
 
 std::string format_value(const scene::Placeholder& value, const StepPair& steps, double t,

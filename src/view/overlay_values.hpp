@@ -35,6 +35,11 @@ physics::Vec3 body_quantity(scene::BodyQuantity quantity, const StepPair& steps,
 // `text` padded to the placeholder's width with its fill and alignment, as Python pads.
 std::string padded(std::string text, const scene::Placeholder& as);
 
+// The number a placeholder of a body's or joint's number (a scalar quantity, or a vector's
+// component) stands for, as format_value shows it before formatting.
+double placeholder_number(const scene::Placeholder& value, const StepPair& steps,
+                          std::span<const JointValue> joints = {});
+
 // One placeholder as printf's "%<sign>.<precision><conversion>" writes it, padded to its width;
 // a whole vector as "(x, y, z)", each number padded. `steps` are every body's around time t (s),
 // the frame's number `frame`, `joints` every joint's values there (joint_view.hpp).

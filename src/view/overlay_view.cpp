@@ -91,13 +91,15 @@ bool overlays_need_font(const scene::Scene& scene) {
   return std::any_of(scene.overlays.begin(), scene.overlays.end(), [](const auto& overlay) {
     const auto* vector = std::get_if<scene::VectorOverlay>(&overlay);
     return std::holds_alternative<scene::TextOverlay>(overlay) ||
+           std::holds_alternative<scene::PlotOverlay>(overlay) ||
            (vector && !vector->label.empty());
   });
 }
 
 bool overlays_need_lines(const scene::Scene& scene) {
   return std::any_of(scene.overlays.begin(), scene.overlays.end(), [](const auto& overlay) {
-    return !std::holds_alternative<scene::TextOverlay>(overlay);
+    return !std::holds_alternative<scene::TextOverlay>(overlay) &&
+           !std::holds_alternative<scene::PlotOverlay>(overlay);  // drawn on the CPU
   });
 }
 
@@ -114,6 +116,9 @@ std::vector<std::string> missing_character_warnings(const scene::Scene& scene,
       for (const std::string& piece : text->text.pieces) fixed += piece;
     } else if (const auto* vector = std::get_if<scene::VectorOverlay>(&overlay)) {
       fixed += vector->label;
+    } else if (const auto* plot = std::get_if<scene::PlotOverlay>(&overlay)) {
+      for (const std::string& label : plot->labels) fixed += label;
+      fixed += plot->unit;
     }
   }
   std::vector<std::string> out;
@@ -127,20 +132,34 @@ std::vector<std::string> missing_character_warnings(const scene::Scene& scene,
 }
 
 OverlayItems::OverlayItems(const scene::Scene& scene)
-    : scene_(scene), trails_(scene.overlays.size()) {}
+    : scene_(scene), trails_(scene.overlays.size()), plots_(scene.overlays.size()) {}
 
 std::int64_t OverlayItems::frames_of_history() const {
   double longest = 0.0;  // s
   for (const scene::OverlaySpec& overlay : scene_.overlays) {
     if (const auto* trail = std::get_if<scene::TrailOverlay>(&overlay)) {
       longest = std::max(longest, trail->length);
+    } else if (const auto* plot = std::get_if<scene::PlotOverlay>(&overlay)) {
+      longest = std::max(longest, plot->window);
     }
   }
   return static_cast<std::int64_t>(std::ceil(longest * scene_.fps));
 }
 
-void OverlayItems::record(const std::vector<physics::BodyState>& states, double t) {
+void OverlayItems::record(const std::vector<physics::BodyState>& states, const StepPair& steps,
+                          double t, std::span<const JointValue> joints) {
   for (std::size_t i = 0; i < scene_.overlays.size(); ++i) {
+    if (const auto* plot = std::get_if<scene::PlotOverlay>(&scene_.overlays[i])) {
+      std::deque<PlotSample>& samples = plots_[i];
+      PlotSample sample{.t = t, .values = {}};
+      for (const scene::Placeholder& value : plot->values) {
+        sample.values.push_back(placeholder_number(value, steps, joints));
+      }
+      samples.push_back(std::move(sample));
+      // A sample just before the window's start stays: the curve reaches its left edge.
+      while (samples.size() > 2 && samples[1].t < t - plot->window - 1e-9) samples.pop_front();
+      continue;
+    }
     const auto* trail = std::get_if<scene::TrailOverlay>(&scene_.overlays[i]);
     if (!trail) continue;
     std::deque<TrailPoint>& points = trails_[i];
@@ -171,6 +190,9 @@ void OverlayItems::add_to(const std::vector<physics::BodyState>& states, const S
       add_vector(*vector, scene_, states, steps, t, joints, contacts, view);
     } else if (const auto* axes = std::get_if<scene::AxesOverlay>(&overlay)) {
       add_axes(*axes, states, view);
+    } else if (const auto* plot = std::get_if<scene::PlotOverlay>(&overlay)) {
+      const std::vector<PlotSample> samples(plots_[i].begin(), plots_[i].end());
+      add_plot(*plot, samples, t, scene_.render.width, scene_.render.height, view);
     } else if (const auto* trail = std::get_if<scene::TrailOverlay>(&overlay)) {
       // Opacity falls from 1 at the body to 0 at `length` seconds old.
       render::Polyline line{.points = {}, .opacity = {}, .color = trail->color};

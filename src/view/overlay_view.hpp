@@ -14,6 +14,7 @@
 #include "scene/scene.hpp"
 #include "view/joint_view.hpp"
 #include "view/overlay_values.hpp"
+#include "view/plot_view.hpp"
 
 namespace tumble::view {
 
@@ -35,13 +36,15 @@ class OverlayItems {
  public:
   explicit OverlayItems(const scene::Scene& scene);  // `scene` must outlive it
 
-  // Frames before the first frame drawn whose states the trails need: a render that starts at
-  // frame A record()s frames A - frames_of_history() .. A - 1 first (not before 0), so that a
-  // chunk of a video draws the same trail as the whole video.
+  // Frames before the first frame drawn whose states the trails and plots need: a render that
+  // starts at frame A record()s frames A - frames_of_history() .. A - 1 first (not before 0), so
+  // that a chunk of a video draws the same trail and plot as the whole video.
   std::int64_t frames_of_history() const;
 
-  // Takes in the bodies' states at time t (s) for the trails. Times increase from call to call.
-  void record(const std::vector<physics::BodyState>& states, double t);
+  // Takes in the bodies' drawn states at time t (s) for the trails, and the values of the steps
+  // around t (StepPair) and of the joints there for the plots. Times increase from call to call.
+  void record(const std::vector<physics::BodyState>& states, const StepPair& steps, double t,
+              std::span<const JointValue> joints = {});
 
   // Adds the overlays' items for frame `frame` at time t (s), whose drawn states were just
   // record()ed: drawn where `states` put the bodies, showing the values of the physics steps
@@ -61,6 +64,7 @@ class OverlayItems {
   };
   const scene::Scene& scene_;
   std::vector<std::deque<TrailPoint>> trails_;  // per overlay; empty but for trails
+  std::vector<std::deque<PlotSample>> plots_;   // per overlay; empty but for plots
 };
 
 }  // namespace tumble::view

@@ -230,16 +230,27 @@ SimulatedFrames::SimulatedFrames(const scene::Scene& scene, const Framing& frami
   if (!scene.overlays.empty()) overlays_.emplace(scene);
 }
 
+std::vector<JointValue> SimulatedFrames::joint_values_at(double t) const {
+  if (scene_.joints.empty()) return {};
+  const std::int64_t n = simulation_.step_count();
+  return joint_values(simulation_.joints(), simulation_.previous(), simulation_.current(),
+                      simulation_.alpha_at(t),
+                      simulation_.time_of_step(std::max<std::int64_t>(n - 1, 0)),
+                      simulation_.time_of_step(n));
+}
+
 Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
   const double t = static_cast<double>(frame) / scene_.fps;  // s
   if (overlays_ && !started_) {
-    // The trails' past, as a render from frame 0 would have recorded it.
+    // The trails' and plots' past, as a render from frame 0 would have recorded it.
     for (std::int64_t k = std::max<std::int64_t>(0, frame - overlays_->frames_of_history());
          k < frame; ++k) {
       const double past = static_cast<double>(k) / scene_.fps;  // s
       const auto states = checked_states_at(simulation_, scene_, past, stop_requested_);
       if (!states) return Error{states.error()};
-      overlays_->record(*states, past);
+      const StepPair steps{simulation_.previous(), simulation_.current(),
+                           simulation_.alpha_at(past)};
+      overlays_->record(*states, steps, past, joint_values_at(past));
     }
   }
   started_ = true;
@@ -247,20 +258,12 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};
   render::FrameView view = frame_view(scene_, framing_, *states, t);
-  // The values shown: of the two steps around t, each interpolated as itself.
-  const StepPair steps{simulation_.previous(), simulation_.current(), simulation_.alpha_at(t)};
-  std::vector<JointValue> joints;
-  if (!scene_.joints.empty()) {
-    add_joints(scene_, simulation_.joints(), *states, view);
-    if (overlays_) {
-      const std::int64_t n = simulation_.step_count();
-      joints = joint_values(simulation_.joints(), steps.previous, steps.current, steps.alpha,
-                            simulation_.time_of_step(std::max<std::int64_t>(n - 1, 0)),
-                            simulation_.time_of_step(n));
-    }
-  }
+  if (!scene_.joints.empty()) add_joints(scene_, simulation_.joints(), *states, view);
   if (overlays_) {
-    overlays_->record(*states, t);
+    // The values shown: of the two steps around t, each interpolated as itself.
+    const StepPair steps{simulation_.previous(), simulation_.current(), simulation_.alpha_at(t)};
+    const std::vector<JointValue> joints = joint_values_at(t);
+    overlays_->record(*states, steps, t, joints);
     std::vector<BodyContact> contacts;
     if (overlays_->needs_contacts()) contacts = contact_forces(simulation_);
     overlays_->add_to(*states, steps, t, frame, view, joints, contacts);

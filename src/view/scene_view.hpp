@@ -73,6 +73,9 @@ class SimulatedFrames final : public pipeline::FrameSource {
   const sim::Simulation& simulation() const { return simulation_; }
 
  private:
+  // Every joint's values at time t (s), just reached by the simulation (joint_view.hpp).
+  std::vector<JointValue> joint_values_at(double t) const;
+
   const scene::Scene& scene_;
   const Framing& framing_;
   StopRequested stop_requested_;
