@@ -69,8 +69,8 @@ void draw_label(io::Image& sheet, render::Font& font, std::string_view label, in
         if (column < 0 || column >= sheet.width || cover == 0) continue;
         std::uint8_t* pixel = sheet.row(row) + 3 * static_cast<std::size_t>(column);
         for (int c = 0; c < 3; ++c) {
-          pixel[c] = static_cast<std::uint8_t>((kLabelColor[c] * cover + pixel[c] * (255 - cover) +
-                                                127) / 255);
+          pixel[c] = static_cast<std::uint8_t>(
+              (kLabelColor[c] * cover + pixel[c] * (255 - cover) + 127) / 255);
         }
       }
     }

@@ -9,8 +9,8 @@
 // is then (colour − background × (1 − alpha)) / alpha.
 #pragma once
 
-#include "render/frame.hpp"
 #include "io/image.hpp"
+#include "render/frame.hpp"
 
 namespace tumble::render {
 

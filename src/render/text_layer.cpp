@@ -142,8 +142,8 @@ void TextLayer::draw(io::Image& image) const {
       // The alpha plane's row, or a byte that is written and never read.
       std::uint8_t unused = 0;
       std::uint8_t* alpha =
-          has_alpha ? image.alpha.data() +
-                          static_cast<std::size_t>(piece.box.y + y) * image.width + piece.box.x
+          has_alpha ? image.alpha.data() + static_cast<std::size_t>(piece.box.y + y) * image.width +
+                          piece.box.x
                     : &unused;
       const int alpha_step = has_alpha ? 1 : 0;
       if (is_solid) {

@@ -284,8 +284,8 @@ TEST_F(VideoSinkTest, TransparentCaptionKeepsItsColoursOverAnyBackground) {
       for (int c = 0; c < 3; ++c) {
         const double on_green = over(rgba, kGreen, c), on_white = over(rgba, kWhite, c);
         worst_between = std::max(worst_between, std::abs(on_green - on_white));
-        worst_codec = std::max({worst_codec, std::abs(on_green - expected[c]),
-                                std::abs(on_white - expected[c])});
+        worst_codec = std::max(
+            {worst_codec, std::abs(on_green - expected[c]), std::abs(on_white - expected[c])});
       }
     }
   }

@@ -68,17 +68,16 @@ FrameView caption_view() {
                             .height = 64.0,
                             .color = Rgba(1.0, 1.0, 1.0, 1.0),
                             .background = Rgba(0.0, 0.0, 0.0, 0.5)});
-  view.arrows.push_back(Arrow{.from = Vec3(1.3, -0.5, 0.5),
-                              .to = Vec3(1.3, 0.7, 0.5),
-                              .color = Rgba(0.1, 0.8, 0.2, 1.0)});
+  view.arrows.push_back(Arrow{
+      .from = Vec3(1.3, -0.5, 0.5), .to = Vec3(1.3, 0.7, 0.5), .color = Rgba(0.1, 0.8, 0.2, 1.0)});
   view.labels.push_back(Label{.text = "v",
                               .position = Vec3(1.3, 0.7, 0.5),
                               .height = 48.0,
                               .color = Rgba(1.0, 0.0, 0.0, 1.0)});
-  view.lines.push_back(Polyline{.points = {Vec3(-1.2, -0.5, 0.8), Vec3(-1.5, 0.2, 0.8),
-                                           Vec3(-1.3, 0.9, 0.8)},
-                                .opacity = {0.2, 0.6, 1.0},
-                                .color = Rgba(1.0, 1.0, 0.0, 1.0)});
+  view.lines.push_back(
+      Polyline{.points = {Vec3(-1.2, -0.5, 0.8), Vec3(-1.5, 0.2, 0.8), Vec3(-1.3, 0.9, 0.8)},
+               .opacity = {0.2, 0.6, 1.0},
+               .color = Rgba(1.0, 1.0, 0.0, 1.0)});
   return view;
 }
 
@@ -140,8 +139,8 @@ TEST(StraightAlpha, TransparentFrameOverAColourIsTheFrameDrawnOnIt) {
           blue += is(0, 0, 255);
         }
       }
-      const std::string name = "msaa " + std::to_string(msaa) + " over " +
-                               (below.x() > 0.5 ? "white" : "green");
+      const std::string name =
+          "msaa " + std::to_string(msaa) + " over " + (below.x() > 0.5 ? "white" : "green");
       // The glyphs' cores and the box, a few thousand pixels each at this size.
       EXPECT_GT(red, 400) << name;
       EXPECT_GT(blue, 3000) << name;
