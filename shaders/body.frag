@@ -1,5 +1,5 @@
-// A box face: its colour tinted per face (body.vert) and framed by dark edges, so the rotation
-// reads. Per pixel only the frame, the shadow and the highlight remain.
+// A box face: its colour lit (body.vert) and framed by dark edges, so the rotation reads.
+// Per pixel only the frame, the shadow and the highlight remain.
 in vec3 v_world_position;
 in vec2 v_face_position;
 in vec4 v_light_clip;

@@ -26,11 +26,6 @@ flat out vec3 v_ambient;         // linear: the ambient light the face sends bac
 flat out vec3 v_diffuse;         // linear: the key light it sends back where lit
 flat out vec3 v_specular;        // linear: the highlight's colour; 0 on a face turned away
 
-// Per-face tints (+x, -x, +y, -y, +z, -z), mixed into the body colour.
-const vec3 kFaceTints[6] = vec3[6](vec3(1.00, 0.90, 0.80), vec3(0.80, 0.90, 1.00),
-                                   vec3(1.00, 1.00, 0.85), vec3(0.85, 0.80, 0.95),
-                                   vec3(0.90, 1.00, 0.90), vec3(1.00, 0.85, 0.90));
-
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
   v_world_position = world.xyz;
@@ -39,7 +34,6 @@ void main() {
 
   vec3 a = abs(in_normal);
   int axis = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-  int face = axis * 2 + (in_normal[axis] > 0.0 ? 0 : 1);
   int first = axis == 0 ? 1 : 0;   // the face's two edge directions
   int second = axis == 2 ? 1 : 2;
   vec3 local = in_position * in_size;
@@ -49,7 +43,7 @@ void main() {
 
   vec3 normal = normalize(in_rotation * in_normal);
   v_world_normal = normal;
-  vec3 albedo = in_albedo * kFaceTints[face];
+  vec3 albedo = in_albedo;  // the body's colour as given: faces differ by their light alone
   float diffuse = max(dot(normal, -u_light_direction), 0.0);
   float hemisphere = mix(0.55, 1.0, normal.y * 0.5 + 0.5);  // sky above, a darker bounce below
   v_ambient = u_ambient * hemisphere * u_light_color * albedo;

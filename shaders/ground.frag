@@ -36,10 +36,10 @@ void main() {
   float distance_to_center = length(v_world_position.xz - u_center.xz);
   float fade = smoothstep(0.35 * u_half_extent, u_half_extent, distance_to_center);
   if (u_shadow_opacity >= 0.0) {
-    // Straight alpha: black under the shadow, the background colour where none falls (alpha 0
-    // there, and no dark fringe when the edge filter blends a body's edge with it).
+    // Black of opacity `shadow` over the background colour the frame was cleared to, as every
+    // layer of a transparent frame is (render/straight_alpha.hpp makes it straight black).
     float shadow = (1.0 - visibility) * u_shadow_opacity * (1.0 - fade);
-    out_color = vec4(shadow > 0.0 ? vec3(0.0) : encode_srgb(u_background), shadow);
+    out_color = vec4(encode_srgb(u_background) * (1.0 - shadow), shadow);
     return;
   }
   out_color = vec4(encode_srgb(mix(color, u_background, fade)), 1.0);

@@ -68,7 +68,8 @@ struct RenderSettings {
   int msaa = kEdgeFilter;
   Color background = Color(0.78, 0.84, 0.9);
   // [render] background = "transparent": alpha 0 wherever no surface is drawn (the colour there
-  // is `background`, unseen), alpha 1 on surfaces; the ground is not drawn, only the shadows on
+  // is `background`, unseen), alpha 1 on surfaces, overlays and text with their own alpha, all
+  // straight (render/straight_alpha.hpp); the ground is not drawn, only the shadows on
   // it, as partly transparent black (docs/scene-reference.md says why).
   bool transparent = false;
   DirectionalLight light;

@@ -13,6 +13,7 @@
 #include "pipeline/poster_sink.hpp"
 #include "render/renderer.hpp"
 #include "scene/video_rules.hpp"
+#include "view/overlay_view.hpp"
 #include "view/scene_view.hpp"
 
 namespace tumble::job {
@@ -99,7 +100,8 @@ Result<std::vector<std::unique_ptr<pipeline::FrameSink>>> open_sinks(const Rende
     sinks.push_back(std::make_unique<pipeline::PosterSink>((folder / "poster.png").string(),
                                                            scene::poster_frame(scene), job.png));
     sinks.push_back(std::make_unique<pipeline::ContactSheet>(
-        (folder / "contact_sheet.png").string(), job.first, job.end, scene.fps, job.png));
+        (folder / "contact_sheet.png").string(), job.first, job.end, scene.fps, job.png,
+        view::overlay_font(scene)));
   }
   return sinks;
 }

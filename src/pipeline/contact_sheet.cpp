@@ -2,20 +2,14 @@
 
 #include <algorithm>
 #include <cstdio>
-
-#include "io/pixel_font.hpp"
+#include <memory>
+#include <string_view>
 
 namespace tumble::pipeline {
 namespace {
 
-constexpr std::array<std::uint8_t, 3> kStripColor = {38, 40, 44};
+constexpr std::array<std::uint8_t, 3> kStripColor = {38, 40, 44};  // gaps and strips
 constexpr std::array<std::uint8_t, 3> kLabelColor = {235, 235, 235};
-
-// Image pixels per font pixel, at least 1: labels 7 font pixels tall read at a glance beside a
-// tile when they are about a sixth of its height (28 px under the 180-row tiles of a 720p render).
-int label_scale(int tile_height) {
-  return std::max(1, tile_height / 45);
-}
 
 void copy_into(io::Image& sheet, const io::Image& tile, int left, int top) {
   for (int y = 0; y < tile.height; ++y) {
@@ -29,6 +23,57 @@ void fill_rows(io::Image& sheet, int left, int top, int width, int height,
   for (int y = top; y < top + height; ++y) {
     std::uint8_t* pixel = sheet.row(y) + 3 * static_cast<std::size_t>(left);
     for (int x = 0; x < width; ++x, pixel += 3) std::copy(rgb.begin(), rgb.end(), pixel);
+  }
+}
+
+// The glyphs of an ASCII `label` at `pixel_height` with their pen positions (px from the label's
+// start), and the label's width (px).
+struct LabelGlyphs {
+  std::vector<std::pair<std::uint32_t, int>> glyphs;  // glyph index, pen x
+  int width = 0;
+};
+
+LabelGlyphs place_label(render::Font& font, std::string_view label, int pixel_height) {
+  LabelGlyphs out;
+  std::int32_t pen = 0;  // 1/64 px, as FreeType's advances
+  std::uint32_t previous = 0;
+  for (const char c : label) {
+    const std::uint32_t glyph = font.glyph_index(static_cast<char32_t>(c));
+    if (glyph == 0) continue;  // a gap, never the missing-glyph box
+    if (previous != 0) pen += font.kerning(previous, glyph, pixel_height);
+    out.glyphs.emplace_back(glyph, (pen + 32) / 64);
+    pen += font.advance(glyph, pixel_height);
+    previous = glyph;
+  }
+  out.width = (pen + 32) / 64;
+  return out;
+}
+
+// Blends `label` in kLabelColor onto `sheet` by FreeType's coverage, "over" in sRGB-encoded
+// values as the frames' text (render/text_layer.hpp): centred on column `centre_x`, its digits
+// centred on row `centre_y`.
+void draw_label(io::Image& sheet, render::Font& font, std::string_view label, int pixel_height,
+                int centre_x, int centre_y) {
+  const LabelGlyphs placed = place_label(font, label, pixel_height);
+  const render::GlyphBitmap digit = font.rasterize(font.glyph_index(U'0'), pixel_height);
+  const int baseline = centre_y + digit.top / 2;
+  const int left = centre_x - placed.width / 2;
+  for (const auto& [glyph, pen] : placed.glyphs) {
+    const render::GlyphBitmap bitmap = font.rasterize(glyph, pixel_height);
+    for (int y = 0; y < bitmap.height; ++y) {
+      const int row = baseline - bitmap.top + y;
+      if (row < 0 || row >= sheet.height) continue;
+      for (int x = 0; x < bitmap.width; ++x) {
+        const int column = left + pen + bitmap.left + x;
+        const int cover = bitmap.coverage[static_cast<std::size_t>(y) * bitmap.width + x];
+        if (column < 0 || column >= sheet.width || cover == 0) continue;
+        std::uint8_t* pixel = sheet.row(row) + 3 * static_cast<std::size_t>(column);
+        for (int c = 0; c < 3; ++c) {
+          pixel[c] = static_cast<std::uint8_t>(
+              (kLabelColor[c] * cover + pixel[c] * (255 - cover) + 127) / 255);
+        }
+      }
+    }
   }
 }
 
@@ -68,14 +113,28 @@ io::Image shrink_for_sheet(const io::Image& image) {
 }
 
 int sheet_label_height(int tile_height) {
-  return (io::kPixelFontHeight + 4) * label_scale(tile_height);
+  // Big enough for the digits to read (their height is about 0.73 of the em size, the strip's
+  // height), a fifth or less of the pixel font's strip this replaced (11 × tile_height / 45).
+  return std::max(8, tile_height / 22);
+}
+
+int sheet_gap(int tile_height) {
+  return std::max(2, tile_height / 30);
+}
+
+std::array<int, 2> sheet_tile_origin(int index, int tile_width, int tile_height) {
+  const int gap = sheet_gap(tile_height);
+  const int column = index % kSheetColumns, row = index / kSheetColumns;
+  return {gap + column * (tile_width + gap),
+          gap + row * (tile_height + sheet_label_height(tile_height) + gap)};
 }
 
 ContactSheet::ContactSheet(std::string path, std::int64_t first, std::int64_t end, int fps,
-                           const io::PngSettings& settings)
+                           const io::PngSettings& settings, std::string font_family)
     : path_(std::move(path)),
       fps_(fps),
       settings_(settings),
+      font_family_(std::move(font_family)),
       frames_(contact_sheet_frames(first, end)) {}
 
 Result<void> ContactSheet::write(std::int64_t frame, const io::Image& image) {
@@ -87,21 +146,21 @@ Result<void> ContactSheet::write(std::int64_t frame, const io::Image& image) {
 
 Result<void> ContactSheet::finish() {
   if (tiles_.empty()) return Result<void>::success();
+  Result<std::unique_ptr<render::Font>> font = render::Font::open(font_family_);
+  if (!font) return Error{path_ + ": " + font.error()};
   const int tile_width = tiles_.front().width;
   const int tile_height = tiles_.front().height;
   const int strip = sheet_label_height(tile_height);
-  const int scale = label_scale(tile_height);
-  io::Image sheet(kSheetColumns * tile_width, kSheetRows * (tile_height + strip));
+  const int gap = sheet_gap(tile_height);
+  io::Image sheet(gap + kSheetColumns * (tile_width + gap),
+                  gap + kSheetRows * (tile_height + strip + gap));
   fill_rows(sheet, 0, 0, sheet.width, sheet.height, kStripColor);
   for (std::size_t i = 0; i < tiles_.size(); ++i) {
-    const int left = static_cast<int>(i % kSheetColumns) * tile_width;
-    const int top = static_cast<int>(i / kSheetColumns) * (tile_height + strip);
+    const auto [left, top] = sheet_tile_origin(static_cast<int>(i), tile_width, tile_height);
     copy_into(sheet, tiles_[i], left, top);
     char label[40];
     std::snprintf(label, sizeof label, "t = %.2f s", static_cast<double>(frames_[i]) / fps_);
-    const int label_left = left + (tile_width - io::pixel_text_width(label, scale)) / 2;
-    io::draw_pixel_text(sheet, label_left, top + tile_height + 2 * scale, scale, label,
-                        kLabelColor);
+    draw_label(sheet, **font, label, strip, left + tile_width / 2, top + tile_height + strip / 2);
   }
   return io::write_png(path_, sheet, settings_);
 }

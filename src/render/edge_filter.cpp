@@ -155,9 +155,17 @@ class Unfiltered {
 }  // namespace
 
 void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& out,
-                  const std::vector<PixelBox>& unfiltered) {
+                  const std::vector<PixelBox>& unfiltered, bool with_alpha) {
   if (out.width != width || out.height != height) out = io::Image(width, height);
-  copy_rgb(rgba, static_cast<std::size_t>(width) * height, out.rgb.data());
+  const std::size_t pixel_count = static_cast<std::size_t>(width) * height;
+  copy_rgb(rgba, pixel_count, out.rgb.data());
+  const int channels = with_alpha ? 4 : 3;
+  if (with_alpha) {
+    out.alpha.resize(pixel_count);
+    for (std::size_t i = 0; i < pixel_count; ++i) out.alpha[i] = rgba[4 * i + 3];
+  } else {
+    out.alpha.clear();
+  }
   Luma luma(rgba, width, height);
   std::vector<std::uint8_t> range(static_cast<std::size_t>(width));  // of a row's pixels
   Unfiltered text(unfiltered);
@@ -195,9 +203,15 @@ void filter_edges(const std::uint8_t* rgba, int width, int height, io::Image& ou
       const std::uint8_t* source = rgba + 4 * (static_cast<std::size_t>(y) * width + x);
       const std::uint8_t* neighbour = rgba + 4 * (static_cast<std::size_t>(ny) * width + nx);
       std::uint8_t* target = out.row(y) + 3 * x;
-      for (int c = 0; c < 3; ++c) {
+      for (int c = 0; c < channels; ++c) {
         const float mixed = source[c] + blend.share * static_cast<float>(neighbour[c] - source[c]);
-        target[c] = static_cast<std::uint8_t>(mixed + 0.5f);  // rounded; stays within 0..255
+        // Rounded; stays within 0..255.
+        const auto value = static_cast<std::uint8_t>(mixed + 0.5f);
+        if (c < 3) {
+          target[c] = value;
+        } else {
+          out.alpha[static_cast<std::size_t>(y) * width + x] = value;
+        }
       }
     }
   }

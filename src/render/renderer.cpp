@@ -19,6 +19,7 @@
 #include "render/overlay_layer.hpp"
 #include "render/shader_program.hpp"
 #include "render/sketch_layer.hpp"
+#include "render/straight_alpha.hpp"
 #include "render/text_layer.hpp"
 
 namespace tumble::render {
@@ -490,7 +491,8 @@ void Renderer::Resources::draw_ground_with(const ShaderProgram& program, const F
 void Renderer::Resources::start_frame(const FrameView& view, const FrameSetup& frame,
                                       GLuint target) {
   // The shaders encode to sRGB themselves, so the clear colour is given encoded too. Surfaces
-  // write alpha 1, so alpha 0 is left exactly where nothing was drawn.
+  // write alpha 1, so alpha 0 is left exactly where nothing was drawn; a transparent picture's
+  // partial alphas are made straight against this colour at the end (straight_alpha.hpp).
   glClearColor(static_cast<float>(settings.background.x()),
                static_cast<float>(settings.background.y()),
                static_cast<float>(settings.background.z()), settings.transparent ? 0.0f : 1.0f);
@@ -542,8 +544,8 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
       return (a->center - eye).squaredNorm() > (b->center - eye).squaredNorm();
     });
     glEnable(GL_BLEND);
-    // Alpha as "over" (a + (1 − a) × the alpha below), for a transparent picture; the colour is
-    // blended the same either way.
+    // "Over" for colour and alpha alike (a + (1 − a) × the alpha below): on a transparent
+    // picture the colour stays the picture over the background colour (straight_alpha.hpp).
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glDepthMask(GL_FALSE);  // what is behind a translucent quad stays drawable
   }
@@ -568,9 +570,8 @@ void Renderer::Resources::draw_quads(const FrameView& view, const FrameSetup& fr
   }
 }
 
-// The alpha of the read-back `rgba` (top row first) into `alpha`, one byte per pixel: the edge
-// filter smooths colours only, so an edge's alpha is the coverage multisampling gives it, or
-// all-or-nothing with one sample per pixel.
+// The alpha of the read-back `rgba` (top row first) into `alpha`, one byte per pixel: with
+// multisampling an edge's alpha is its coverage, with one sample all or nothing.
 static void copy_alpha(const std::vector<std::uint8_t>& rgba, int width, int height,
                        std::vector<std::uint8_t>& alpha) {
   alpha.resize(static_cast<std::size_t>(width) * height);
@@ -585,20 +586,25 @@ void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox
   glBindFramebuffer(GL_READ_FRAMEBUFFER, source.id());
   glReadPixels(0, 0, settings.width, settings.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   if (settings.msaa == kEdgeFilter) {
-    filter_edges(rgba.data(), settings.width, settings.height, out, text_boxes);
-  } else {
-    if (out.width != settings.width || out.height != settings.height) {
-      out = io::Image(settings.width, settings.height);
-    }
-    const std::size_t pixel_count = static_cast<std::size_t>(settings.width) * settings.height;
-    for (std::size_t i = 0; i < pixel_count; ++i) {
-      out.rgb[3 * i + 0] = rgba[4 * i + 0];
-      out.rgb[3 * i + 1] = rgba[4 * i + 1];
-      out.rgb[3 * i + 2] = rgba[4 * i + 2];
-    }
+    // The filter blends a transparent frame's alpha with its colour (edge_filter.hpp).
+    filter_edges(rgba.data(), settings.width, settings.height, out, text_boxes,
+                 settings.transparent);
+    return;
   }
-  // After the colour, which may have made `out` anew.
-  if (settings.transparent) copy_alpha(rgba, settings.width, settings.height, out.alpha);
+  if (out.width != settings.width || out.height != settings.height) {
+    out = io::Image(settings.width, settings.height);
+  }
+  const std::size_t pixel_count = static_cast<std::size_t>(settings.width) * settings.height;
+  for (std::size_t i = 0; i < pixel_count; ++i) {
+    out.rgb[3 * i + 0] = rgba[4 * i + 0];
+    out.rgb[3 * i + 1] = rgba[4 * i + 1];
+    out.rgb[3 * i + 2] = rgba[4 * i + 2];
+  }
+  if (settings.transparent) {
+    copy_alpha(rgba, settings.width, settings.height, out.alpha);
+  } else {
+    out.alpha.clear();
+  }
 }
 
 bool Renderer::Resources::shows(const Arrow& arrow, const FrameSetup& frame) const {
@@ -703,6 +709,8 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   r.read_pixels(out, text_boxes);
   if (!view.panels.empty() || !view.strokes.empty()) draw_sketch(view.panels, view.strokes, out);
   if (text) r.text->draw(out);
+  // Last: every layer blends onto the background colour (straight_alpha.hpp says why).
+  if (s.transparent) make_alpha_straight(out, s.background);
 }
 
 }  // namespace tumble::render

@@ -9,25 +9,20 @@
 namespace tumble::render {
 namespace {
 
-// `color` (sRGB-encoded, straight) at `coverage` (0-1) over the pixel at index i.
+// `color` (sRGB-encoded, straight) at `coverage` (0-1) "over" the pixel at index i; on a
+// transparent frame its alpha "over" the alpha below, the colour as over the background colour
+// (made straight at the end: straight_alpha.hpp).
 void blend(io::Image& image, std::size_t i, const Rgba& color, double coverage) {
   const double a = std::clamp(color.w() * coverage, 0.0, 1.0);
   if (a <= 0.0) return;
   std::uint8_t* rgb = image.rgb.data() + 3 * i;
-  if (image.alpha.empty()) {
-    for (int c = 0; c < 3; ++c) {
-      rgb[c] = static_cast<std::uint8_t>(
-          std::lround(255.0 * color[c] * a + static_cast<double>(rgb[c]) * (1.0 - a)));
-    }
-    return;
-  }
-  const double below = image.alpha[i] / 255.0;
-  const double out = a + below * (1.0 - a);
   for (int c = 0; c < 3; ++c) {
-    const double mixed = (255.0 * color[c] * a + rgb[c] * below * (1.0 - a)) / out;
-    rgb[c] = static_cast<std::uint8_t>(std::lround(std::clamp(mixed, 0.0, 255.0)));
+    rgb[c] = static_cast<std::uint8_t>(std::lround(
+        255.0 * std::clamp(color[c], 0.0, 1.0) * a + static_cast<double>(rgb[c]) * (1.0 - a)));
   }
-  image.alpha[i] = static_cast<std::uint8_t>(std::lround(255.0 * out));
+  if (!image.alpha.empty()) {
+    image.alpha[i] = static_cast<std::uint8_t>(std::lround(255.0 * a + image.alpha[i] * (1.0 - a)));
+  }
 }
 
 // The distance from p to the segment from a to b.

@@ -3,7 +3,7 @@
 // Each stroke is antialiased by its exact coverage of a pixel's centre line of width + 1 px
 // (the distance from the pixel's centre to the polyline, so joints never blend twice), and
 // blended "over" in sRGB-encoded values as the text is. On a transparent frame the alpha is
-// composited too (a + (1 − a) × the alpha below), the colour kept straight.
+// composited too (a + (1 − a) × the alpha below), as every layer is (straight_alpha.hpp).
 #pragma once
 
 #include <vector>

@@ -32,7 +32,8 @@ Eigen::Vector4f premultiply(const Rgba& color, double opacity) {
                          static_cast<float>(rgb.z()), static_cast<float>(alpha));
 }
 
-// In 0-255 units: out = colour × coverage + in × (1 - alpha × coverage), rounded.
+// In 0-255 units: out = colour × coverage + in × (1 - alpha × coverage), rounded. Channel 3 is
+// the alpha itself: alpha × coverage + in × (1 - alpha × coverage), "over" for the alpha plane.
 std::uint8_t blend_byte(const Eigen::Vector4f& color, int channel, float cover, std::uint8_t in) {
   const float keep = 1.0f - color.w() * cover;
   const float value = 255.0f * color[channel] * cover + static_cast<float>(in) * keep;
@@ -47,7 +48,7 @@ class FullCoverTable {
  public:
   void prepare(const Eigen::Vector4f& color, float cover) {
     if (ready_ && color == color_ && cover == cover_) return;
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < 4; ++c) {
       for (int in = 0; in < 256; ++in) {
         table_[c][in] = blend_byte(color, c, cover, static_cast<std::uint8_t>(in));
       }
@@ -59,9 +60,10 @@ class FullCoverTable {
   void apply(std::uint8_t* pixel) const {
     for (int c = 0; c < 3; ++c) pixel[c] = table_[c][pixel[c]];
   }
+  void apply_alpha(std::uint8_t& alpha) const { alpha = table_[3][alpha]; }
 
  private:
-  std::array<std::array<std::uint8_t, 256>, 3> table_{};
+  std::array<std::array<std::uint8_t, 256>, 4> table_{};
   Eigen::Vector4f color_;
   float cover_ = 0.0f;
   bool ready_ = false;
@@ -137,6 +139,7 @@ std::vector<PixelBox> TextLayer::lay_out(const std::vector<Text>& texts) {
 }
 
 void TextLayer::draw(io::Image& image) const {
+  const bool has_alpha = !image.alpha.empty();
   const std::vector<std::uint8_t>& texels = atlas_.texels();
   const std::size_t atlas_size = static_cast<std::size_t>(atlas_.size());
   // A box's pixels, and most of a glyph's (its stems), are fully covered: there the result
@@ -148,21 +151,33 @@ void TextLayer::draw(io::Image& image) const {
     full.prepare(piece.color, is_solid ? 1.0f : kGlyphFullCover);
     for (int y = 0; y < piece.box.height; ++y) {
       std::uint8_t* out = image.row(piece.box.y + y) + 3 * piece.box.x;
+      // The alpha plane's row, or a byte that is written and never read.
+      std::uint8_t unused = 0;
+      std::uint8_t* alpha =
+          has_alpha ? image.alpha.data() + static_cast<std::size_t>(piece.box.y + y) * image.width +
+                          piece.box.x
+                    : &unused;
+      const int alpha_step = has_alpha ? 1 : 0;
       if (is_solid) {
-        for (int x = 0; x < piece.box.width; ++x, out += 3) full.apply(out);
+        for (int x = 0; x < piece.box.width; ++x, out += 3, alpha += alpha_step) {
+          full.apply(out);
+          full.apply_alpha(*alpha);
+        }
         continue;
       }
       const std::uint8_t* coverage =
           &texels[static_cast<std::size_t>(piece.texel_y + y) * atlas_size +
                   static_cast<std::size_t>(piece.texel_x)];
-      for (int x = 0; x < piece.box.width; ++x, out += 3) {
+      for (int x = 0; x < piece.box.width; ++x, out += 3, alpha += alpha_step) {
         if (coverage[x] == 0) continue;
         if (coverage[x] == 255) {
           full.apply(out);
+          full.apply_alpha(*alpha);
           continue;
         }
         const float cover = coverage[x] * (1.0f / 255.0f);
         for (int c = 0; c < 3; ++c) out[c] = blend_byte(piece.color, c, cover, out[c]);
+        *alpha = blend_byte(piece.color, 3, cover, *alpha);
       }
     }
   }

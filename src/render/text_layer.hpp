@@ -40,7 +40,9 @@ class TextLayer {
 
   // Blends what lay_out() placed over `image` (width × height), each text over the ones before,
   // in sRGB-encoded values as a video compositor does: premultiplied "over" (Porter & Duff
-  // 1984).
+  // 1984). An alpha plane, when `image` has one, gets "over" too (the text's alpha × coverage
+  // over the alpha below); the colour is then the picture as it shows over the colour the
+  // transparent parts hold (the Renderer makes it straight afterwards, straight_alpha.hpp).
   void draw(io::Image& image) const;
 
   const Font& font() const { return *font_; }

@@ -1,9 +1,14 @@
 // poster.png and contact_sheet.png, written with every render: the poster is its frame's PNG byte
-// for byte; the sheet is 4 × 3 tiles, each its frame shrunk 4 times by block means, above a strip
-// with its time; with --frames A:B both keep to the frames rendered.
+// for byte; the sheet is 4 × 3 tiles apart by gaps, each its frame shrunk 4 times by block means,
+// above a thin strip with its time in the scene's font; with --frames A:B both keep to the frames
+// rendered.
 #include "pipeline/contact_sheet.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
 
 #include "io/png_io.hpp"
 #include "support/command_test.hpp"
@@ -43,6 +48,59 @@ TEST(ContactSheet, ShrinkIsTheRoundedMeanOfEachFourByFourBlock) {
   EXPECT_EQ(tile.row(0)[2], 128);  // a checkerboard: 127.5, rounded half up
 }
 
+// The sheet of a 720p render's frames (each a flat grey, tiles of 320 × 180): gaps of the
+// strip's colour between and around the tiles, and under each tile a strip 8 px high (a fifth or
+// less of the pixel font's 44) whose label, light on dark, covers part of it.
+TEST(ContactSheet, TilesHaveGapsAndThinLabelledStrips) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "tumble_contact_sheet_test.png").string();
+  ContactSheet sheet_sink(path, 0, 240, 60, {});
+  for (std::int64_t k = 0; k < 240; ++k) {
+    io::Image frame(1280, 720);
+    std::fill(frame.rgb.begin(), frame.rgb.end(), std::uint8_t{150});
+    ASSERT_EQ(testing::error_text(sheet_sink.write(k, frame)), "");
+  }
+  ASSERT_EQ(testing::error_text(sheet_sink.finish()), "");
+  io::Image sheet;
+  ASSERT_EQ(testing::take(io::read_png(path), sheet), "");
+  std::filesystem::remove(path);
+  const int strip = sheet_label_height(180), gap = sheet_gap(180);
+  EXPECT_EQ(strip, 8);
+  EXPECT_LE(strip * 5, 11 * (180 / 45));  // the pixel font's strip: 11 rows of 4 px
+  EXPECT_EQ(gap, 6);
+  ASSERT_EQ(sheet.width, gap + 4 * (320 + gap));
+  ASSERT_EQ(sheet.height, gap + 3 * (180 + strip + gap));
+  const auto pixel = [&](int x, int y) {
+    const std::uint8_t* p = sheet.row(y) + 3 * x;
+    return std::array<int, 3>{p[0], p[1], p[2]};
+  };
+  const std::array<int, 3> strip_color{38, 40, 44}, tile_color{150, 150, 150};
+  for (int i = 0; i < kSheetTiles; ++i) {
+    const auto [left, top] = sheet_tile_origin(i, 320, 180);
+    // The gap left of the tile and the one above it, and the tile itself.
+    EXPECT_EQ(pixel(left - 1, top + 90), strip_color) << "tile " << i;
+    EXPECT_EQ(pixel(left - gap, top + 90), strip_color) << "tile " << i;
+    EXPECT_EQ(pixel(left + 160, top - 1), strip_color) << "tile " << i;
+    EXPECT_EQ(pixel(left, top), tile_color) << "tile " << i;
+    EXPECT_EQ(pixel(left + 319, top + 179), tile_color) << "tile " << i;
+    // The label: light pixels in the strip, within its 8 rows, centred under the tile.
+    int lit = 0, lit_left = 320, lit_right = -1;
+    for (int y = top + 180; y < top + 180 + strip; ++y) {
+      for (int x = left; x < left + 320; ++x) {
+        if (pixel(x, y)[0] < 120) continue;
+        ++lit;
+        lit_left = std::min(lit_left, x - left);
+        lit_right = std::max(lit_right, x - left);
+      }
+    }
+    EXPECT_GT(lit, 20) << "tile " << i;  // "t = 0.00 s": eight glyphs of a few pixels each
+    EXPECT_NEAR(lit_left + lit_right, 320, 8) << "tile " << i;
+    EXPECT_LT(lit_right - lit_left, 80) << "tile " << i;
+    // Below the strip, the gap again.
+    EXPECT_EQ(pixel(left + 160, top + 180 + strip), strip_color) << "tile " << i;
+  }
+}
+
 class ContactSheetRun : public CommandTest {
  protected:
   std::string out(const std::string& file) const { return path("out/spin/" + file); }
@@ -57,14 +115,13 @@ class ContactSheetRun : public CommandTest {
   void expect_tiles_are_frames(const std::vector<std::int64_t>& frames) {
     io::Image sheet;
     ASSERT_EQ(::tumble::testing::take(io::read_png(out("contact_sheet.png")), sheet), "");
-    const int strip = sheet_label_height(16);
-    ASSERT_EQ(sheet.width, 4 * 24);
-    ASSERT_EQ(sheet.height, 3 * (16 + strip));
+    const int strip = sheet_label_height(16), gap = sheet_gap(16);
+    ASSERT_EQ(sheet.width, gap + 4 * (24 + gap));
+    ASSERT_EQ(sheet.height, gap + 3 * (16 + strip + gap));
     for (std::size_t i = 0; i < frames.size(); ++i) {
       io::Image image;
       ASSERT_EQ(::tumble::testing::take(io::read_png(frame(frames[i])), image), "");
-      const int left = static_cast<int>(i % 4) * 24;
-      const int top = static_cast<int>(i / 4) * (16 + strip);
+      const auto [left, top] = sheet_tile_origin(static_cast<int>(i), 24, 16);
       int differing = 0;
       for (int y = 0; y < 16; ++y) {
         for (int x = 0; x < 24; ++x) {
