@@ -81,8 +81,10 @@ PlotLayout plot_layout(const scene::PlotOverlay& plot, std::span<const PlotSampl
     high += half;
   }
   out.y_step = tick_step(low, high, 4);
-  out.y_low = std::floor(low / out.y_step) * out.y_step;
-  out.y_high = std::ceil(high / out.y_step) * out.y_step;
+  // Whole ticks around the values; a rounding's worth past a tick (a kinetic energy of -1e-19 at
+  // rest) is not a tick more.
+  out.y_low = std::floor(low / out.y_step + 1e-9) * out.y_step;
+  out.y_high = std::ceil(high / out.y_step - 1e-9) * out.y_step;
   if (out.y_high <= out.y_low) out.y_high = out.y_low + out.y_step;
   return out;
 }
