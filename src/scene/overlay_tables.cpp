@@ -62,6 +62,18 @@ Eigen::Vector2d read_offset(TableReader& in) {
   return Eigen::Vector2d(in.number("offset", (*array)[0]), in.number("offset", (*array)[1]));
 }
 
+// `anchor`, or `fallback` when it is not given.
+common::Anchor read_anchor(TableReader& in, const std::string& fallback) {
+  const std::string anchor = in.optional_string("anchor", fallback);
+  const std::optional<common::Anchor> known = common::anchor_from_name(anchor);
+  if (!known) {
+    in.fail("anchor", "unknown anchor " + in_quotes(anchor) +
+                          " (expected top-left, top, top-right, left, centre, right, "
+                          "bottom-left, bottom or bottom-right)");
+  }
+  return *known;
+}
+
 // kDefaultMargin in from each edge the anchor touches: a corner's text clears both edges.
 Eigen::Vector2d default_offset(common::Anchor anchor) {
   const int column = static_cast<int>(anchor) % 3, row = static_cast<int>(anchor) / 3;
@@ -103,14 +115,7 @@ TextOverlay read_text(TableReader& in, const Scene& scene) {
   } else if (in.has("point")) {
     in.fail("point", "only a text that follows a body (`body = \"NAME\"`) takes a point");
   }
-  const std::string anchor = in.optional_string("anchor", "top-left");
-  const std::optional<common::Anchor> known = common::anchor_from_name(anchor);
-  if (!known) {
-    in.fail("anchor", "unknown anchor " + in_quotes(anchor) +
-                          " (expected top-left, top, top-right, left, centre, right, "
-                          "bottom-left, bottom or bottom-right)");
-  }
-  out.anchor = *known;
+  out.anchor = read_anchor(in, "top-left");
   out.offset = in.has("offset")  ? read_offset(in)
                : out.body ? Eigen::Vector2d::Zero()
                           : default_offset(out.anchor);
@@ -349,14 +354,7 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
                          format_number(*out.y_max) + ")");
   }
   out.unit = in.optional_string("unit", out.unit);
-  const std::string anchor = in.optional_string("anchor", "top-right");
-  const std::optional<common::Anchor> known = common::anchor_from_name(anchor);
-  if (!known) {
-    in.fail("anchor", "unknown anchor " + in_quotes(anchor) +
-                          " (expected top-left, top, top-right, left, centre, right, "
-                          "bottom-left, bottom or bottom-right)");
-  }
-  out.anchor = *known;
+  out.anchor = read_anchor(in, "top-right");
   out.offset = in.has("offset") ? read_offset(in) : default_offset(out.anchor);
   if (in.has("size")) {
     const toml::array* array = in.table().get("size")->as_array();
