@@ -171,7 +171,8 @@ void print_summary(const job::RenderJob& job, const job::RenderResult& result,
                job.directory.c_str(), files.c_str());
   if (kept.empty()) return;
   std::string names;
-  for (const job::RenderedFile& file : kept) names += (names.empty() ? "" : ", ") + listed(file.name);
+  for (const job::RenderedFile& file : kept)
+    names += (names.empty() ? "" : ", ") + listed(file.name);
   std::fprintf(err, "tumble: kept of the earlier render of this scene in %s/: %s\n",
                job.directory.c_str(), names.c_str());
 }
@@ -192,8 +193,7 @@ CommandResult run_render(const job::RenderOptions& options,
   made->scene_hash = job::scene_hash(*text, made->scene);
   // An earlier render of this scene in the folder keeps what this one does not write (the MP4
   // beside a GIF rendered apart); another scene's is replaced whole, and that is said.
-  const job::EarlierRender earlier =
-      job::read_earlier_render(made->directory, *text, made->scene);
+  const job::EarlierRender earlier = job::read_earlier_render(made->directory, *text, made->scene);
   made->stills = job::writes_own_stills(made->scene, earlier);
   const job::RenderJob& job = *made;
   if (golden) {
@@ -247,9 +247,9 @@ CommandResult run_render(const job::RenderOptions& options,
 
   const std::vector<std::string> written = job::render_files(staging, job.scene.name);
   // Read again: what is kept is what the folder holds now, just before the swap.
-  const Result<std::vector<job::RenderedFile>> kept = job::keep_earlier_files(
-      job::read_earlier_render(job.directory, *text, job.scene), job.directory, staging,
-      job.stills);
+  const Result<std::vector<job::RenderedFile>> kept =
+      job::keep_earlier_files(job::read_earlier_render(job.directory, *text, job.scene),
+                              job.directory, staging, job.stills);
   if (!kept) return Error{kept.error() + "\ntumble: " + stopped("render failed")};
   const double total_seconds = seconds_since(start);
   Result<void> done = io::write_file_atomically((staging / "report.json").string(),

@@ -270,9 +270,8 @@ std::string VideoEncoder::State::set_up_gif() {
   // shift the colours of a still background from frame to frame.
   const std::string rgb_source = "video_size=" + size_text(settings.width, settings.height) +
                                  ":pix_fmt=rgb24:time_base=1/100:pixel_aspect=1/1";
-  if (std::string failure =
-          palette_stats.build("[in0]palettegen=stats_mode=full" + max_colors_option() + "[out]",
-                              {rgb_source});
+  if (std::string failure = palette_stats.build(
+          "[in0]palettegen=stats_mode=full" + max_colors_option() + "[out]", {rgb_source});
       !failure.empty()) {
     return error = path + ": " + failure;
   }

@@ -26,8 +26,8 @@ Result<void> link_poster(const std::vector<ChunkReport>& chunks, const fs::path&
   std::error_code error;
   for (const ChunkReport& chunk : chunks) {
     const fs::path from = chunk.folder / "poster.png";
-    const bool own = std::find(chunk.kept.begin(), chunk.kept.end(), "poster.png") ==
-                     chunk.kept.end();
+    const bool own =
+        std::find(chunk.kept.begin(), chunk.kept.end(), "poster.png") == chunk.kept.end();
     if (!own || !fs::is_regular_file(from, error)) continue;
     fs::create_hard_link(from, to, error);
     if (error) fs::copy_file(from, to, error);

@@ -40,8 +40,8 @@ std::string origin_json(const std::string& hash, long long width, long long heig
                         long long first, long long end) {
   return "{\"scene_hash\": " + io::json_string(hash) + ", \"width\": " + std::to_string(width) +
          ", \"height\": " + std::to_string(height) + ", \"fps\": " + std::to_string(fps) +
-         ", \"frames\": {\"first\": " + std::to_string(first) + ", \"end\": " +
-         std::to_string(end) + ", \"count\": " + std::to_string(end - first) + "}}";
+         ", \"frames\": {\"first\": " + std::to_string(first) +
+         ", \"end\": " + std::to_string(end) + ", \"count\": " + std::to_string(end - first) + "}}";
 }
 
 // The files that the earlier render kept itself, by name, with where they came from.
@@ -136,9 +136,10 @@ EarlierRender read_earlier_render(const fs::path& folder, std::string_view scene
   const JsonValue* settings = report ? report->find("settings") : nullptr;
   const JsonValue* frames = report ? report->find("frames") : nullptr;
   const JsonValue* hash = report ? report->find("scene_hash") : nullptr;
-  const long long width = whole_number(settings, "width"), height = whole_number(settings, "height"),
-                  fps = whole_number(settings, "fps"), msaa = whole_number(settings, "msaa"),
-                  first = whole_number(frames, "first"), end = whole_number(frames, "end");
+  const long long width = whole_number(settings, "width"),
+                  height = whole_number(settings, "height"), fps = whole_number(settings, "fps"),
+                  msaa = whole_number(settings, "msaa"), first = whole_number(frames, "first"),
+                  end = whole_number(frames, "end");
   if (!hash || hash->kind != JsonValue::Kind::string || std::min({width, height, fps, first}) < 0 ||
       end <= first || msaa < 0) {
     return other_scene("a render whose report.json this tumble cannot read");
@@ -174,8 +175,7 @@ bool writes_own_stills(const scene::Scene& scene, const EarlierRender& earlier) 
 }
 
 Result<std::vector<RenderedFile>> keep_earlier_files(const EarlierRender& earlier,
-                                                     const fs::path& from,
-                                                     const fs::path& staging,
+                                                     const fs::path& from, const fs::path& staging,
                                                      bool own_stills) {
   std::vector<RenderedFile> kept;
   std::error_code error;

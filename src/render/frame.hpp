@@ -105,7 +105,7 @@ struct Arrow {
   Vec3 from = Vec3::Zero();  // world frame (m)
   Vec3 to = Vec3::UnitX();   // the tip, world frame (m)
   Rgba color = Rgba(1.0, 1.0, 1.0, 1.0);
-  std::string label = {};     // UTF-8 text at the tip, as a Label there; empty for none
+  std::string label = {};      // UTF-8 text at the tip, as a Label there; empty for none
   double label_height = 28.0;  // its em size (px at 720 rows)
 };
 // px at 720 rows: below this an arrow's direction cannot be read.

@@ -610,7 +610,8 @@ void Renderer::Resources::read_pixels(io::Image& out, const std::vector<PixelBox
 bool Renderer::Resources::shows(const Arrow& arrow, const FrameSetup& frame) const {
   const auto from =
       project_to_pixel(frame.view_projection, arrow.from, settings.width, settings.height);
-  const auto to = project_to_pixel(frame.view_projection, arrow.to, settings.width, settings.height);
+  const auto to =
+      project_to_pixel(frame.view_projection, arrow.to, settings.width, settings.height);
   if (!from || !to) return (arrow.to - arrow.from).norm() > 0.0;  // partly behind: clipped
   return (*to - *from).norm() >= scale_to_frame(kMinArrowPixels, settings.height);
 }
@@ -629,17 +630,16 @@ std::vector<Text> Renderer::Resources::texts_with_labels(const FrameView& view,
         project_to_pixel(frame.view_projection, label.position, settings.width, settings.height);
     if (!pixel) return;
     // Anchored left and middle: x from the left edge, y from the frame's middle row.
-    out.push_back(Text{
-        .text = label.text,
-        .anchor = Anchor::kLeft,
-        .offset = Eigen::Vector2d(pixel->x() * reference + kLabelGap,
-                                  (pixel->y() - 0.5 * settings.height) * reference) +
-                  label.offset,
-        .height = label.height,
-        .color = label.color,
-        .background = label.background,
-        .opacity = label.opacity,
-        .keep_apart = true});
+    out.push_back(Text{.text = label.text,
+                       .anchor = Anchor::kLeft,
+                       .offset = Eigen::Vector2d(pixel->x() * reference + kLabelGap,
+                                                 (pixel->y() - 0.5 * settings.height) * reference) +
+                                 label.offset,
+                       .height = label.height,
+                       .color = label.color,
+                       .background = label.background,
+                       .opacity = label.opacity,
+                       .keep_apart = true});
   };
   for (const Arrow& arrow : view.arrows) {
     if (arrow.label.empty() || !shows(arrow, frame)) continue;

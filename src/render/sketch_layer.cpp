@@ -17,8 +17,8 @@ void blend(io::Image& image, std::size_t i, const Rgba& color, double coverage) 
   if (a <= 0.0) return;
   std::uint8_t* rgb = image.rgb.data() + 3 * i;
   for (int c = 0; c < 3; ++c) {
-    rgb[c] = static_cast<std::uint8_t>(std::lround(
-        255.0 * std::clamp(color[c], 0.0, 1.0) * a + static_cast<double>(rgb[c]) * (1.0 - a)));
+    rgb[c] = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(color[c], 0.0, 1.0) * a +
+                                                   static_cast<double>(rgb[c]) * (1.0 - a)));
   }
   if (!image.alpha.empty()) {
     image.alpha[i] = static_cast<std::uint8_t>(std::lround(255.0 * a + image.alpha[i] * (1.0 - a)));

@@ -105,8 +105,9 @@ TextOverlay read_text(TableReader& in, const Scene& scene) {
   out.text = *text;
   if (in.has("body")) {
     if (in.has("anchor")) {
-      in.fail("anchor", "a text that follows a body (`body`) is drawn at its point: it takes no "
-                        "anchor (`offset` moves it from the point)");
+      in.fail("anchor",
+              "a text that follows a body (`body`) is drawn at its point: it takes no "
+              "anchor (`offset` moves it from the point)");
     }
     out.body = read_body(in, scene);
     out.point =
@@ -116,9 +117,9 @@ TextOverlay read_text(TableReader& in, const Scene& scene) {
     in.fail("point", "only a text that follows a body (`body = \"NAME\"`) takes a point");
   }
   out.anchor = read_anchor(in, "top-left");
-  out.offset = in.has("offset")  ? read_offset(in)
-               : out.body ? Eigen::Vector2d::Zero()
-                          : default_offset(out.anchor);
+  out.offset = in.has("offset") ? read_offset(in)
+               : out.body       ? Eigen::Vector2d::Zero()
+                                : default_offset(out.anchor);
   out.size = in.optional_number("size", out.size);
   if (!(out.size > 0.0 && out.size <= kMaxTextSize)) {
     in.fail("size", "must be more than 0 and at most " + format_number(kMaxTextSize) +
@@ -273,8 +274,8 @@ AxesOverlay read_axes(TableReader& in, const Scene& scene) {
 }
 
 // Colours of a plot's curves, in turn: none of them the axes' red, green or blue.
-const Rgba kPlotColors[] = {Rgba(0.0, 0.45, 0.70, 1.0), Rgba(0.84, 0.37, 0.0, 1.0),
-                            Rgba(0.0, 0.62, 0.45, 1.0), Rgba(0.80, 0.47, 0.65, 1.0),
+const Rgba kPlotColors[] = {Rgba(0.0, 0.45, 0.70, 1.0),  Rgba(0.84, 0.37, 0.0, 1.0),
+                            Rgba(0.0, 0.62, 0.45, 1.0),  Rgba(0.80, 0.47, 0.65, 1.0),
                             Rgba(0.35, 0.35, 0.38, 1.0), Rgba(0.90, 0.62, 0.0, 1.0)};
 constexpr std::size_t kMaxPlotValues = 8;
 constexpr double kMaxPlotWindow = 600.0;  // s
@@ -302,8 +303,10 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
         parse_text_template(value, body_names(scene), joint_names(scene));
     if (!parsed) in.fail("values", parsed.error());
     if (parsed->values.size() != 1 || !parsed->pieces[0].empty() || !parsed->pieces[1].empty()) {
-      in.fail("values", "each value is one placeholder alone, such as \"{cube.kinetic_energy}\" "
-                        "(found " + in_quotes(value) + ")");
+      in.fail("values",
+              "each value is one placeholder alone, such as \"{cube.kinetic_energy}\" "
+              "(found " +
+                  in_quotes(value) + ")");
     }
     const Placeholder& p = parsed->values[0];
     const bool number =
@@ -311,8 +314,9 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
         (p.source == Placeholder::Source::joint &&
          (p.component >= 0 || p.joint_quantity != JointQuantity::force));
     if (!number) {
-      in.fail("values", value + ": a plot draws numbers: a body's or a joint's quantity, a "
-                                "vector's with .x, .y or .z");
+      in.fail("values", value +
+                            ": a plot draws numbers: a body's or a joint's quantity, a "
+                            "vector's with .x, .y or .z");
     }
     out.values.push_back(p);
     out.labels.push_back(value.substr(1, value.size() - 2));
@@ -320,8 +324,8 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
   if (in.has("labels")) {
     out.labels = read_strings(in, "labels", kMaxPlotValues);
     if (out.labels.size() != out.values.size()) {
-      in.fail("labels", "one label per value: " + std::to_string(out.values.size()) +
-                            " values, " + std::to_string(out.labels.size()) + " labels");
+      in.fail("labels", "one label per value: " + std::to_string(out.values.size()) + " values, " +
+                            std::to_string(out.labels.size()) + " labels");
     }
   }
   for (std::size_t i = 0; i < out.values.size(); ++i) {
@@ -330,8 +334,8 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
   if (in.has("colors")) {
     const toml::array* array = in.table().get("colors")->as_array();
     if (!array || array->size() != out.values.size()) {
-      in.fail("colors", "expected one colour per value (" + std::to_string(out.values.size()) +
-                            ")");
+      in.fail("colors",
+              "expected one colour per value (" + std::to_string(out.values.size()) + ")");
     }
     for (std::size_t i = 0; i < array->size(); ++i) {
       const Vec3 rgb = in.color("colors", *array->get(i));
@@ -346,8 +350,9 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
   if (in.has("y_min")) out.y_min = in.optional_number("y_min", 0.0);
   if (in.has("y_max")) out.y_max = in.optional_number("y_max", 0.0);
   if (out.y_min.has_value() != out.y_max.has_value()) {
-    in.fail(out.y_min ? "y_min" : "y_max", "give y_min and y_max together, or neither (the "
-                                           "values' range)");
+    in.fail(out.y_min ? "y_min" : "y_max",
+            "give y_min and y_max together, or neither (the "
+            "values' range)");
   }
   if (out.y_min && !(*out.y_min < *out.y_max)) {
     in.fail("y_min", "y_min (" + format_number(*out.y_min) + ") must be below y_max (" +
@@ -359,7 +364,8 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
   if (in.has("size")) {
     const toml::array* array = in.table().get("size")->as_array();
     if (!array || array->size() != 2) in.fail("size", "expected [width, height] (px at 720 rows)");
-    out.size = Eigen::Vector2d(in.number("size", *array->get(0)), in.number("size", *array->get(1)));
+    out.size =
+        Eigen::Vector2d(in.number("size", *array->get(0)), in.number("size", *array->get(1)));
     if (!(out.size.x() >= 120.0 && out.size.y() >= 80.0 && out.size.maxCoeff() <= 4000.0)) {
       in.fail("size", "must be at least [120, 80] and at most 4000 px at 720 rows");
     }

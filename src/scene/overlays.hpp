@@ -128,15 +128,15 @@ struct AxesOverlay {
 // legend entry and colour; axes with ticks, the y axis's unit, a legend, all in the scene's font.
 struct PlotOverlay {
   std::vector<Placeholder> values;
-  std::vector<std::string> labels;  // UTF-8, one per value
-  std::vector<Rgba> colors;         // one per value
-  double window = 4.0;              // s of the past shown
+  std::vector<std::string> labels;     // UTF-8, one per value
+  std::vector<Rgba> colors;            // one per value
+  double window = 4.0;                 // s of the past shown
   std::optional<double> y_min, y_max;  // fixed; else the values' range so far, to round ticks
   std::string unit;                    // of the values, beside the y axis ("J"); may be empty
   common::Anchor anchor = common::Anchor::kTopRight;
-  Eigen::Vector2d offset = Eigen::Vector2d::Zero();     // x right, y down (px at 720 rows)
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();      // x right, y down (px at 720 rows)
   Eigen::Vector2d size = Eigen::Vector2d(440.0, 240.0);  // px at 720 rows
-  double text_size = 16.0;                              // em size of its text (px at 720 rows)
+  double text_size = 16.0;                               // em size of its text (px at 720 rows)
   Rgba background = Rgba(1.0, 1.0, 1.0, 0.85);
   Rgba ink = Rgba(0.15, 0.15, 0.17, 1.0);  // axes, ticks and their text
 };

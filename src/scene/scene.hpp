@@ -112,10 +112,10 @@ struct OutputSpec {
   bool frames = true;     // PNG frames
   bool video = true;      // the videos of `formats`; false: none
   std::vector<common::VideoFormat> formats = {common::VideoFormat::mp4};  // each once, in order
-  bool gif_loop = true;               // the GIF plays forever (else once)
-  std::optional<int> gif_fps;         // the GIF's frames per second, at most fps (default: fps)
-  int gif_colors = common::kMaxGifColors;                      // the GIF's palette, 2 to 256
-  common::GifDither gif_dither = common::GifDither::bayer;     // how frames map onto it
+  bool gif_loop = true;        // the GIF plays forever (else once)
+  std::optional<int> gif_fps;  // the GIF's frames per second, at most fps (default: fps)
+  int gif_colors = common::kMaxGifColors;                   // the GIF's palette, 2 to 256
+  common::GifDither gif_dither = common::GifDither::bayer;  // how frames map onto it
   std::optional<double> poster_time;  // s; poster.png shows the frame nearest it (default: middle)
   int crf = 20;                       // x264 constant rate factor, 0 (lossless) to 51
   std::string preset = "veryfast";    // x264 speed preset

@@ -18,7 +18,8 @@ std::string padded(std::string text, const scene::Placeholder& as) {
     case '^':
       return std::string(missing / 2, as.fill) + text + std::string(missing - missing / 2, as.fill);
     case '=': {  // after the sign
-      const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-' || text[0] == ' ');
+      const std::size_t sign =
+          !text.empty() && (text[0] == '+' || text[0] == '-' || text[0] == ' ');
       return text.insert(sign, missing, as.fill);
     }
     default:
@@ -187,8 +188,7 @@ namespace {
 // A body's contact points at the last step and their normal impulses (world frame).
 void add_contact_points(const physics::ContactMemory& memory,
                         std::span<const physics::BodyState> states, std::size_t body,
-                        physics::Vec3& weighted, double& weight, physics::Vec3& plain,
-                        int& count) {
+                        physics::Vec3& weighted, double& weight, physics::Vec3& plain, int& count) {
   const auto add = [&](const physics::Vec3& point, double impulse) {
     weighted += impulse * point;
     weight += impulse;
@@ -253,9 +253,9 @@ std::vector<BodyContact> contact_forces(const sim::Simulation& simulation) {
     double weight = 0.0;
     int count = 0;
     add_contact_points(simulation.contact_memory(), after, i, weighted, weight, plain, count);
-    out[i].point = weight > 0.0  ? physics::Vec3(weighted / weight)
-                   : count > 0   ? physics::Vec3(plain / count)
-                                 : after[i].position();
+    out[i].point = weight > 0.0 ? physics::Vec3(weighted / weight)
+                   : count > 0  ? physics::Vec3(plain / count)
+                                : after[i].position();
   }
   return out;
 }

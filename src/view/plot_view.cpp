@@ -76,7 +76,8 @@ PlotLayout plot_layout(const scene::PlotOverlay& plot, std::span<const PlotSampl
   }
   if (!(low <= high)) low = high = 0.0;
   if (high - low <= 1e-12 * std::max(std::abs(low), std::abs(high))) {  // flat: a unit around it
-    const double half = low == 0.0 ? 1.0 : 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(low))));
+    const double half =
+        low == 0.0 ? 1.0 : 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(low))));
     low -= half;
     high += half;
   }

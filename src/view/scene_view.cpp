@@ -233,10 +233,9 @@ SimulatedFrames::SimulatedFrames(const scene::Scene& scene, const Framing& frami
 std::vector<JointValue> SimulatedFrames::joint_values_at(double t) const {
   if (scene_.joints.empty()) return {};
   const std::int64_t n = simulation_.step_count();
-  return joint_values(simulation_.joints(), simulation_.previous(), simulation_.current(),
-                      simulation_.alpha_at(t),
-                      simulation_.time_of_step(std::max<std::int64_t>(n - 1, 0)),
-                      simulation_.time_of_step(n));
+  return joint_values(
+      simulation_.joints(), simulation_.previous(), simulation_.current(), simulation_.alpha_at(t),
+      simulation_.time_of_step(std::max<std::int64_t>(n - 1, 0)), simulation_.time_of_step(n));
 }
 
 Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {

@@ -92,9 +92,8 @@ TEST_F(JoinCommand, ThreeUnevenChunksJoinIntoTheWholeRender) {
   const fs::path joined = dir_ / "joined";
   EXPECT_NE(read_file(joined / "report.json").find("\"version\": \"" TUMBLE_VERSION "\""),
             std::string::npos);
-  EXPECT_EQ(names_in(joined),
-            (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png", "report.json",
-                                      "spin.mp4"}));
+  EXPECT_EQ(names_in(joined), (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png",
+                                                        "report.json", "spin.mp4"}));
   // The stills a whole render writes, byte for byte: the poster of the chunk that drew its frame
   // (7, the middle: chunk b) and the contact sheet composed again from the joined frames.
   for (const char* still : {"poster.png", "contact_sheet.png"}) {
@@ -237,9 +236,8 @@ TEST_F(JoinCommand, ChunksWithAnMp4AndAWebmJoinIntoBoth) {
   const Outcome run = join({a, b, c});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const fs::path joined = dir_ / "joined";
-  EXPECT_EQ(names_in(joined),
-            (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png", "report.json",
-                                      "spin.mp4", "spin.webm"}));
+  EXPECT_EQ(names_in(joined), (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png",
+                                                        "report.json", "spin.mp4", "spin.webm"}));
   const auto webm = tumble::testing::read_video((joined / "spin.webm").string());
   ASSERT_EQ(webm.error, "");
   ASSERT_EQ(webm.pictures.size(), 15u);
@@ -301,7 +299,8 @@ TEST_F(JoinCommand, RefusesATruncatedWebmSegment) {
 // A GIF's palette is its own frames': --chunk refuses it before rendering anything, and so does
 // `tumble plan` of a scene that writes one (every chunk of it would be refused on the farm).
 TEST_F(JoinCommand, AChunkOfAGifIsRefusedBeforeRendering) {
-  const Outcome run = tumble("render " + scene() + " --chunk 1/2 --format mp4,gif -o " + path("out"));
+  const Outcome run =
+      tumble("render " + scene() + " --chunk 1/2 --format mp4,gif -o " + path("out"));
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("--chunk: gif is not written in parts"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(dir_ / "out"));

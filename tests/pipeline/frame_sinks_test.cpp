@@ -107,12 +107,11 @@ TEST_F(VideoSinkTest, FormatOnTheCommandLineReplacesTheScenesAndNoVideoWritesNon
 
   // Into a folder of its own: over the render above it would keep that render's videos
   // (job/kept_files.hpp).
-  ASSERT_EQ(tumble("render -q " + scene.string() + " -o " + path("plain") + " --no-video").exit_code,
-            0);
+  ASSERT_EQ(
+      tumble("render -q " + scene.string() + " -o " + path("plain") + " --no-video").exit_code, 0);
   EXPECT_TRUE(fs::exists(dir_ / "plain/spin/report.json"));
   for (const char* extension : {"mp4", "webm", "gif"}) {
-    EXPECT_FALSE(fs::exists(dir_ / "plain/spin" / (std::string("spin.") + extension)))
-        << extension;
+    EXPECT_FALSE(fs::exists(dir_ / "plain/spin" / (std::string("spin.") + extension))) << extension;
   }
   const testing::Outcome bad =
       tumble("render -q " + scene.string() + " -o " + path("out") + " --format avi");

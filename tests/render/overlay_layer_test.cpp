@@ -149,17 +149,17 @@ TEST(OverlayLayer, AnArrowTooShortToReadDrawsNeitherItselfNorItsLabel) {
   plain.arrows.clear();
   const io::Image expected = draw(settings, plain);
   FrameView zero = plain;
-  zero.arrows.push_back(
-      Arrow{.from = Vec3(0.5, 0.5, 0.5), .to = Vec3(0.5, 0.5, 0.5), .color = kMagenta, .label = "L"});
+  zero.arrows.push_back(Arrow{
+      .from = Vec3(0.5, 0.5, 0.5), .to = Vec3(0.5, 0.5, 0.5), .color = kMagenta, .label = "L"});
   EXPECT_EQ(draw(settings, zero).rgb, expected.rgb);
   // 1 mm at ~4.7 m: about 0.04 px at 180 rows, under the 3 px (at 720 rows) to read it.
   FrameView tiny = plain;
-  tiny.arrows.push_back(
-      Arrow{.from = Vec3(0.5, 0.5, 0.5), .to = Vec3(0.501, 0.5, 0.5), .color = kMagenta, .label = "L"});
+  tiny.arrows.push_back(Arrow{
+      .from = Vec3(0.5, 0.5, 0.5), .to = Vec3(0.501, 0.5, 0.5), .color = kMagenta, .label = "L"});
   EXPECT_EQ(draw(settings, tiny).rgb, expected.rgb);
   FrameView shown = plain;
-  shown.arrows.push_back(
-      Arrow{.from = Vec3(0.5, 0.5, 0.5), .to = Vec3(1.5, 0.5, 0.5), .color = kMagenta, .label = "L"});
+  shown.arrows.push_back(Arrow{
+      .from = Vec3(0.5, 0.5, 0.5), .to = Vec3(1.5, 0.5, 0.5), .color = kMagenta, .label = "L"});
   EXPECT_NE(draw(settings, shown).rgb, expected.rgb);
 }
 

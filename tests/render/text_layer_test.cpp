@@ -193,8 +193,7 @@ TEST(TextLayer, AFontFontconfigDoesNotHaveIsAnErrorAtCreate) {
 // Two labels of aligned vectors, asked at the same tip (their texts keep apart): their boxes
 // (each text's background, holding its glyphs) are disjoint on the picture.
 TEST(TextLayer, LabelsAtTheSamePointDoNotOverlap) {
-  const Result<std::unique_ptr<TextLayer>> layer =
-      TextLayer::create(640, 360, kDefaultFontFamily);
+  const Result<std::unique_ptr<TextLayer>> layer = TextLayer::create(640, 360, kDefaultFontFamily);
   ASSERT_TRUE(layer) << layer.error();
   const Text label{.text = "\xCF\x89",
                    .anchor = Anchor::kLeft,
@@ -210,8 +209,8 @@ TEST(TextLayer, LabelsAtTheSamePointDoNotOverlap) {
   const PixelBox& b = boxes[1];
   EXPECT_TRUE(a.x + a.width <= b.x || b.x + b.width <= a.x || a.y + a.height <= b.y ||
               b.y + b.height <= a.y)
-      << a.x << "," << a.y << " " << a.width << "x" << a.height << " against " << b.x << ","
-      << b.y << " " << b.width << "x" << b.height;
+      << a.x << "," << a.y << " " << a.width << "x" << a.height << " against " << b.x << "," << b.y
+      << " " << b.width << "x" << b.height;
   // Without keep_apart they would be drawn on top of each other.
   Text plain = label, plain_other = other;
   plain.keep_apart = plain_other.keep_apart = false;

@@ -100,8 +100,9 @@ TEST(TextTemplate, EachMistakeIsAnErrorQuotingThePlaceholder) {
   EXPECT_NE(error_of("{time:5d}").find("unknown format \":5d\""), std::string::npos);
   EXPECT_NE(error_of("{time:.18f}").find("unknown format"), std::string::npos);
   EXPECT_NE(error_of("t = {time").find("without its"), std::string::npos);
-  EXPECT_NE(error_of("{frame:.2f}").find("{frame:.2f}: unknown format \":.2f\" (expected "
-                                         "[[fill]align][sign][0][width][d]: frame is a whole"),
+  EXPECT_NE(error_of("{frame:.2f}")
+                .find("{frame:.2f}: unknown format \":.2f\" (expected "
+                      "[[fill]align][sign][0][width][d]: frame is a whole"),
             std::string::npos);
   EXPECT_NE(error_of("{time:+41.2f}").find("width up to 40"), std::string::npos);
   EXPECT_NE(error_of("{time:+8.3q}").find("unknown format"), std::string::npos);

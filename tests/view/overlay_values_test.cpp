@@ -130,8 +130,8 @@ class LiveValues : public testing::CommandTest {};
 // A cube thrown and spun under gravity and damping, stepped at 7 ms and drawn at 24 fps, so that
 // frame times fall between steps. Frame k's text, as the render source makes it, against the
 // states `tumble simulate` prints for the steps around k / 24 s, interpolated linearly (position
-// and momentum are lerped, physics/interpolation.hpp; a speed as a number): the printed value is the computed one
-// rounded, so within half a unit of its last digit.
+// and momentum are lerped, physics/interpolation.hpp; a speed as a number): the printed value is
+// the computed one rounded, so within half a unit of its last digit.
 TEST_F(LiveValues, AFramesValueIsSimulatesStateInterpolatedAtItsTime) {
   const std::string text = R"(name = "live"
 duration = 1.0
@@ -195,10 +195,10 @@ text = "{cube.speed:.4f}|{cube.position.y:.5f}"
       return rows[n][column] + alpha * (rows[n + 1][column] - rows[n][column]);
     };
     // The speed at each step, lerped as a number (overlay_values.hpp's StepPair).
-    const double speed_before = Vec3(rows[n][4], rows[n][5], rows[n][6]).norm();        // m/s
+    const double speed_before = Vec3(rows[n][4], rows[n][5], rows[n][6]).norm();  // m/s
     const double speed_after = Vec3(rows[n + 1][4], rows[n + 1][5], rows[n + 1][6]).norm();
     const double speed = speed_before + alpha * (speed_after - speed_before);
-    const double y = lerp(2);                                     // m
+    const double y = lerp(2);  // m
     const Result<render::FrameView> view = source.view(k);
     ASSERT_TRUE(view && view->texts.size() == 1u);
     const std::string& shown = view->texts[0].text;

@@ -409,7 +409,7 @@ background = "#00000080"
   ASSERT_TRUE(view);
   EXPECT_TRUE(view->texts.empty());
   ASSERT_EQ(view->labels.size(), 1u);
-  EXPECT_EQ(view->labels[0].text, "cube 3.2 m/s");  // |(1, 3, 0)| = 3.16
+  EXPECT_EQ(view->labels[0].text, "cube 3.2 m/s");                           // |(1, 3, 0)| = 3.16
   EXPECT_TRUE(view->labels[0].position.isApprox(physics::Vec3(0, 0.5, 0)));  // starts at 0
   EXPECT_EQ(view->labels[0].offset, Eigen::Vector2d(4, -10));
   EXPECT_TRUE(view->labels[0].background.has_value());

@@ -34,7 +34,8 @@ TEST(PlotView, TheLayoutSpansTheValuesAndTheWindow) {
   scene::PlotOverlay plot;
   plot.window = 4.0;
   plot.offset = Eigen::Vector2d(-24, 24);
-  const std::vector<PlotSample> samples = {{.t = 0.5, .values = {0.3}}, {.t = 1.0, .values = {19.6}}};
+  const std::vector<PlotSample> samples = {{.t = 0.5, .values = {0.3}},
+                                           {.t = 1.0, .values = {19.6}}};
   const PlotLayout early = plot_layout(plot, samples, 1.0, 1280, 720);
   EXPECT_EQ(early.y_low, 0.0);
   EXPECT_EQ(early.y_high, 20.0);
@@ -115,9 +116,9 @@ size = [640, 360]
     std::size_t n = 0;
     while (n + 1 < energy.size() && energy[n + 1].first < t) ++n;
     const double alpha = (t - energy[n].first) / (energy[n + 1].first - energy[n].first);
-    const double value =
-        alpha <= 0.0 ? energy[n].second
-                     : energy[n].second + alpha * (energy[n + 1].second - energy[n].second);
+    const double value = alpha <= 0.0
+                             ? energy[n].second
+                             : energy[n].second + alpha * (energy[n + 1].second - energy[n].second);
     samples.push_back({.t = t, .values = {value}});
   }
   const Result<scene::Scene> loaded = scene::load_scene_file(file.string());
