@@ -23,6 +23,7 @@
 #include "scene/scene_loader.hpp"
 #include "scene/stability_report.hpp"
 #include "sys/interrupt.hpp"
+#include "view/overlay_view.hpp"
 
 namespace tumble::cli {
 namespace {
@@ -58,6 +59,7 @@ std::string settings_json(const job::RenderJob& job, const job::RenderResult& re
   }
   out << "], \"crf\": " << scene.output.crf
       << ", \"preset\": " << io::json_string(scene.output.preset)
+      << ", \"font\": " << io::json_string(view::overlay_font(scene))
       << ", \"opengl\": " << io::json_string(result.opengl) << "}";
   return out.str();
 }

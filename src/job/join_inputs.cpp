@@ -62,7 +62,8 @@ Result<ChunkReport> chunk_fields(const io::JsonValue& report, const fs::path& fo
   chunk.has_frames = frames_directory->kind == io::JsonValue::Kind::string;
   if (const io::JsonValue* kept = report.find("kept")) {
     for (const io::JsonValue& item : kept->items) {
-      if (const io::JsonValue* name = item.find("file")) chunk.kept.push_back(name->string);
+      const io::JsonValue* name = item.find("file");
+      if (name && name->kind == io::JsonValue::Kind::string) chunk.kept.push_back(name->string);
     }
   }
   chunk.scene = *scene;

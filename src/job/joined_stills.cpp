@@ -51,15 +51,23 @@ Result<JoinedStills> write_joined_stills(const std::vector<ChunkReport>& chunks,
   const io::JsonValue* fps = first.settings.find("fps");
   if (!fps || fps->number < 1) return Error{first.folder.string() + ": report.json: no fps"};
   const std::int64_t end = first.scene_frames;
-  pipeline::ContactSheet sheet((staging / "contact_sheet.png").string(), 0, end,
-                               static_cast<int>(fps->number), png_settings(first.settings));
+  // The labels' font as the chunks' render drew them (report.json settings.font; the default
+  // for a report written before it was recorded).
+  const io::JsonValue* font = first.settings.find("font");
+  const std::string family = font && font->kind == io::JsonValue::Kind::string
+                                 ? font->string
+                                 : std::string(render::kDefaultFontFamily);
+  Result<std::unique_ptr<pipeline::ContactSheet>> sheet = pipeline::ContactSheet::open(
+      (staging / "contact_sheet.png").string(), 0, end, static_cast<int>(fps->number),
+      png_settings(first.settings), family);
+  if (!sheet) return Error{sheet.error()};
   for (const std::int64_t k : pipeline::contact_sheet_frames(0, end)) {
     const Result<io::Image> frame =
         io::read_png((staging / "frames" / pipeline::png_frame_name(k)).string());
     if (!frame) return Error{frame.error()};
-    if (Result<void> taken = sheet.write(k, *frame); !taken) return Error{taken.error()};
+    if (Result<void> taken = (*sheet)->write(k, *frame); !taken) return Error{taken.error()};
   }
-  if (Result<void> finished = sheet.finish(); !finished) return Error{finished.error()};
+  if (Result<void> finished = (*sheet)->finish(); !finished) return Error{finished.error()};
   stills.contact_sheet = true;
   return stills;
 }

@@ -21,11 +21,13 @@ constexpr const char* kFrames = "frames";
 constexpr const char* kPoster = "poster.png";
 constexpr const char* kContactSheet = "contact_sheet.png";
 
-// The whole number at `key` of `object`, or -1 when there is none.
+// The whole number from 0 to 10^15 at `key` of `object` (every width, rate and frame number a
+// render writes), or -1 when there is none (a hand-edited report: nothing is cast out of range).
 long long whole_number(const JsonValue* object, std::string_view key) {
   const JsonValue* value = object ? object->find(key) : nullptr;
   if (!value || value->kind != JsonValue::Kind::number ||
-      value->number != std::floor(value->number)) {
+      value->number != std::floor(value->number) || !(value->number >= 0.0) ||
+      value->number > 1e15) {
     return -1;
   }
   return static_cast<long long>(value->number);

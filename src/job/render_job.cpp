@@ -99,9 +99,11 @@ Result<std::vector<std::unique_ptr<pipeline::FrameSink>>> open_sinks(const Rende
   if (job.stills) {
     sinks.push_back(std::make_unique<pipeline::PosterSink>((folder / "poster.png").string(),
                                                            scene::poster_frame(scene), job.png));
-    sinks.push_back(std::make_unique<pipeline::ContactSheet>(
-        (folder / "contact_sheet.png").string(), job.first, job.end, scene.fps, job.png,
-        view::overlay_font(scene)));
+    Result<std::unique_ptr<pipeline::ContactSheet>> sheet =
+        pipeline::ContactSheet::open((folder / "contact_sheet.png").string(), job.first, job.end,
+                                     scene.fps, job.png, view::overlay_font(scene));
+    if (!sheet) return Error{sheet.error()};
+    sinks.push_back(std::move(*sheet));
   }
   return sinks;
 }

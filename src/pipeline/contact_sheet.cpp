@@ -129,13 +129,20 @@ std::array<int, 2> sheet_tile_origin(int index, int tile_width, int tile_height)
           gap + row * (tile_height + sheet_label_height(tile_height) + gap)};
 }
 
-ContactSheet::ContactSheet(std::string path, std::int64_t first, std::int64_t end, int fps,
-                           const io::PngSettings& settings, std::string font_family)
-    : path_(std::move(path)),
-      fps_(fps),
-      settings_(settings),
-      font_family_(std::move(font_family)),
-      frames_(contact_sheet_frames(first, end)) {}
+Result<std::unique_ptr<ContactSheet>> ContactSheet::open(std::string path, std::int64_t first,
+                                                         std::int64_t end, int fps,
+                                                         const io::PngSettings& settings,
+                                                         std::string_view font_family) {
+  Result<std::unique_ptr<render::Font>> font = render::Font::open(font_family);
+  if (!font) return Error{path + ": its labels' font: " + font.error()};
+  std::unique_ptr<ContactSheet> out(new ContactSheet());
+  out->path_ = std::move(path);
+  out->fps_ = fps;
+  out->settings_ = settings;
+  out->font_ = std::move(*font);
+  out->frames_ = contact_sheet_frames(first, end);
+  return out;
+}
 
 Result<void> ContactSheet::write(std::int64_t frame, const io::Image& image) {
   if (std::find(frames_.begin(), frames_.end(), frame) != frames_.end()) {
@@ -146,8 +153,6 @@ Result<void> ContactSheet::write(std::int64_t frame, const io::Image& image) {
 
 Result<void> ContactSheet::finish() {
   if (tiles_.empty()) return Result<void>::success();
-  Result<std::unique_ptr<render::Font>> font = render::Font::open(font_family_);
-  if (!font) return Error{path_ + ": " + font.error()};
   const int tile_width = tiles_.front().width;
   const int tile_height = tiles_.front().height;
   const int strip = sheet_label_height(tile_height);
@@ -160,7 +165,7 @@ Result<void> ContactSheet::finish() {
     copy_into(sheet, tiles_[i], left, top);
     char label[40];
     std::snprintf(label, sizeof label, "t = %.2f s", static_cast<double>(frames_[i]) / fps_);
-    draw_label(sheet, **font, label, strip, left + tile_width / 2, top + tile_height + strip / 2);
+    draw_label(sheet, *font_, label, strip, left + tile_width / 2, top + tile_height + strip / 2);
   }
   return io::write_png(path_, sheet, settings_);
 }

@@ -5,7 +5,9 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "pipeline/frame_sinks.hpp"
@@ -39,20 +41,22 @@ std::array<int, 2> sheet_tile_origin(int index, int tile_width, int tile_height)
 class ContactSheet final : public FrameSink {
  public:
   // A sheet of the rendered frames [first, end) of a video at `fps` frames per second, its
-  // times written in `font_family` (fontconfig's name: the scene's [render] font).
-  ContactSheet(std::string path, std::int64_t first, std::int64_t end, int fps,
-               const io::PngSettings& settings,
-               std::string font_family = std::string(render::kDefaultFontFamily));
+  // times written in `font_family` (fontconfig's name: the scene's [render] font), opened here,
+  // before any frame is drawn: an error names the sheet and the font.
+  static Result<std::unique_ptr<ContactSheet>> open(
+      std::string path, std::int64_t first, std::int64_t end, int fps,
+      const io::PngSettings& settings, std::string_view font_family = render::kDefaultFontFamily);
   const char* stage() const override { return "contact_sheet"; }
   Result<void> write(std::int64_t frame, const io::Image& image) override;
-  // Writes the sheet; an error when the font cannot be opened or the PNG written.
+  // Writes the sheet; an error when the PNG cannot be written.
   Result<void> finish() override;
 
  private:
+  ContactSheet() = default;
   std::string path_;
-  int fps_;
+  int fps_ = 1;
   io::PngSettings settings_;
-  std::string font_family_;
+  std::unique_ptr<render::Font> font_;
   std::vector<std::int64_t> frames_;  // shown, in tile order
   std::vector<io::Image> tiles_;      // one per frame of frames_, once it has passed
 };

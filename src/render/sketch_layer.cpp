@@ -38,6 +38,7 @@ void draw_stroke(const Stroke& stroke, io::Image& image) {
   if (stroke.points.empty()) return;
   const double scale = scale_to_frame(1.0, image.height);  // px per px at 720 rows
   const double half = 0.5 * std::max(stroke.width * scale, 1.0);
+  const double reach = half + 1.0;  // past it, no pixel centre is covered
   std::vector<Eigen::Vector2d> points;
   points.reserve(stroke.points.size());
   for (const Eigen::Vector2d& p : stroke.points) points.push_back(p * scale);
@@ -46,30 +47,36 @@ void draw_stroke(const Stroke& stroke, io::Image& image) {
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
-  const int x0 = std::max(0, static_cast<int>(std::floor(low.x() - half - 1.0)));
-  const int y0 = std::max(0, static_cast<int>(std::floor(low.y() - half - 1.0)));
-  const int x1 = std::min(image.width - 1, static_cast<int>(std::ceil(high.x() + half + 1.0)));
-  const int y1 = std::min(image.height - 1, static_cast<int>(std::ceil(high.y() + half + 1.0)));
+  // The stroke's pixels on the frame, and their coverage: each segment raises the coverage of
+  // the pixels near it (the largest, so joints never blend twice), then all blend once. Each
+  // segment visits only its own box: the cost is the stroke's length times its width.
+  const int x0 = std::max(0, static_cast<int>(std::floor(low.x() - reach)));
+  const int y0 = std::max(0, static_cast<int>(std::floor(low.y() - reach)));
+  const int x1 = std::min(image.width - 1, static_cast<int>(std::ceil(high.x() + reach)));
+  const int y1 = std::min(image.height - 1, static_cast<int>(std::ceil(high.y() + reach)));
+  if (x1 < x0 || y1 < y0) return;
+  const int width = x1 - x0 + 1;
+  std::vector<float> coverage(static_cast<std::size_t>(width) * (y1 - y0 + 1), 0.0f);
+  const auto cover = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    const int sx0 = std::max(x0, static_cast<int>(std::floor(std::min(a.x(), b.x()) - reach)));
+    const int sy0 = std::max(y0, static_cast<int>(std::floor(std::min(a.y(), b.y()) - reach)));
+    const int sx1 = std::min(x1, static_cast<int>(std::ceil(std::max(a.x(), b.x()) + reach)));
+    const int sy1 = std::min(y1, static_cast<int>(std::ceil(std::max(a.y(), b.y()) + reach)));
+    for (int y = sy0; y <= sy1; ++y) {
+      for (int x = sx0; x <= sx1; ++x) {
+        const double d = distance_to_segment(Eigen::Vector2d(x + 0.5, y + 0.5), a, b);
+        const float c = static_cast<float>(std::clamp(half + 0.5 - d, 0.0, 1.0));
+        float& kept = coverage[static_cast<std::size_t>(y - y0) * width + (x - x0)];
+        kept = std::max(kept, c);
+      }
+    }
+  };
+  if (points.size() == 1) cover(points[0], points[0]);
+  for (std::size_t k = 1; k < points.size(); ++k) cover(points[k - 1], points[k]);
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
-      const Eigen::Vector2d centre(x + 0.5, y + 0.5);
-      double nearest = distance_to_segment(centre, points[0], points[0]);
-      for (std::size_t k = 1; k < points.size(); ++k) {
-        // Only segments whose box, grown by the half width and a pixel, holds the pixel.
-        const Eigen::Vector2d& a = points[k - 1];
-        const Eigen::Vector2d& b = points[k];
-        if (centre.x() < std::min(a.x(), b.x()) - half - 1.0 ||
-            centre.x() > std::max(a.x(), b.x()) + half + 1.0 ||
-            centre.y() < std::min(a.y(), b.y()) - half - 1.0 ||
-            centre.y() > std::max(a.y(), b.y()) + half + 1.0) {
-          continue;
-        }
-        nearest = std::min(nearest, distance_to_segment(centre, a, b));
-      }
-      const double coverage = std::clamp(half + 0.5 - nearest, 0.0, 1.0);
-      if (coverage > 0.0) {
-        blend(image, static_cast<std::size_t>(y) * image.width + x, stroke.color, coverage);
-      }
+      const float c = coverage[static_cast<std::size_t>(y - y0) * width + (x - x0)];
+      if (c > 0.0f) blend(image, static_cast<std::size_t>(y) * image.width + x, stroke.color, c);
     }
   }
 }

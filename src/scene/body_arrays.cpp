@@ -1,5 +1,6 @@
 #include "scene/body_arrays.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "scene/limits.hpp"
@@ -81,14 +82,18 @@ BodyArray read_body_array(TableReader& in, const Vec3& position) {
     return array;
   }
   read_counts(in, array);
-  // The far corner is the farthest from the first body: every other lies between them.
-  Vec3 last = position;
-  for (std::size_t a = 0; a < 3; ++a) {
-    last += static_cast<double>(array.counts[a] - 1) * array.steps[a];
+  // The farthest body from the origin is at a corner of the array's box (its distance is
+  // convex): each of the 8, first body's and last body's ends along each axis.
+  double reach = 0.0;  // m
+  for (int corner = 0; corner < 8; ++corner) {
+    Vec3 at = position;
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (corner & (1 << a)) at += static_cast<double>(array.counts[a] - 1) * array.steps[a];
+    }
+    reach = std::max(reach, at.stableNorm());
   }
-  const double reach = last.stableNorm();  // m
   if (!(reach <= sim::kMaxPosition)) {
-    in.fail("spacing", "puts the array's last body " + format_number(reach) +
+    in.fail("spacing", "puts the array's farthest body " + format_number(reach) +
                            " m from the origin, past the " + format_number(sim::kMaxPosition) +
                            " m tumble can simulate");
   }

@@ -371,9 +371,12 @@ PlotOverlay read_plot(TableReader& in, const Scene& scene) {
     }
   }
   out.text_size = in.optional_number("text_size", out.text_size);
-  if (!(out.text_size >= 6.0 && out.text_size <= 0.25 * out.size.y())) {
-    in.fail("text_size", "must be at least 6 and at most a quarter of the plot's height (" +
-                             format_number(0.25 * out.size.y()) + " px at 720 rows)");
+  // Its margins take 6 em across and 4 em down: the graph keeps at least half the plot.
+  const double largest = std::min(out.size.x() / 12.0, out.size.y() / 8.0);
+  if (!(out.text_size >= 6.0 && out.text_size <= largest)) {
+    in.fail("text_size", "must be at least 6 and at most " + format_number(largest) +
+                             " px at 720 rows for a plot of this size (a twelfth of its width "
+                             "and an eighth of its height: its graph keeps half of it)");
   }
   out.background = in.optional_rgba("background", out.background);
   out.ink = in.optional_rgba("color", out.ink);

@@ -37,20 +37,21 @@ constexpr int kMaxWidth = 40;  // characters a number is padded to
 bool parse_format(std::string_view spec, Placeholder& out, bool whole) {
   const auto is_align = [](char c) { return c == '<' || c == '>' || c == '^' || c == '='; };
   std::size_t i = 0;
+  bool filled = false, aligned = false;  // given in the spec
   if (spec.size() >= 2 && is_align(spec[1]) && spec[0] != '{' && spec[0] != '}') {
     out.fill = spec[0];
     out.align = spec[1];
+    filled = aligned = true;
     i = 2;
   } else if (!spec.empty() && is_align(spec[0])) {
     out.align = spec[0];
+    aligned = true;
     i = 1;
   }
   if (i < spec.size() && (spec[i] == '+' || spec[i] == '-' || spec[i] == ' ')) out.sign = spec[i++];
-  if (i < spec.size() && spec[i] == '0') {  // zero padding: '0' after the sign, unless given
-    if (i == 0 || (i == 1 && !is_align(spec[0]))) {
-      out.fill = '0';
-      out.align = '=';
-    }
+  if (i < spec.size() && spec[i] == '0') {  // as Python: zeros, after the sign unless aligned
+    if (!filled) out.fill = '0';
+    if (!aligned) out.align = '=';
     ++i;
   }
   const auto number = [&](int& value) {

@@ -57,6 +57,7 @@ std::vector<JointValue> joint_values(const physics::JointWorld& joints,
                                      const std::vector<physics::BodyState>& previous,
                                      const std::vector<physics::BodyState>& current, double alpha,
                                      double t_previous, double t_current) {
+  if (alpha >= 1.0) return joint_values(joints, current, t_current);
   std::vector<JointValue> out = joint_values(joints, previous, t_previous);
   if (alpha == 0.0) return out;
   const std::vector<JointValue> after = joint_values(joints, current, t_current);

@@ -75,6 +75,7 @@ physics::Vec3 body_quantity(BodyQuantity quantity, const physics::BodyState& sta
 }
 
 physics::Vec3 body_quantity(BodyQuantity quantity, const StepPair& steps, std::size_t body) {
+  if (steps.alpha >= 1.0) return body_quantity(quantity, steps.current[body]);
   const physics::Vec3 before = body_quantity(quantity, steps.previous[body]);
   if (steps.alpha == 0.0) return before;
   return before + steps.alpha * (body_quantity(quantity, steps.current[body]) - before);
@@ -151,9 +152,11 @@ std::string format_text(const scene::TextTemplate& text, const StepPair& steps, 
 physics::Vec3 vector_value(const scene::VectorOverlay& overlay, const scene::BodySpec& body,
                            const StepPair& steps, const physics::BodyState& drawn, double t) {
   const auto interpolated = [&](auto of) {
+    if (steps.alpha >= 1.0) return physics::Vec3(of(steps.current[overlay.body]));
     const physics::Vec3 before = of(steps.previous[overlay.body]);
-    return steps.alpha == 0.0 ? before
-                              : before + steps.alpha * (of(steps.current[overlay.body]) - before);
+    return steps.alpha == 0.0
+               ? before
+               : physics::Vec3(before + steps.alpha * (of(steps.current[overlay.body]) - before));
   };
   switch (overlay.quantity) {
     case scene::VectorQuantity::velocity:
@@ -241,14 +244,6 @@ std::vector<BodyContact> contact_forces(const sim::Simulation& simulation) {
     }
   }
   for (std::size_t i = 0; i < out.size(); ++i) {
-    physics::Vec3 impulse = after[i].momentum() - before[i].momentum() - joint_impulse[i];
-    for (const physics::ForceLaw& law : models[i].forces) {
-      if (std::holds_alternative<physics::PenaltyContact>(law)) continue;  // the contact itself
-      impulse -= 0.5 * dt *
-                 (physics::evaluate(law, models[i].constants, before[i], t0).force +
-                  physics::evaluate(law, models[i].constants, after[i], t1).force);
-    }
-    out[i].force = models[i].is_static ? physics::Vec3::Zero() : physics::Vec3(impulse / dt);
     physics::Vec3 weighted = physics::Vec3::Zero(), plain = physics::Vec3::Zero();
     double weight = 0.0;
     int count = 0;
@@ -256,6 +251,20 @@ std::vector<BodyContact> contact_forces(const sim::Simulation& simulation) {
     out[i].point = weight > 0.0 ? physics::Vec3(weighted / weight)
                    : count > 0  ? physics::Vec3(plain / count)
                                 : after[i].position();
+    const bool penalty = std::any_of(
+        models[i].forces.begin(), models[i].forces.end(),
+        [](const auto& law) { return std::holds_alternative<physics::PenaltyContact>(law); });
+    // Touching nothing at the step (impulse contact): no contact force, whatever rounding the
+    // momentum balance below would leave.
+    if (models[i].is_static || (count == 0 && !penalty)) continue;
+    physics::Vec3 impulse = after[i].momentum() - before[i].momentum() - joint_impulse[i];
+    for (const physics::ForceLaw& law : models[i].forces) {
+      if (std::holds_alternative<physics::PenaltyContact>(law)) continue;  // the contact itself
+      impulse -= 0.5 * dt *
+                 (physics::evaluate(law, models[i].constants, before[i], t0).force +
+                  physics::evaluate(law, models[i].constants, after[i], t1).force);
+    }
+    out[i].force = impulse / dt;
   }
   return out;
 }

@@ -67,9 +67,10 @@ struct BodyContact {
 // Each body's contact force over the simulation's last step, from previous() to current(): the
 // change of its momentum less the impulse of its force laws (the trapezoid rule over the step:
 // exact for gravity and constant forces) and of its joints, over dt. With penalty contact its
-// contact law is the contact. The centre of pressure is the mean of the body's contact points
-// at the last step weighted by their normal impulses (their plain mean when all are zero; the
-// body's centre when it touches nothing, or with penalty contact).
+// contact law is the contact; with impulse contact a body with no contact point at the step
+// has none. The centre of pressure is the mean of the body's contact points at the last step
+// weighted by their normal impulses (their plain mean when all are zero; the body's centre when
+// it touches nothing, or with penalty contact).
 std::vector<BodyContact> contact_forces(const sim::Simulation& simulation);
 
 }  // namespace tumble::view

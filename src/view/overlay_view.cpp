@@ -156,8 +156,8 @@ void OverlayItems::record(const std::vector<physics::BodyState>& states, const S
         sample.values.push_back(placeholder_number(value, steps, joints));
       }
       samples.push_back(std::move(sample));
-      // A sample just before the window's start stays: the curve reaches its left edge.
-      while (samples.size() > 2 && samples[1].t < t - plot->window - 1e-9) samples.pop_front();
+      // Only the window's samples are drawn (plot_view.hpp); older ones go.
+      while (!samples.empty() && samples.front().t < t - plot->window - 1e-9) samples.pop_front();
       continue;
     }
     const auto* trail = std::get_if<scene::TrailOverlay>(&scene_.overlays[i]);

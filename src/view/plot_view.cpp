@@ -16,7 +16,7 @@ constexpr double kBottomMargin = 2.0;  // the time ticks' labels
 
 // A tick's value as text, with as many decimals as the step needs ("0.5", "10", "-2.5").
 std::string tick_text(double value, double step, const char* unit) {
-  const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(step) + 1e-9)));
+  const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 12);
   if (std::abs(value) < 1e-9 * step) value = 0.0;  // never "-0"
   char text[64];
   std::snprintf(text, sizeof text, "%.*f%s", decimals, value, unit);
@@ -75,9 +75,14 @@ PlotLayout plot_layout(const scene::PlotOverlay& plot, std::span<const PlotSampl
     }
   }
   if (!(low <= high)) low = high = 0.0;
-  if (high - low <= 1e-12 * std::max(std::abs(low), std::abs(high))) {  // flat: a unit around it
-    const double half =
-        low == 0.0 ? 1.0 : 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(low))));
+  // Flat (to rounding, or a noise of 1e-12 about 0): a unit of its size around it, so that no
+  // axis magnifies rounding into ticks of 1e-15.
+  if (high - low <= 1e-9 * std::max(std::abs(low), std::abs(high)) || high - low < 1e-12) {
+    // About 0 (within 1e-12): [-1, 1]; else a half unit of its size each way.
+    const double middle = 0.5 * (low + high);
+    const bool zero = std::abs(middle) < 1e-12;
+    const double half = zero ? 1.0 : 0.5 * std::pow(10.0, std::floor(std::log10(std::abs(middle))));
+    if (zero) low = high = 0.0;
     low -= half;
     high += half;
   }
@@ -108,10 +113,12 @@ void add_plot(const scene::PlotOverlay& plot, std::span<const PlotSample> sample
                                       .height = em,
                                       .color = color});
   };
-  // Value ticks: a grid line and the value, right-aligned left of the graph.
-  const int y_ticks = static_cast<int>(std::lround((layout.y_high - layout.y_low) / layout.y_step));
-  for (int k = 0; k <= y_ticks; ++k) {
-    const double value = layout.y_low + k * layout.y_step;
+  // Value ticks at the whole multiples of the step within the axis: a grid line and the value,
+  // right-aligned left of the graph.
+  const double first_tick = std::ceil(layout.y_low / layout.y_step - 1e-9);
+  const double last_tick = std::floor(layout.y_high / layout.y_step + 1e-9);
+  for (double k = first_tick; k <= last_tick; k += 1.0) {
+    const double value = k * layout.y_step;
     const double y = layout.at(layout.t_low, value).y();
     view.strokes.push_back({.points = {{a.x(), y}, {b.x(), y}}, .width = 1.0, .color = grid});
     text(tick_text(value, layout.y_step, ""), render::Anchor::kRight,
@@ -129,7 +136,8 @@ void add_plot(const scene::PlotOverlay& plot, std::span<const PlotSample> sample
   // The graph's frame.
   view.strokes.push_back(
       {.points = {a, {b.x(), a.y()}, b, {a.x(), b.y()}, a}, .width = 1.2, .color = plot.ink});
-  // The curves, clipped to the graph's height.
+  // The curves, each value clamped to the graph's edges (a value past a fixed y_min or y_max
+  // runs along the edge).
   for (std::size_t v = 0; v < plot.values.size(); ++v) {
     render::Stroke curve{.points = {}, .width = 2.0, .color = plot.colors[v]};
     for (const PlotSample& sample : samples) {

@@ -54,7 +54,9 @@ TEST(ContactSheet, ShrinkIsTheRoundedMeanOfEachFourByFourBlock) {
 TEST(ContactSheet, TilesHaveGapsAndThinLabelledStrips) {
   const std::string path =
       (std::filesystem::temp_directory_path() / "tumble_contact_sheet_test.png").string();
-  ContactSheet sheet_sink(path, 0, 240, 60, {});
+  Result<std::unique_ptr<ContactSheet>> opened = ContactSheet::open(path, 0, 240, 60, {});
+  ASSERT_TRUE(opened) << opened.error();
+  ContactSheet& sheet_sink = **opened;
   for (std::int64_t k = 0; k < 240; ++k) {
     io::Image frame(1280, 720);
     std::fill(frame.rgb.begin(), frame.rgb.end(), std::uint8_t{150});
@@ -161,6 +163,16 @@ TEST_F(ContactSheetRun, WithAFrameRangeBothKeepToTheFramesRendered) {
       tumble("render -q " + scene.string() + " -o " + path("out") + " --frames 3:9").exit_code, 0);
   EXPECT_FALSE(fs::exists(out("poster.png")));  // frame 12 was not rendered
   expect_tiles_are_frames({3, 4, 5, 6, 7, 8});
+}
+
+// A font that is not installed is an error when the sheet is opened, before any frame is drawn,
+// naming the sheet and the family.
+TEST(ContactSheet, AMissingFontIsAnErrorBeforeAnyFrame) {
+  const Result<std::unique_ptr<ContactSheet>> opened =
+      ContactSheet::open("sheet.png", 0, 240, 60, {}, "No Such Font Family 1234");
+  ASSERT_FALSE(opened);
+  EXPECT_NE(opened.error().find("sheet.png: its labels' font: "), std::string::npos);
+  EXPECT_NE(opened.error().find("No Such Font Family 1234"), std::string::npos);
 }
 
 }  // namespace

@@ -77,7 +77,9 @@ TEST(OverlayValues, PadsWithSignWidthAndFill) {
   EXPECT_EQ(formatted("[{cube.position.x: .1f}]"), "[ 1.0]");
   EXPECT_EQ(formatted("[{cube.position.x:*<7.1f}]"), "[1.0****]");
   EXPECT_EQ(formatted("[{cube.position.x:^7.1f}]"), "[  1.0  ]");
-  EXPECT_EQ(formatted("[{cube.position.x:2.1f}]"), "[1.0]");  // wider than asked: kept whole
+  EXPECT_EQ(formatted("[{cube.position.x:2.1f}]"), "[1.0]");         // wider than asked: kept whole
+  EXPECT_EQ(formatted("[{cube.position.x:<08.3f}]"), "[1.000000]");  // as Python: '0' fills
+  EXPECT_EQ(formatted("[{cube.position.x:*<08.3f}]"), "[1.000***]");
   EXPECT_EQ(formatted("{cube.velocity:+5.1f}"), "( +3.0,  +4.0,  +0.0)");
   EXPECT_EQ(formatted("[{frame:5d}] [{frame:+}] [{frame:<4}]", 1.0, 75), "[   75] [+75] [75  ]");
 }

@@ -367,6 +367,27 @@ scale = 0.1
   }
 }
 
+// A cube tossed up and falling (no plane to touch) has no contact: its contact force is exactly
+// zero, so the renderer draws no arrow (too short to read), where the momentum balance alone
+// would leave a rounding's worth.
+TEST(OverlayView, ABodyInTheAirHasNoContactForce) {
+  const scene::Scene scene = parse(R"(
+[[overlays]]
+kind = "vector"
+body = "cube"
+quantity = "contact_force"
+label = "contact"
+)");
+  const Result<Framing> framing = frame_scene(scene, 60, [] { return false; });
+  ASSERT_TRUE(framing);
+  SimulatedFrames source(scene, *framing, [] { return false; });
+  for (const std::int64_t frame : {5, 10, 20}) {
+    const Result<render::FrameView> view = source.view(frame);
+    ASSERT_TRUE(view && view->arrows.size() == 1u);
+    EXPECT_EQ(view->arrows[0].to, view->arrows[0].from) << "frame " << frame;
+  }
+}
+
 // A torque arrow is the torque of the body's force laws about its centre: a push of 2 N along z
 // at (1, 0, 0) of the body turns it about -y with 2 N m.
 TEST(OverlayView, ATorqueArrowIsTheTorqueOfTheLaws) {

@@ -54,6 +54,40 @@ TEST(PlotView, TheLayoutSpansTheValuesAndTheWindow) {
   EXPECT_EQ(late.y_high, 1.0);
 }
 
+// With a fixed value axis of [0, 7] the ticks are the round values inside it, 0, 2, 4 and 6,
+// none past its top; a value flat at 1e-13 about 0 gets an axis of [-1, 1], not one of 1e-13.
+TEST(PlotView, TicksStayInsideAFixedAxisAndNoiseIsFlat) {
+  scene::PlotOverlay plot;
+  plot.values.resize(1);
+  plot.labels = {"v"};
+  plot.colors = {render::Rgba(0, 0, 1, 1)};
+  plot.y_min = 0.0;
+  plot.y_max = 7.0;
+  const std::vector<PlotSample> samples = {{.t = 0.5, .values = {3.0}}};
+  render::FrameView view;
+  add_plot(plot, samples, 1.0, 1280, 720, view);
+  std::vector<std::string> ticks;
+  for (const render::Text& text : view.texts) {
+    if (text.anchor == render::Anchor::kRight) ticks.push_back(text.text);
+  }
+  EXPECT_EQ(ticks, (std::vector<std::string>{"0", "2", "4", "6"}));
+  const PlotLayout layout = plot_layout(plot, samples, 1.0, 1280, 720);
+  for (const render::Stroke& stroke : view.strokes) {
+    for (const Eigen::Vector2d& point : stroke.points) {
+      EXPECT_GE(point.y(), layout.corner.y());
+      EXPECT_LE(point.y(), layout.corner.y() + layout.size.y());
+    }
+  }
+  scene::PlotOverlay free = plot;
+  free.y_min.reset();
+  free.y_max.reset();
+  const std::vector<PlotSample> noise = {{.t = 0.1, .values = {1e-13}},
+                                         {.t = 0.2, .values = {-2e-13}}};
+  const PlotLayout flat = plot_layout(free, noise, 1.0, 1280, 720);
+  EXPECT_EQ(flat.y_low, -1.0);
+  EXPECT_EQ(flat.y_high, 1.0);
+}
+
 class PlotFrame : public testing::CommandTest {};
 
 // A cube dropped on the floor bouncing for 4 s, its kinetic energy plotted in blue over the
