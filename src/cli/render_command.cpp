@@ -57,7 +57,7 @@ std::string settings_json(const job::RenderJob& job, const job::RenderResult& re
   for (std::size_t i = 0; i < scene.output.formats.size(); ++i) {
     out << (i ? ", " : "") << io::json_string(io::video_format_name(scene.output.formats[i]));
   }
-  out << "], \"crf\": " << scene.output.crf
+  out << "], \"crf\": " << scene.output.crf << ", \"webm_crf\": " << scene.output.webm_crf
       << ", \"preset\": " << io::json_string(scene.output.preset)
       << ", \"font\": " << io::json_string(view::overlay_font(scene))
       << ", \"opengl\": " << io::json_string(result.opengl) << "}";

@@ -83,6 +83,7 @@ Result<std::vector<std::unique_ptr<pipeline::FrameSink>>> open_sinks(const Rende
                                      .height = scene.render.height,
                                      .fps = scene.fps,
                                      .crf = scene.output.crf,
+                                     .vp9_crf = scene.output.webm_crf,
                                      .loop = scene.output.gif_loop,
                                      .gif_fps = scene.output.gif_fps.value_or(0),
                                      .gif_colors = scene.output.gif_colors,

@@ -129,6 +129,7 @@ void read_output(TableReader& in, Scene& scene) {
   o.frames = in.optional_bool("frames", o.frames);
   o.video = in.optional_bool("video", o.video);
   o.crf = static_cast<int>(in.optional_integer("crf", o.crf, 0, 51));
+  o.webm_crf = static_cast<int>(in.optional_integer("webm_crf", o.webm_crf, 0, 63));
   o.preset = in.optional_string("preset", o.preset);
   if (std::find(kPresets.begin(), kPresets.end(), o.preset) == kPresets.end()) {
     in.fail("preset", "unknown x264 preset " + in_quotes(o.preset) +

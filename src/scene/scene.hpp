@@ -118,6 +118,7 @@ struct OutputSpec {
   common::GifDither gif_dither = common::GifDither::bayer;  // how frames map onto it
   std::optional<double> poster_time;  // s; poster.png shows the frame nearest it (default: middle)
   int crf = 20;                       // x264 constant rate factor, 0 (lossless) to 51
+  int webm_crf = 30;                  // VP9's constant quality, 0 (best) to 63
   std::string preset = "veryfast";    // x264 speed preset
 };
 
