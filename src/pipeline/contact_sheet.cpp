@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <string>
 #include <string_view>
+
+#include "render/text_layout.hpp"
 
 namespace tumble::pipeline {
 namespace {
@@ -26,45 +29,27 @@ void fill_rows(io::Image& sheet, int left, int top, int width, int height,
   }
 }
 
-// The glyphs of an ASCII `label` at `pixel_height` with their pen positions (px from the label's
-// start), and the label's width (px).
-struct LabelGlyphs {
-  std::vector<std::pair<std::uint32_t, int>> glyphs;  // glyph index, pen x
-  int width = 0;
-};
-
-LabelGlyphs place_label(render::Font& font, std::string_view label, int pixel_height) {
-  LabelGlyphs out;
-  std::int32_t pen = 0;  // 1/64 px, as FreeType's advances
-  std::uint32_t previous = 0;
-  for (const char c : label) {
-    const std::uint32_t glyph = font.glyph_index(static_cast<char32_t>(c));
-    if (glyph == 0) continue;  // a gap, never the missing-glyph box
-    if (previous != 0) pen += font.kerning(previous, glyph, pixel_height);
-    out.glyphs.emplace_back(glyph, (pen + 32) / 64);
-    pen += font.advance(glyph, pixel_height);
-    previous = glyph;
-  }
-  out.width = (pen + 32) / 64;
-  return out;
-}
-
 // Blends `label` in kLabelColor onto `sheet` by FreeType's coverage, "over" in sRGB-encoded
 // values as the frames' text (render/text_layer.hpp): centred on column `centre_x`, its digits
 // centred on row `centre_y`.
 void draw_label(io::Image& sheet, render::Font& font, std::string_view label, int pixel_height,
                 int centre_x, int centre_y) {
-  const LabelGlyphs placed = place_label(font, label, pixel_height);
+  // Laid out as the frames' text is (render::lay_out), at exactly `pixel_height` (a Text's
+  // height is given at 720 rows), then its box centred on `centre_x`.
+  const Result<render::TextLayout> placed = render::lay_out(
+      font, render::Text{.text = std::string(label), .height = static_cast<double>(pixel_height)},
+      sheet.width, render::kTextReferenceHeight);
+  if (!placed) return;  // the label is ASCII: it always decodes
   const render::GlyphBitmap digit = font.rasterize(font.glyph_index(U'0'), pixel_height);
-  const int baseline = centre_y + digit.top / 2;
-  const int left = centre_x - placed.width / 2;
-  for (const auto& [glyph, pen] : placed.glyphs) {
-    const render::GlyphBitmap bitmap = font.rasterize(glyph, pixel_height);
+  const int shift_x = centre_x - (placed->box.x + placed->box.width / 2);
+  for (const render::PlacedGlyph& glyph : placed->glyphs) {
+    const render::GlyphBitmap bitmap = font.rasterize(glyph.glyph, pixel_height);
+    const int baseline = centre_y + digit.top / 2;  // the digits centred on centre_y
     for (int y = 0; y < bitmap.height; ++y) {
       const int row = baseline - bitmap.top + y;
       if (row < 0 || row >= sheet.height) continue;
       for (int x = 0; x < bitmap.width; ++x) {
-        const int column = left + pen + bitmap.left + x;
+        const int column = glyph.x + shift_x + bitmap.left + x;
         const int cover = bitmap.coverage[static_cast<std::size_t>(y) * bitmap.width + x];
         if (column < 0 || column >= sheet.width || cover == 0) continue;
         std::uint8_t* pixel = sheet.row(row) + 3 * static_cast<std::size_t>(column);
