@@ -3,158 +3,24 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <memory>
-#include <sstream>
-#include <thread>
 #include <variant>
 
 #include "cli/options.hpp"
 #include "common/exit_codes.hpp"
-#include "io/atomic_file.hpp"
-#include "io/json_text.hpp"
-#include "io/staged_directory.hpp"
 #include "job/kept_files.hpp"
-#include "job/output_folder.hpp"
+#include "job/render_folder.hpp"
 #include "job/render_golden.hpp"
 #include "job/render_job.hpp"
-#include "job/scene_hash.hpp"
 #include "pipeline/progress.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/stability_report.hpp"
 #include "sys/interrupt.hpp"
-#include "view/overlay_view.hpp"
 
 namespace tumble::cli {
 namespace {
 
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string stage_json(const pipeline::StageTime& stage) {
-  std::ostringstream out;
-  out.precision(6);
-  out << "{\"cpu\": " << stage.cpu << ", \"wall\": " << stage.wall << "}";
-  return out.str();
-}
-
-// What `tumble join` requires to be the same in every chunk (besides the scene's hash): what
-// decides the pixels of the frames and the bytes of the files. The videos' pixel formats and
-// encoder threads are fixed by the build, and io::join_videos compares the stream headers.
-std::string settings_json(const job::RenderJob& job, const job::RenderResult& result) {
-  const scene::Scene& scene = job.scene;
-  std::ostringstream out;
-  out << "{\"width\": " << scene.render.width << ", \"height\": " << scene.render.height
-      << ", \"fps\": " << scene.fps << ", \"msaa\": " << scene.render.msaa
-      << ", \"frames\": " << (scene.output.frames ? "true" : "false")
-      << ", \"png_zlib_level\": " << job.png.compression_level
-      << ", \"png_filter\": " << (job.png.filter ? "true" : "false")
-      << ", \"video\": " << (scene.output.video ? "true" : "false") << ", \"formats\": [";
-  for (std::size_t i = 0; i < scene.output.formats.size(); ++i) {
-    out << (i ? ", " : "") << io::json_string(io::video_format_name(scene.output.formats[i]));
-  }
-  out << "], \"crf\": " << scene.output.crf << ", \"webm_crf\": " << scene.output.webm_crf
-      << ", \"preset\": " << io::json_string(scene.output.preset)
-      << ", \"font\": " << io::json_string(view::overlay_font(scene))
-      << ", \"opengl\": " << io::json_string(result.opengl) << "}";
-  return out.str();
-}
-
-std::string chunk_json(const job::RenderJob& job) {
-  if (!job.chunk) return "null";
-  return "{\"index\": " + std::to_string(job.chunk->index) +
-         ", \"count\": " + std::to_string(job.chunk->count) + "}";
-}
-
-// {"mp4": path, "webm": path, ...}: every video the render wrote, in [output] formats order.
-std::string videos_json(const job::RenderJob& job) {
-  std::string out = "{";
-  for (const io::VideoFormat format : job.scene.output.formats) {
-    const std::string path = job.video_path(job.directory, format);
-    if (path.empty()) continue;
-    out += (out.size() > 1 ? ", " : "") + io::json_string(io::video_format_name(format)) + ": " +
-           io::json_string(path);
-  }
-  return out + "}";
-}
-
-// {"fps": F, "colors": N, "dither": NAME} of the GIF written, or null: F is the rate it plays
-// at, 100 / its delay in centiseconds (io::gif_delay_centiseconds).
-std::string gif_json(const job::RenderJob& job) {
-  if (job.video_path(job.directory, io::VideoFormat::gif).empty()) return "null";
-  const scene::OutputSpec& output = job.scene.output;
-  const int asked = std::min(output.gif_fps.value_or(job.scene.fps), job.scene.fps);
-  std::ostringstream out;
-  out << "{\"fps\": " << 100.0 / io::gif_delay_centiseconds(asked)
-      << ", \"colors\": " << output.gif_colors
-      << ", \"dither\": " << io::json_string(common::gif_dither_name(output.gif_dither)) << "}";
-  return out.str();
-}
-
-std::string report_json(const job::RenderJob& job, const job::RenderResult& result,
-                        const std::vector<job::RenderedFile>& kept, double total_seconds) {
-  const scene::Scene& scene = job.scene;
-  const pipeline::PipelineReport& p = result.pipeline;
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  // (CPU seconds of every stage / cores) / wall seconds: 1 when every core worked all the time.
-  const double efficiency = p.wall > 0 ? p.process_cpu / cores / p.wall : 0.0;
-  const std::string frames_directory = job.frames_path(job.directory);
-  const std::string video_path = job.video_path(job.directory);
-  std::ostringstream out;
-  out.precision(17);
-  // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
-  out << "{\n  \"scene\": " << io::json_string(scene.name)
-      << ",\n  \"version\": " << io::json_string(TUMBLE_VERSION)
-      << ",\n  \"scene_file\": " << io::json_string(scene.source_path)
-      << ",\n  \"scene_hash\": " << io::json_string(job.scene_hash)
-      << ",\n  \"scene_frames\": " << job.frame_count << ",\n  \"chunk\": " << chunk_json(job)
-      << ",\n  \"settings\": " << settings_json(job, result)
-      << ",\n  \"width\": " << scene.render.width << ",\n  \"height\": " << scene.render.height
-      << ",\n  \"fps\": " << scene.fps << ",\n  \"msaa\": " << scene.render.msaa
-      << ",\n  \"antialiasing\": " << io::json_string(job::antialiasing_name(scene.render.msaa))
-      << ",\n  \"dt\": " << scene.physics.dt << ",\n  \"integrator\": "
-      << io::json_string(std::string(physics::integrator_name(scene.physics.integrator)))
-      << ",\n  \"frames\": {\"first\": " << job.first << ", \"end\": " << job.end
-      << ", \"count\": " << job.end - job.first << "},\n  \"frames_directory\": "
-      << (frames_directory.empty() ? "null" : io::json_string(frames_directory))
-      << ",\n  \"video\": " << (video_path.empty() ? "null" : io::json_string(video_path))
-      << ",\n  \"videos\": " << videos_json(job) << ",\n  \"kept\": " << job::kept_json(kept)
-      << ",\n  \"gif\": " << gif_json(job)
-      << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
-      << ",\n  \"renderer\": " << io::json_string(result.renderer)
-      << ",\n  \"backend\": " << io::json_string(result.backend)
-      << ",\n  \"device\": " << (result.device.empty() ? "null" : io::json_string(result.device))
-      << ",\n  \"physics_steps\": {\"framing\": " << result.framing_steps
-      << ", \"frames\": " << result.frame_steps << ", \"to_first_frame\": " << result.seek_steps
-      << "}"
-      << ",\n  \"stages\": {\"simulate\": " << stage_json(p.simulate)
-      << ", \"render\": " << stage_json(p.render);
-  for (std::size_t i = 0; i < result.stages.size(); ++i) {
-    out << ", " << io::json_string(result.stages[i]) << ": " << stage_json(p.sinks[i]);
-  }
-  out << "},\n  \"seconds\": {\"setup\": " << result.setup_seconds << ", \"frames\": " << p.wall
-      << ", \"finish\": " << result.finish_seconds << ", \"total\": " << total_seconds
-      << "},\n  \"cpu_seconds_before_first_frame\": {\"framing\": " << result.framing_seconds
-      << ", \"renderer\": " << result.renderer_seconds
-      << ", \"to_first_frame\": " << result.seek_seconds
-      << "},\n  \"frames_per_second\": " << (p.wall > 0 ? p.frames_done / p.wall : 0.0)
-      << ",\n  \"cores\": " << cores << ",\n  \"pipeline_efficiency\": " << efficiency
-      << ",\n  \"peak_memory_bytes\": " << job::peak_memory_bytes() << ",\n  \"bodies\": [";
-  for (std::size_t i = 0; i < result.bodies.size(); ++i) {
-    const job::BodyDiagnostics& b = result.bodies[i];
-    out << (i ? "," : "") << "\n    {\"name\": " << io::json_string(scene.bodies[i].name)
-        << ", \"energy_start\": " << io::json_number(b.energy_start)
-        << ", \"energy_end\": " << io::json_number(b.energy_end)
-        << ", \"angular_momentum_start\": " << io::json_number(b.angular_momentum_start)
-        << ", \"angular_momentum_end\": " << io::json_number(b.angular_momentum_end) << "}";
-  }
-  out << "\n  ]\n}\n";
-  return out.str();
-}
 
 // "tumble: N frames in S s (F frames/s, BACKEND) -> DIR/: FILE, ..., report.json", and the files
 // kept of an earlier render on a line of their own.
@@ -186,46 +52,29 @@ CommandResult run_render(const job::RenderOptions& options,
                          std::FILE* err) {
   const auto start = Clock::now();
   sys::install_interrupt_handlers();  // from the start: a signal is acted on before the first frame
-  const Result<std::string> text = scene::read_scene_text(options.scene_path);
+  Result<std::string> text = scene::read_scene_text(options.scene_path);
   if (!text) return Error{text.error()};
-  const Result<scene::Scene> loaded = scene::parse_scene(*text, options.scene_path);
-  if (!loaded) return Error{loaded.error()};
-  Result<job::RenderJob> made = job::make_render_job(*loaded, options);
-  if (!made) return Error{made.error()};
-  made->scene_hash = job::scene_hash(*text, made->scene);
-  // An earlier render of this scene in the folder keeps what this one does not write (the MP4
-  // beside a GIF rendered apart); another scene's is replaced whole, and that is said.
-  const job::EarlierRender earlier = job::read_earlier_render(made->directory, *text, made->scene);
-  made->stills = job::writes_own_stills(made->scene, earlier);
-  const job::RenderJob& job = *made;
+  const Result<job::PreparedRender> prepared =
+      job::prepare_render(std::move(text).value(), options, start);
+  if (!prepared) return Error{prepared.error()};
+  const job::RenderJob& job = prepared->job;
   if (golden) {
     if (const Result<void> usable = job::check_golden(*golden, job); !usable) {
       return Error{usable.error()};
     }
   }
   if (!options.quiet) scene::print_stability_warnings(job.scene, err);
-
-  // Everything is written into a hidden folder beside the final one and swapped in at the end:
-  // a failed or interrupted render leaves the earlier output as it was.
-  if (const Result<void> replaceable =
-          job::check_replaceable(job.output_root, job.scene.output.directory);
-      !replaceable) {
-    return Error{replaceable.error()};
-  }
-  if (!options.quiet && earlier.kind == job::EarlierRender::Kind::other_scene) {
+  if (!options.quiet && prepared->earlier.kind == job::EarlierRender::Kind::other_scene) {
     std::fprintf(err, "tumble: %s holds %s: it is replaced as a whole, nothing of it kept\n",
-                 job.directory.c_str(), earlier.why.c_str());
+                 job.directory.c_str(), prepared->earlier.why.c_str());
   }
-  Result<io::StagedDirectory> staged = io::StagedDirectory::create(job.directory.string());
-  if (!staged) return Error{staged.error()};
-  const fs::path staging = staged->path();
-  const std::int64_t count = job.end - job.first;
-  pipeline::Progress progress(count, options.quiet, err);
-  job::RenderResult result;
-  const Result<void> rendered = job::render_scene(
-      job, staging, [] { return sys::interrupt_signal() != 0; },
-      [&](std::int64_t done) { progress.update(done); }, result);
+  pipeline::Progress progress(job.end - job.first, options.quiet, err);
+  job::RenderOutcome outcome;
+  const Result<void> rendered = job::render_to_folder(
+      *prepared, [] { return sys::interrupt_signal() != 0; },
+      [&](std::int64_t done) { progress.update(done); }, outcome);
   progress.finish();
+  const job::RenderResult& result = outcome.result;
   if (!options.quiet) {
     for (const std::string& line : result.warnings) {
       std::fprintf(err, "tumble: warning: %s\n", line.c_str());
@@ -234,35 +83,18 @@ CommandResult run_render(const job::RenderOptions& options,
   if (options.verbose && !result.renderer.empty()) {
     std::fprintf(err, "tumble: renderer %s\n", result.renderer.c_str());
   }
-  // "<why> after K of N frames; <folder> was left as it was".
-  const auto stopped = [&](const std::string& why) {
-    return why + " after " + std::to_string(result.pipeline.frames_done) + " of " +
-           std::to_string(count) + " frames; " + job.directory.string() + " was left as it was";
-  };
   if (const int signal = sys::interrupt_signal()) {
-    std::fprintf(err, "tumble: %s\n",
-                 stopped(std::string("stopped by ") + sys::signal_name(signal)).c_str());
+    const std::string why = std::string("stopped by ") + sys::signal_name(signal);
+    std::fprintf(err, "tumble: %s\n", job::stopped_message(job, result, why).c_str());
     return interrupted_by(signal);
   }
   // Two lines, each "tumble: ...": what failed, then what became of the output.
-  if (!rendered) return Error{rendered.error() + "\ntumble: " + stopped("render failed")};
-
-  const std::vector<std::string> written = job::render_files(staging, job.scene.name);
-  // Read again: what is kept is what the folder holds now, just before the swap.
-  const Result<std::vector<job::RenderedFile>> kept =
-      job::keep_earlier_files(job::read_earlier_render(job.directory, *text, job.scene),
-                              job.directory, staging, job.stills);
-  if (!kept) return Error{kept.error() + "\ntumble: " + stopped("render failed")};
-  const double total_seconds = seconds_since(start);
-  Result<void> done = io::write_file_atomically((staging / "report.json").string(),
-                                                report_json(job, result, *kept, total_seconds));
-  // Checked again: the folder may have been made or filled while the frames were drawn.
-  if (done) done = job::check_replaceable(job.output_root, job.scene.output.directory);
-  if (done) done = staged->commit();
-  if (!done) return Error{done.error() + "\ntumble: " + stopped("render failed")};
-  if (!staged->leftover().empty())
-    std::fprintf(err, "tumble: warning: %s\n", staged->leftover().c_str());
-  if (!options.quiet) print_summary(job, result, written, *kept, total_seconds, err);
+  if (!rendered) return Error{rendered.error()};
+  if (!outcome.leftover.empty())
+    std::fprintf(err, "tumble: warning: %s\n", outcome.leftover.c_str());
+  if (!options.quiet) {
+    print_summary(job, result, outcome.written, outcome.kept, outcome.total_seconds, err);
+  }
   return golden ? job::compare_with_golden(*golden, job, out) : kExitOk;
 }
 

@@ -22,7 +22,7 @@ struct ChunkReport {
   std::string scene_hash;                // app/scene_hash.hpp
   std::int64_t scene_frames = 0;         // frames of the whole render
   FrameRange frames;                     // the frames this folder holds
-  io::JsonValue settings;                // what must agree (render_command.cpp's settings_json)
+  io::JsonValue settings;                // what must agree (job/render_folder.cpp's settings_json)
   bool has_frames = false;               // frames/ holds its PNG frames
   std::vector<std::string> video_names;  // its videos' file names in the folder ("spin.mp4")
   std::string renderer;                  // the OpenGL and back end that drew it

@@ -12,7 +12,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Whether `folder` is a render's: it holds a report.json that starts as report_json (in
-// render_command.cpp) starts it.
+// job/render_folder.cpp) starts it.
 bool is_render_folder(const fs::path& folder) {
   constexpr std::string_view kStart = "{\n  \"scene\": ";
   std::ifstream report(folder / "report.json", std::ios::binary);
