@@ -8,7 +8,7 @@
 # is an error too, so that a new folder cannot escape the table.
 cmake_minimum_required(VERSION 3.25)
 
-set(parts common physics sim scene io render sys diff view pipeline job bench bench/jobs cli)
+set(parts common physics sim scene io render sys diff view pipeline job bench bench/jobs cli python)
 set(allowed_common common)
 set(allowed_physics physics common)
 set(allowed_sim sim physics common)
@@ -24,6 +24,7 @@ set(allowed_bench bench sim physics common)
 set(allowed_bench/jobs bench/jobs bench job view pipeline diff scene sim physics render io sys
     common)
 set(allowed_cli ${parts})
+set(allowed_python job view pipeline diff scene sim physics render io sys common python)
 
 # The part that `path` (relative to src/, a file's or an include's) lies in, or "" for none.
 function(part_of path out)

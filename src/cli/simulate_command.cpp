@@ -13,6 +13,7 @@
 #include "common/exit_codes.hpp"
 #include "io/atomic_file.hpp"
 #include "io/state_csv.hpp"
+#include "job/state_rows.hpp"
 #include "physics/rigid_body.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
@@ -22,23 +23,11 @@
 namespace tumble::cli {
 namespace {
 
-io::StateRow state_row(const physics::BodyState& s) {
-  const physics::Vec3& x = s.position();
-  const physics::Vec3& v = s.velocity();
-  const physics::Quat& q = s.orientation();
-  const physics::Vec3& w = s.angular_velocity();
-  const physics::Vec3& p = s.momentum();
-  const physics::Vec3& l = s.angular_momentum();
-  return {
-      x.x(), x.y(), x.z(), v.x(), v.y(), v.z(), q.w(), q.x(), q.y(), q.z(),
-      w.x(), w.y(), w.z(), p.x(), p.y(), p.z(), l.x(), l.y(), l.z(), physics::kinetic_energy(s)};
-}
-
 bool write_rows(std::FILE* out, const scene::Scene& scene, const sim::Simulation& simulation) {
   bool ok = true;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     ok = io::write_state_row(out, simulation.time(), scene.bodies[i].name,
-                             state_row(simulation.current()[i])) &&
+                             job::state_row(simulation.current()[i])) &&
          ok;
   }
   return ok;
@@ -86,7 +75,7 @@ CommandResult run_simulate(const SimulateOptions& options, std::FILE* err) {
     if (const auto& blow_up = simulation.blow_up()) {
       return Error{scene::blow_up_message(scene, *blow_up)};
     }
-    if (n % options.every == 0 || n == steps) ok = write_rows(out, scene, simulation);
+    if (job::sampled_step(n, options.every, steps)) ok = write_rows(out, scene, simulation);
   }
   // A write blocked on a full pipe and cut short by the signal fails with EINTR: a stop too,
   // before a flush could block on that pipe again.

@@ -249,7 +249,14 @@ Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& opti
     scene.output.directory += ".chunk-" + std::to_string(options.chunk->index) + "-of-" +
                               std::to_string(options.chunk->count);
   }
-  std::string shader_directory = find_shader_directory();
+  if (!options.shader_directory.empty()) {
+    std::error_code ignored;
+    if (!fs::exists(fs::path(options.shader_directory) / "body.vert", ignored)) {
+      return Error{"no shaders (body.vert) in " + options.shader_directory};
+    }
+  }
+  std::string shader_directory =
+      options.shader_directory.empty() ? find_shader_directory() : options.shader_directory;
   if (shader_directory.empty()) {
     const char* asked = std::getenv("TUMBLE_SHADER_DIR");
     return Error{asked ? std::string("no shaders (body.vert) in TUMBLE_SHADER_DIR=") + asked

@@ -43,6 +43,9 @@ struct RenderOptions {
   io::PngSettings png;  // fast by default; see io/png_io.hpp
   std::optional<render::Backend> backend;  // --backend: replaces [render] backend
   std::optional<int> egl_device;           // --egl-device: replaces [render] egl_device
+  // The shaders/ folder to draw with; "" finds it (find_shader_directory). The Python module
+  // gives the one installed beside it.
+  std::string shader_directory;
 };
 
 struct RenderJob {
