@@ -1,11 +1,15 @@
 #include "cli/render_command.hpp"
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <variant>
 
+#include "cli/join_command.hpp"
 #include "cli/options.hpp"
 #include "common/exit_codes.hpp"
 #include "job/kept_files.hpp"
@@ -15,11 +19,13 @@
 #include "pipeline/progress.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/stability_report.hpp"
+#include "sys/child_process.hpp"
 #include "sys/interrupt.hpp"
 
 namespace tumble::cli {
 namespace {
 
+namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 // "tumble: N frames in S s (F frames/s, BACKEND) -> DIR/: FILE, ..., report.json", and the files
@@ -109,7 +115,101 @@ struct RenderCommandLine {
   std::string png_compression = "fast";
   diff::DiffCommandOptions golden;  // --golden DIR and tumble diff's options
   ComparisonOptions golden_comparison;
+  std::int64_t jobs = 1;  // --jobs N: chunks rendered in N processes, then joined
 };
+
+// The arguments of `tumble render` for chunk I of N of `line`'s render into `root`: every
+// setting `line` gives, so that each chunk draws the frames one process would.
+std::vector<std::string> chunk_arguments(const RenderCommandLine& line, const fs::path& root,
+                                         std::int64_t index, std::int64_t count) {
+  const job::RenderOptions& render = line.render;
+  std::vector<std::string> args = {
+      "render",      render.scene_path,   "-o",
+      root.string(), "--chunk",           std::to_string(index) + "/" + std::to_string(count),
+      "-q",          "--png-compression", line.png_compression};
+  const auto add = [&](const char* option, const std::string& value) {
+    args.push_back(option);
+    args.push_back(value);
+  };
+  if (render.quality) add("--quality", *render.quality);
+  if (render.width) add("--width", std::to_string(*render.width));
+  if (render.height) add("--height", std::to_string(*render.height));
+  if (render.fps) add("--fps", std::to_string(*render.fps));
+  for (const std::string& format : render.formats) add("--format", format);
+  if (!render.frames) args.push_back("--no-frames");
+  if (!render.video) args.push_back("--no-video");
+  if (render.serial) args.push_back("--serial");
+  if (!line.backend.empty()) add("--backend", line.backend);
+  if (render.egl_device) add("--egl-device", std::to_string(*render.egl_device));
+  return args;
+}
+
+// `tumble render --jobs N`: the render's frames in N chunks (as `tumble plan --chunks N` cuts
+// them), each rendered by a `tumble render --chunk I/N` process of its own, all at once, into a
+// hidden folder beside the output; then joined into the render's folder as `tumble join` joins
+// them (frames merged, videos joined by stream copy) and the hidden folder removed. The frames
+// are a one-process render's, byte for byte.
+CommandResult run_in_jobs(const RenderCommandLine& line,
+                          const std::optional<diff::DiffCommandOptions>& golden) {
+  const job::RenderOptions& options = line.render;
+  sys::install_interrupt_handlers();
+  Result<std::string> text = scene::read_scene_text(options.scene_path);
+  if (!text) return Error{text.error()};
+  const Result<job::PreparedRender> prepared =
+      job::prepare_render(std::move(text).value(), options, Clock::now());
+  if (!prepared) return Error{prepared.error()};
+  const job::RenderJob& job = prepared->job;
+  if (const Result<void> joinable = job::check_joinable_formats(job.scene, "--jobs"); !joinable) {
+    return Error{joinable.error()};
+  }
+  if (golden) {
+    if (const Result<void> usable = job::check_golden(*golden, job); !usable) {
+      return Error{usable.error()};
+    }
+  }
+  std::error_code error;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", error);
+  if (error) return Error{"--jobs: cannot find tumble's own executable: " + error.message()};
+  const std::int64_t count = std::min<std::int64_t>(line.jobs, job.frame_count);
+  // Hidden, beside the final folder: on the same file system, so that join links the frames.
+  const fs::path root = job.output_root / (".jobs-" + job.directory.filename().string() + "-" +
+                                           std::to_string(::getpid()));
+  fs::create_directories(root, error);
+  if (error) return Error{"cannot create " + root.string() + ": " + error.message()};
+  std::vector<sys::ProgramRun> runs;
+  JoinOptions join{.out = job.directory.string(), .chunks = {}, .quiet = options.quiet};
+  for (std::int64_t i = 1; i <= count; ++i) {
+    runs.push_back({executable.string(), chunk_arguments(line, root, i, count)});
+    join.chunks.push_back((root / (job.scene.output.directory + ".chunk-" + std::to_string(i) +
+                                   "-of-" + std::to_string(count)))
+                              .string());
+  }
+  if (!options.quiet) {
+    std::fprintf(stderr, "tumble: rendering %lld frames in %lld processes (--jobs)\n",
+                 static_cast<long long>(job.frame_count), static_cast<long long>(count));
+  }
+  const Result<void> ran = sys::run_together(
+      runs, [] { return sys::interrupt_signal() != 0; },
+      [&](std::size_t i) {
+        if (!options.quiet)
+          std::fprintf(stderr, "tumble: chunk %zu of %lld done\n", i + 1,
+                       static_cast<long long>(count));
+      });
+  CommandResult joined = kExitOk;
+  if (const int signal = sys::interrupt_signal()) {
+    std::fprintf(stderr, "tumble: stopped by %s; %s was left as it was\n", sys::signal_name(signal),
+                 job.directory.c_str());
+    joined = interrupted_by(signal);
+  } else if (!ran) {
+    joined = Error{"--jobs: a chunk's render failed: " + ran.error() + "; " +
+                   job.directory.string() + " was left as it was"};
+  } else {
+    joined = run_join(join, stderr);
+  }
+  fs::remove_all(root, error);
+  if (!joined || *joined != kExitOk) return joined;
+  return golden ? job::compare_with_golden(*golden, job, stdout) : kExitOk;
+}
 
 CommandResult run_command_line(RenderCommandLine& line) {
   job::RenderOptions& render = line.render;
@@ -134,6 +234,7 @@ CommandResult run_command_line(RenderCommandLine& line) {
     line.golden_comparison.apply_antialiasing(line.golden);
     compare = line.golden;
   }
+  if (line.jobs > 1) return run_in_jobs(line, compare);
   return run_render(render, compare, stdout, stderr);
 }
 
@@ -162,6 +263,7 @@ void add_render_command(CLI::App& app, Commands& commands) {
                    "--chunks N`, into OUTPUT/<scene output directory>.chunk-I-of-N/")
       ->check(not_empty())
       ->excludes(frames);
+  CLI::Option* chunk = command->get_option("--chunk");
   command->add_flag("!--no-frames", render.frames, "Do not write PNG frames");
   command->add_option(
       "--quality", render.quality,
@@ -175,6 +277,15 @@ void add_render_command(CLI::App& app, Commands& commands) {
   command->add_flag("!--no-video", render.video, "Do not write any video");
   command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");
   command->add_flag("-v,--verbose", render.verbose, "Print the OpenGL renderer in use");
+  CLI::Option* jobs =
+      command
+          ->add_option(
+              "--jobs", line->jobs,
+              "Render in N processes at once, each a chunk of the frames (as --chunk I/N), "
+              "then join them: the same frames, for machines with more cores than "
+              "llvmpipe uses")
+          ->check(whole_number_in(1, 1024, "1 to 1024"))
+          ->capture_default_str();
   command->add_flag("--serial", render.serial,
                     "Render, write and encode on one thread (slower; same bytes)");
   add_setting_option(command, common::render_setting("backend"), line->backend);
@@ -193,6 +304,7 @@ void add_render_command(CLI::App& app, Commands& commands) {
               "frames or a video) as `tumble diff` does: exit 0 match, 1 mismatch, 2 error")
           ->check(not_empty());
   add_comparison_options(command, line->golden, line->golden_comparison, golden);
+  jobs->excludes(frames)->excludes(chunk);
   commands.push_back({command, [line] { return run_command_line(*line); }});
 }
 

@@ -102,4 +102,68 @@ Result<void> run_reading_lines(const std::string& program,
   return Error{program + " " + how_it_ended(status)};
 }
 
+Result<void> run_together(const std::vector<ProgramRun>& runs,
+                          const std::function<bool()>& stop_requested,
+                          const std::function<void(std::size_t index)>& on_done) {
+  std::vector<pid_t> running(runs.size(), 0);  // 0 once waited for (or never started)
+  std::string failure;
+  const auto stop_all = [&] {
+    for (const pid_t pid : running) {
+      if (pid != 0) ::kill(pid, SIGTERM);
+    }
+  };
+  for (std::size_t i = 0; i < runs.size() && failure.empty(); ++i) {
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(runs[i].program.c_str()));
+    for (const std::string& argument : runs[i].arguments)
+      argv.push_back(const_cast<char*>(argument.c_str()));
+    argv.push_back(nullptr);
+    // As in run_reading_lines: the child gets SIGPIPE's and SIGXFSZ's defaults back.
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t defaults;
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGPIPE);
+    sigaddset(&defaults, SIGXFSZ);
+    posix_spawnattr_setsigdefault(&attributes, &defaults);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+    const int spawned = ::posix_spawn(&running[i], runs[i].program.c_str(), nullptr, &attributes,
+                                      argv.data(), environ);
+    posix_spawnattr_destroy(&attributes);
+    if (spawned != 0) {
+      running[i] = 0;
+      failure = "cannot run " + runs[i].program + ": " + std::strerror(spawned);
+    }
+  }
+  bool stopping = !failure.empty();
+  if (stopping) stop_all();
+  for (;;) {
+    bool any = false;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      if (running[i] == 0) continue;
+      int status = 0;
+      const pid_t ended = ::waitpid(running[i], &status, WNOHANG);
+      if (ended == 0 || (ended < 0 && errno == EINTR)) {
+        any = true;
+        continue;
+      }
+      running[i] = 0;
+      if (ended > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        on_done(i);
+      } else if (failure.empty()) {
+        failure = ended < 0 ? "waiting for " + runs[i].program + " failed: " + std::strerror(errno)
+                            : runs[i].program + " " + how_it_ended(status);
+      }
+    }
+    if (!any) break;
+    if (!stopping && (!failure.empty() || stop_requested())) {
+      stopping = true;
+      stop_all();
+    }
+    ::usleep(50 * 1000);
+  }
+  if (!failure.empty()) return Error{failure};
+  return Result<void>::success();
+}
+
 }  // namespace tumble::sys

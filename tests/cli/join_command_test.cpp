@@ -373,3 +373,47 @@ TEST_F(JoinCommand, RefusesAFolderThatIsNotARendersAndFoldersWithoutAReport) {
 }
 
 }  // namespace
+
+// `tumble render --jobs N`: N chunk processes at once, joined. The frames, poster and contact
+// sheet are the one-process render's byte for byte; the MP4 has its frames and timestamps (each
+// chunk's segment is an encode of its own, joined by stream copy as `tumble join` does); the
+// hidden folder of the chunks is gone.
+TEST_F(JoinCommand, JobsRendersChunksInProcessesAndJoinsThemIntoTheWholeRender) {
+  const fs::path whole = render("whole", "");
+  for (const int jobs : {2, 4, 20}) {  // 20: more processes than frames, one a frame
+    const std::string root = "jobs" + std::to_string(jobs);
+    const fs::path joined = render(root, "--jobs " + std::to_string(jobs));
+    EXPECT_EQ(names_in(dir_ / root), std::vector<std::string>{"spin"}) << jobs;
+    EXPECT_EQ(names_in(joined), (std::vector<std::string>{"contact_sheet.png", "frames",
+                                                          "poster.png", "report.json", "spin.mp4"}));
+    ASSERT_EQ(names_in(joined / "frames"), names_in(whole / "frames"));
+    for (const std::string& name : names_in(whole / "frames")) {
+      EXPECT_EQ(read_file(joined / "frames" / name), read_file(whole / "frames" / name)) << name;
+    }
+    for (const char* still : {"poster.png", "contact_sheet.png"}) {
+      EXPECT_EQ(read_file(joined / still), read_file(whole / still)) << still;
+    }
+    const auto video = tumble::testing::read_video((joined / "spin.mp4").string());
+    ASSERT_EQ(video.error, "");
+    ASSERT_EQ(video.pictures.size(), 15u);
+    for (std::size_t k = 0; k < 15; ++k) {
+      EXPECT_NEAR(video.pictures[k].time, static_cast<double>(k) / 30, 1e-9) << k;
+    }
+    const std::string report = read_file(joined / "report.json");
+    EXPECT_NE(report.find("\"frames\": {\"first\": 0, \"end\": 15, \"count\": 15}"),
+              std::string::npos);
+    EXPECT_NE(report.find("\"joined_from\": ["), std::string::npos);
+  }
+}
+
+TEST_F(JoinCommand, JobsRefusesAGifAChunkAndFramesBeforeRenderingAnything) {
+  const Outcome gif = tumble("render " + scene() + " --jobs 2 --format mp4,gif -o " + path("out"));
+  EXPECT_EQ(gif.exit_code, 2);
+  EXPECT_NE(gif.err.find("--jobs: gif is not written in parts"), std::string::npos) << gif.err;
+  const Outcome chunk = tumble("render " + scene() + " --jobs 2 --chunk 1/2 -o " + path("out"));
+  EXPECT_EQ(chunk.exit_code, 2);
+  EXPECT_NE(chunk.err.find("excludes"), std::string::npos) << chunk.err;
+  const Outcome zero = tumble("render " + scene() + " --jobs 0 -o " + path("out"));
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
