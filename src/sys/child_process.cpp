@@ -47,6 +47,29 @@ std::string how_it_ended(int status) {
   return "ended with wait status " + std::to_string(status);
 }
 
+// posix_spawn of `program` with `arguments` and the file actions (or none), into `pid`: 0 or the
+// error number. tumble ignores SIGPIPE and SIGXFSZ (process.hpp), and an ignored signal stays
+// ignored across exec: the child gets the defaults back, so that it ends when its reader stops.
+int spawn(pid_t& pid, const std::string& program, const std::vector<std::string>& arguments,
+          const posix_spawn_file_actions_t* actions) {
+  std::vector<char*> argv;
+  argv.push_back(const_cast<char*>(program.c_str()));
+  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGPIPE);
+  sigaddset(&defaults, SIGXFSZ);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  const int spawned =
+      ::posix_spawn(&pid, program.c_str(), actions, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
+  return spawned;
+}
+
 }  // namespace
 
 Result<void> run_reading_lines(const std::string& program,
@@ -58,28 +81,11 @@ Result<void> run_reading_lines(const std::string& program,
   if (::pipe2(pipe_ends, O_CLOEXEC) != 0) {
     return Error{"cannot run " + program + ": pipe: " + std::strerror(errno)};
   }
-  std::vector<char*> argv;
-  argv.push_back(const_cast<char*>(program.c_str()));
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDOUT_FILENO);
-  // tumble ignores SIGPIPE and SIGXFSZ (process.hpp), and an ignored signal stays ignored across
-  // exec: the child gets the defaults back, so that it ends when tumble stops reading.
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  sigset_t defaults;
-  sigemptyset(&defaults);
-  sigaddset(&defaults, SIGPIPE);
-  sigaddset(&defaults, SIGXFSZ);
-  posix_spawnattr_setsigdefault(&attributes, &defaults);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
   pid_t pid = 0;
-  const int spawned =
-      ::posix_spawn(&pid, program.c_str(), &actions, &attributes, argv.data(), environ);
-  posix_spawnattr_destroy(&attributes);
+  const int spawned = spawn(pid, program, arguments, &actions);
   posix_spawn_file_actions_destroy(&actions);
   ::close(pipe_ends[1]);  // else the read below would never see the end of the child's output
   if (spawned != 0) {
@@ -113,23 +119,7 @@ Result<void> run_together(const std::vector<ProgramRun>& runs,
     }
   };
   for (std::size_t i = 0; i < runs.size() && failure.empty(); ++i) {
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(runs[i].program.c_str()));
-    for (const std::string& argument : runs[i].arguments)
-      argv.push_back(const_cast<char*>(argument.c_str()));
-    argv.push_back(nullptr);
-    // As in run_reading_lines: the child gets SIGPIPE's and SIGXFSZ's defaults back.
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    sigset_t defaults;
-    sigemptyset(&defaults);
-    sigaddset(&defaults, SIGPIPE);
-    sigaddset(&defaults, SIGXFSZ);
-    posix_spawnattr_setsigdefault(&attributes, &defaults);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
-    const int spawned = ::posix_spawn(&running[i], runs[i].program.c_str(), nullptr, &attributes,
-                                      argv.data(), environ);
-    posix_spawnattr_destroy(&attributes);
+    const int spawned = spawn(running[i], runs[i].program, runs[i].arguments, nullptr);
     if (spawned != 0) {
       running[i] = 0;
       failure = "cannot run " + runs[i].program + ": " + std::strerror(spawned);
