@@ -59,6 +59,19 @@ inline constexpr Backend kAllBackends[] = {Backend::automatic, Backend::osmesa, 
 inline constexpr int kAutomaticEglDevice = -1;
 inline constexpr int kMaxEglDevice = 255;  // the largest index a scene or --egl-device may name
 
+inline constexpr int kMaxMotionBlurSamples = 64;
+
+struct MotionBlur {
+  int samples = 1;       // pictures averaged a frame; 1 = no blur
+  double shutter = 0.5;  // the fraction of the frame interval the shutter is open, in (0, 1]
+  bool on() const { return samples > 1; }
+  // The time of picture j (0 .. samples-1) of the frame at t (s), at `fps`: spread evenly over
+  // the shutter's interval, centred on t.
+  double time(double t, int j, int fps) const {
+    return t + shutter / fps * ((j + 0.5) / samples - 0.5);
+  }
+};
+
 // Fixed for a whole render.
 struct RenderSettings {
   int width = 1280;  // pixels
@@ -79,6 +92,10 @@ struct RenderSettings {
   // [render] egl_device; --egl-device overrides: an index into EGL's device list
   // (eglQueryDevicesEXT's order), drawn on through EGL's device platform; or kAutomaticEglDevice.
   int egl_device = kAutomaticEglDevice;
+  // [render] motion_blur = { samples = S, shutter = F }: each frame the average, in linear light,
+  // of S pictures of the bodies at S times spread evenly over F of a frame's interval, centred on
+  // the frame's time; overlays and texts are the frame's own. 1 sample (the default) is no blur.
+  MotionBlur motion_blur;
 };
 
 }  // namespace tumble::common

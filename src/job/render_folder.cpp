@@ -46,8 +46,13 @@ std::string settings_json(const RenderJob& job, const RenderResult& result) {
   }
   out << "], \"crf\": " << scene.output.crf << ", \"webm_crf\": " << scene.output.webm_crf
       << ", \"preset\": " << io::json_string(scene.output.preset)
-      << ", \"font\": " << io::json_string(view::overlay_font(scene))
-      << ", \"opengl\": " << io::json_string(result.opengl) << "}";
+      << ", \"font\": " << io::json_string(view::overlay_font(scene));
+  // Only when on: the settings of a render without it are written as before.
+  if (scene.render.motion_blur.on()) {
+    out << ", \"motion_blur\": {\"samples\": " << scene.render.motion_blur.samples
+        << ", \"shutter\": " << scene.render.motion_blur.shutter << "}";
+  }
+  out << ", \"opengl\": " << io::json_string(result.opengl) << "}";
   return out.str();
 }
 

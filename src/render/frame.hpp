@@ -171,6 +171,10 @@ struct RenderSettings : common::RenderSettings {
 struct FrameView {
   Camera camera;
   std::vector<Box> boxes;
+  // Motion blur: the boxes at each of the pictures the frame averages, in time order; when not
+  // empty they are drawn in place of `boxes`, each picture with the same camera, quads and
+  // overlays, and the pictures averaged in linear light before panels and texts are drawn.
+  std::vector<std::vector<Box>> blurred_boxes;
   std::vector<Quad> quads;
   // Overlays, drawn after the scene in this order: lines and arrows (over the scene, fainter
   // where it hides them), then labels and texts (over everything; they need settings' font).

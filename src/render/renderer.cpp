@@ -653,19 +653,72 @@ std::vector<Text> Renderer::Resources::texts_with_labels(const FrameView& view,
   return out;
 }
 
+namespace {
+
+// sRGB level -> linear light, for every 8-bit level (IEC 61966-2-1).
+const std::array<double, 256>& linear_levels() {
+  static const std::array<double, 256> table = [] {
+    std::array<double, 256> out{};
+    for (int level = 0; level < 256; ++level) {
+      const double c = level / 255.0;
+      out[level] = c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    }
+    return out;
+  }();
+  return table;
+}
+
+// Linear light in [0, 1] -> the nearest sRGB level.
+std::uint8_t srgb_level(double linear) {
+  const double c =
+      linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+  return static_cast<std::uint8_t>(std::clamp(std::lround(255.0 * c), 0L, 255L));
+}
+
+}  // namespace
+
 void Renderer::draw(const FrameView& view, io::Image& out) {
+  Resources& r = *resources_;
+  const RenderSettings& s = r.settings;
+  if (view.blurred_boxes.empty()) {
+    draw_picture(view, view.boxes, out, false);
+    return;
+  }
+  // Motion blur: each picture drawn and read back, summed in linear light (colour) and as
+  // coverage (alpha), in a fixed order: the same bytes every run.
+  const std::size_t pixels = static_cast<std::size_t>(s.width) * s.height;
+  std::vector<double> sum(pixels * 3, 0.0), alpha_sum;
+  if (s.transparent) alpha_sum.assign(pixels, 0.0);
+  const std::array<double, 256>& linear = linear_levels();
+  io::Image picture;
+  const std::size_t count = view.blurred_boxes.size();
+  for (std::size_t j = 0; j < count; ++j) {
+    draw_picture(view, view.blurred_boxes[j], picture, true);
+    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += linear[picture.rgb[i]];
+    for (std::size_t i = 0; i < alpha_sum.size(); ++i) alpha_sum[i] += picture.alpha[i];
+  }
+  if (out.width != s.width || out.height != s.height) out = io::Image(s.width, s.height);
+  for (std::size_t i = 0; i < sum.size(); ++i) out.rgb[i] = srgb_level(sum[i] / count);
+  out.alpha.resize(alpha_sum.size());
+  for (std::size_t i = 0; i < alpha_sum.size(); ++i) {
+    out.alpha[i] = static_cast<std::uint8_t>(std::lround(alpha_sum[i] / count));
+  }
+  finish_picture(view, out);
+}
+
+void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes, io::Image& out,
+                            bool one_of_several) {
   Resources& r = *resources_;
   const RenderSettings& s = r.settings;
   const FrameSetup frame = r.setup(view);
 
-  r.boxes.upload(view.boxes, view.camera.position);
+  r.boxes.upload(boxes, view.camera.position);
   // A round solid needs RenderSettings::round_solids, a hull its mesh among RenderSettings::hulls.
-  assert(std::all_of(view.boxes.begin(), view.boxes.end(), [&](const Box& b) {
+  assert(std::all_of(boxes.begin(), boxes.end(), [&](const Box& b) {
     return b.solid == Solid::box ||
            (b.solid == Solid::hull ? b.mesh < s.hulls.size() : s.round_solids);
   }));
-  for (Resources::RoundSolid& round : r.rounds)
-    round.batch.upload(view.boxes, view.camera.position);
+  for (Resources::RoundSolid& round : r.rounds) round.batch.upload(boxes, view.camera.position);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);
@@ -707,8 +760,16 @@ void Renderer::draw(const FrameView& view, io::Image& out) {
   std::vector<PixelBox> text_boxes;
   if (text) text_boxes = r.text->lay_out(r.texts_with_labels(view, frame));
   r.read_pixels(out, text_boxes);
+  if (!one_of_several) finish_picture(view, out);  // else once, over the pictures' average
+}
+
+void Renderer::finish_picture(const FrameView& view, io::Image& out) {
+  Resources& r = *resources_;
+  const RenderSettings& s = r.settings;
   if (!view.panels.empty() || !view.strokes.empty()) draw_sketch(view.panels, view.strokes, out);
-  if (text) r.text->draw(out);
+  const bool labelled = std::any_of(view.arrows.begin(), view.arrows.end(),
+                                    [](const Arrow& a) { return !a.label.empty(); });
+  if ((!view.texts.empty() || !view.labels.empty() || labelled) && r.text) r.text->draw(out);
   // Last: every layer blends onto the background colour (straight_alpha.hpp says why).
   if (s.transparent) make_alpha_straight(out, s.background);
 }

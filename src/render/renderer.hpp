@@ -49,6 +49,12 @@ class Renderer {
 
  private:
   explicit Renderer(std::unique_ptr<Resources> resources);
+  // One picture of `view` with these boxes, read back into `out`; then, unless it is
+  // `one_of_several` pictures of a motion-blurred frame, finish_picture.
+  void draw_picture(const FrameView& view, const std::vector<Box>& boxes, io::Image& out,
+                    bool one_of_several);
+  // The layers drawn over the picture read back: panels and strokes, texts, straight alpha.
+  void finish_picture(const FrameView& view, io::Image& out);
   std::unique_ptr<Resources> resources_;
 };
 

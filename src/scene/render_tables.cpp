@@ -21,6 +21,25 @@ int setting_integer(TableReader& in, const common::RenderSetting& setting, int f
   return static_cast<int>(in.optional_integer(setting.key, fallback, setting.min, setting.max));
 }
 
+// motion_blur = { samples = S, shutter = F }: S from 2 to 64 pictures a frame, F in (0, 1] of
+// the frame's interval (default 0.5, a 180° shutter).
+common::MotionBlur read_motion_blur(TableReader& in) {
+  const toml::table* table = in.table().get("motion_blur")->as_table();
+  if (!table) in.fail("motion_blur", "expected a table { samples = 8, shutter = 0.5 }");
+  TableReader blur(*table, in.qualified("motion_blur"), in.file());
+  common::MotionBlur out;
+  blur.required("samples");  // no default: the cost is the user's to choose
+  out.samples =
+      static_cast<int>(blur.optional_integer("samples", 2, 2, common::kMaxMotionBlurSamples));
+  out.shutter = blur.optional_number("shutter", out.shutter);
+  if (!(out.shutter > 0.0 && out.shutter <= 1.0)) {
+    blur.fail("shutter", "must be more than 0 and at most 1 (of a frame's interval; got " +
+                             format_number(out.shutter) + ")");
+  }
+  blur.reject_unknown_keys();
+  return out;
+}
+
 void read_render(TableReader& in, Scene& scene) {
   common::RenderSettings& r = scene.render;
   r.width = setting_integer(in, common::render_setting("width"), r.width);
@@ -51,6 +70,7 @@ void read_render(TableReader& in, Scene& scene) {
   }
   scene.font = in.optional_string("font", scene.font);
   if (in.has("font") && scene.font.empty()) in.fail("font", "expected a fontconfig family name");
+  if (in.has("motion_blur")) r.motion_blur = read_motion_blur(in);
   in.reject_unknown_keys();
 }
 

@@ -253,6 +253,24 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
     }
   }
   started_ = true;
+  // Motion blur: the bodies at each picture's time, which spread over the shutter around t,
+  // taken in time order with t's (the physics only goes forward).
+  const common::MotionBlur& blur = scene_.render.motion_blur;
+  std::vector<std::vector<render::Box>> blurred;
+  int picture = 0;
+  const auto add_pictures_until = [&](double end) -> Result<void> {
+    for (; blur.on() && picture < blur.samples && blur.time(t, picture, scene_.fps) < end;
+         ++picture) {
+      const double at = std::clamp(blur.time(t, picture, scene_.fps), 0.0, scene_.duration);
+      const auto states = checked_states_at(simulation_, scene_, at, stop_requested_);
+      if (!states) return Error{states.error()};
+      render::FrameView bodies = frame_view(scene_, framing_, *states, at);
+      if (!scene_.joints.empty()) add_joints(scene_, simulation_.joints(), *states, bodies);
+      blurred.push_back(std::move(bodies.boxes));
+    }
+    return {};
+  };
+  if (const Result<void> before = add_pictures_until(t); !before) return Error{before.error()};
   const Result<std::vector<physics::BodyState>> states =
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};
@@ -267,6 +285,11 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
     if (overlays_->needs_contacts()) contacts = contact_forces(simulation_);
     overlays_->add_to(*states, steps, t, frame, view, joints, contacts);
   }
+  if (blur.on()) {
+    const Result<void> after = add_pictures_until(std::numeric_limits<double>::infinity());
+    if (!after) return Error{after.error()};
+    view.blurred_boxes = std::move(blurred);
+  }
   return view;
 }
 
@@ -275,7 +298,13 @@ Result<std::int64_t> SimulatedFrames::seek(std::int64_t frame) {
   // Not past the first state view(frame) needs: its trails' past comes first.
   const std::int64_t first_needed =
       overlays_ ? std::max<std::int64_t>(0, frame - overlays_->frames_of_history()) : frame;
-  const double t = static_cast<double>(first_needed) / scene_.fps;  // s, as view() computes it
+  double t = static_cast<double>(first_needed) / scene_.fps;  // s, as view() computes it
+  // A motion-blurred frame's first picture comes before its time.
+  const common::MotionBlur& blur = scene_.render.motion_blur;
+  if (blur.on()) {
+    const double first_picture = blur.time(static_cast<double>(frame) / scene_.fps, 0, scene_.fps);
+    t = std::min(t, std::max(0.0, first_picture));
+  }
   const Result<std::vector<physics::BodyState>> states =
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};
