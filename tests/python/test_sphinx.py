@@ -1,9 +1,9 @@
 """The Sphinx extension tumble.sphinx: its directive renders a scene while a site builds, the page
 plays the video in headless Chromium, a second build renders nothing, an edited scene renders
-again, a bad scene stops the build with tumble's message.
+again, a bad scene stops the build with tumble's message; and the repository's docs/ site builds.
 
 Run by ctest (tests/CMakeLists.txt) with Debian's python3 (python3-sphinx 5.3) and PYTHONPATH at
-build/python."""
+build/python; TUMBLE_DOCS_OUTPUT is where DocsSite builds docs/ (build/docs)."""
 
 import json
 import os
@@ -413,6 +413,31 @@ class HtmlFormat(unittest.TestCase):
             replay = (out / frame[1]).read_text()
             self.assertIn("<html", replay.lower())
             self.assertIn("Turn it with the mouse.", index)
+
+
+class DocsSite(unittest.TestCase):
+    """The repository's docs/ builds with its directives (warnings are errors), into
+    TUMBLE_DOCS_OUTPUT, the command of the CMake target `docs`."""
+
+    def test_docs_build_with_their_videos_and_a_second_build_renders_nothing(self):
+        out = pathlib.Path(os.environ.get("TUMBLE_DOCS_OUTPUT", SOURCE / "build" / "docs"))
+        options = ("-W", "--keep-going", "-d", str(out / "doctrees"))
+        first = sphinx_build(SOURCE / "docs", out / "html", *options)
+        self.assertEqual(first.returncode, 0, output_of(first))
+        page = (out / "html" / "videos.html").read_text()
+        videos = re.findall(r'<video class="tumble" controls width="480" height="270"[^>]*>'
+                            r'<source src="(_tumble/[^"]+\.mp4)"', page)
+        self.assertEqual([pathlib.Path(v).name for v in videos],
+                         ["die_on_table.mp4", "spinning_cube.mp4"])
+        for video in videos:
+            self.assertGreater((out / "html" / video).stat().st_size, 10_000)
+        self.assertEqual(len(re.findall(r'<video [^>]*poster="_tumble/die_on_table-', page)), 1)
+        self.assertIn("tumble.load", (out / "html" / "python.html").read_text())
+        before = stamps(out / "html" / "_tumble")
+        again = sphinx_build(SOURCE / "docs", out / "html", *options)
+        self.assertEqual(again.returncode, 0, output_of(again))
+        self.assertEqual(RENDERED.findall(again.stdout), [])
+        self.assertEqual(stamps(out / "html" / "_tumble"), before)
 
 
 if __name__ == "__main__":
