@@ -44,6 +44,10 @@ std::string settings_json(const RenderJob& job, const RenderResult& result) {
   for (std::size_t i = 0; i < scene.output.formats.size(); ++i) {
     out << (i ? ", " : "") << io::json_string(io::video_format_name(scene.output.formats[i]));
   }
+  if (scene.output.gltf) {
+    out << (scene.output.formats.empty() ? "" : ", ")
+        << io::json_string(std::string(common::kGltfFormatName));
+  }
   out << "], \"crf\": " << scene.output.crf << ", \"webm_crf\": " << scene.output.webm_crf
       << ", \"preset\": " << io::json_string(scene.output.preset)
       << ", \"font\": " << io::json_string(view::overlay_font(scene));
@@ -96,6 +100,7 @@ std::string report_json(const RenderJob& job, const RenderResult& result,
   const double efficiency = p.wall > 0 ? p.process_cpu / cores / p.wall : 0.0;
   const std::string frames_directory = job.frames_path(job.directory);
   const std::string video_path = job.video_path(job.directory);
+  const std::string gltf_path = job.gltf_path(job.directory);
   std::ostringstream out;
   out.precision(17);
   // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
@@ -114,8 +119,9 @@ std::string report_json(const RenderJob& job, const RenderResult& result,
       << ", \"count\": " << job.end - job.first << "},\n  \"frames_directory\": "
       << (frames_directory.empty() ? "null" : io::json_string(frames_directory))
       << ",\n  \"video\": " << (video_path.empty() ? "null" : io::json_string(video_path))
-      << ",\n  \"videos\": " << videos_json(job) << ",\n  \"kept\": " << kept_json(kept)
-      << ",\n  \"gif\": " << gif_json(job)
+      << ",\n  \"videos\": " << videos_json(job)
+      << ",\n  \"gltf\": " << (gltf_path.empty() ? "null" : io::json_string(gltf_path))
+      << ",\n  \"kept\": " << kept_json(kept) << ",\n  \"gif\": " << gif_json(job)
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
       << ",\n  \"renderer\": " << io::json_string(result.renderer)
       << ",\n  \"backend\": " << io::json_string(result.backend)
