@@ -167,8 +167,9 @@ class Video:
 class Render:
     """What a render wrote: ``directory``, ``files`` (name -> path of each file written, plus
     ``frames`` for the PNG folder), ``kept`` (names kept of an earlier render of the scene),
-    ``warnings``, ``report`` (report.json as a dict) and ``video`` (the first video's path, or
-    None). In Jupyter it shows its video (or GIF, or poster)."""
+    ``warnings``, ``report`` (report.json as a dict), ``video`` (the first video's path, or
+    None) and ``gltf`` (the .glb's path, or None). In Jupyter it shows its video (or GIF, or
+    poster)."""
 
     def __init__(self, directory, written, kept, warnings):
         self.directory = pathlib.Path(directory)
@@ -179,6 +180,8 @@ class Render:
         videos = self.report.get("videos") or {}
         self.videos = {kind: self.directory / pathlib.Path(path).name for kind, path in videos.items()}
         self.video = next(iter(self.videos.values()), None)
+        gltf = self.report.get("gltf")
+        self.gltf = self.directory / pathlib.Path(gltf).name if gltf else None
         poster = self.directory / "poster.png"
         self.poster = poster if poster.exists() else None
 

@@ -140,10 +140,10 @@ class Render(unittest.TestCase):
         with tempfile.TemporaryDirectory() as tmp:
             a, b = pathlib.Path(tmp) / "cli", pathlib.Path(tmp) / "python"
             done = cli("render", scene_path, "-o", a, "--width", 320, "--height", 180,
-                       "--format", "mp4,gif", "-q")
+                       "--format", "mp4,gif,gltf", "-q")
             self.assertEqual(done.returncode, 0, done.stderr)
             render = tumble.load(scene_path).render(output=b, width=320, height=180,
-                                                    formats=["mp4", "gif"])
+                                                    formats=["mp4", "gif", "gltf"])
             (cli_folder,) = a.iterdir()
             expected, got = folder_bytes(cli_folder), folder_bytes(render.directory)
             self.assertEqual(sorted(expected), sorted(got))
@@ -156,6 +156,8 @@ class Render(unittest.TestCase):
             self.assertEqual(set(render.videos), {"mp4", "gif"})
             self.assertTrue(render.video.is_file())
             self.assertIn("frames", render.files)
+            self.assertEqual(render.gltf, render.directory / "dropped_cube.glb")
+            self.assertIn("dropped_cube.glb", expected)
 
             # In Jupyter: the MP4's own bytes in a data URI, the poster beside it.
             html = render._repr_html_()
