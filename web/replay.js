@@ -111,32 +111,75 @@
                                       lightColor.clone().multiplyScalar(0.55 * data.light.ambient),
                                       Math.PI));
 
-  if (data.ground && !data.transparent) addGround(data.ground);
+  if (data.ground && !data.transparent) scene.add(groundOf(data.ground));
 
-  // The ground as tumble draws it: matte, gridded, fading into the background far away.
-  function addGround(ground) {
-    const distance = new THREE.Vector3().fromArray(data.camera.position)
-                                        .distanceTo(new THREE.Vector3().fromArray(data.camera.look_at));
-    const half = Math.max(20, 4 * distance);  // m
+  // A canvas of `size` px as a texture, drawn by `paint(context, size)`.
+  function paintedTexture(size, paint) {
+    const canvas = document.createElement('canvas');
+    canvas.width = canvas.height = size;
+    paint(canvas.getContext('2d'), size);
+    const texture = new THREE.CanvasTexture(canvas);
+    texture.anisotropy = renderer.capabilities.getMaxAnisotropy();
+    return texture;
+  }
+
+  // The ground as tumble draws it (shaders/ground.frag): matte, its grid lines 0.65 of its colour
+  // at every grid_spacing, fading into the background from 0.35 of its half extent about the
+  // point the camera looks at to the whole of it. It stands in for the glTF's "ground" node, the
+  // unfaded square alone.
+  function groundOf(ground) {
+    const half = ground.half_extent;  // m
     const centre = new THREE.Vector3().fromArray(data.camera.look_at);
-    const plane = new THREE.Mesh(new THREE.PlaneGeometry(2 * half, 2 * half),
-                                 new THREE.MeshStandardMaterial({ color: srgb(ground.color),
-                                                                  roughness: 1, metalness: 0 }));
+    const material = new THREE.MeshStandardMaterial({
+      color: srgb(ground.color), roughness: 1, metalness: 0, transparent: true, depthWrite: true });
+    if (ground.grid_spacing > 0) {
+      material.map = paintedTexture(64, (context, size) => {
+        context.fillStyle = '#fff';
+        context.fillRect(0, 0, size, size);
+        context.fillStyle = `rgb(${Math.round(255 * 0.65 ** (1 / 2.2))}, ` +
+                            `${Math.round(255 * 0.65 ** (1 / 2.2))}, ${Math.round(255 * 0.65 ** (1 / 2.2))})`;
+        context.fillRect(0, 0, size, 2);
+        context.fillRect(0, 0, 2, size);
+      });
+      material.map.colorSpace = THREE.SRGBColorSpace;
+      material.map.wrapS = material.map.wrapT = THREE.RepeatWrapping;
+      const cells = 2 * half / ground.grid_spacing;
+      material.map.repeat.set(cells, cells);
+      // Lines at whole multiples of the spacing, as the grid of the video: u = 0 at x = centre - half.
+      material.map.offset.set(((centre.x - half) / ground.grid_spacing) % 1,
+                              ((-centre.z - half) / ground.grid_spacing) % 1);
+    }
+    material.alphaMap = paintedTexture(256, (context, size) => {
+      const fade = context.createRadialGradient(size / 2, size / 2, 0.35 * size / 2,
+                                                size / 2, size / 2, size / 2);
+      fade.addColorStop(0, '#fff');
+      fade.addColorStop(1, '#000');
+      context.fillStyle = fade;
+      context.fillRect(0, 0, size, size);
+    });
+    const plane = new THREE.Mesh(new THREE.PlaneGeometry(2 * half, 2 * half), material);
     plane.rotation.x = -Math.PI / 2;
     plane.position.set(centre.x, ground.height, centre.z);
-    scene.add(plane);
-    if (ground.grid_spacing > 0) {
-      const lines = Math.min(400, Math.ceil(2 * half / ground.grid_spacing));
-      const grid = new THREE.GridHelper(lines * ground.grid_spacing, lines,
-                                        srgb(ground.color).multiplyScalar(0.8),
-                                        srgb(ground.color).multiplyScalar(0.8));
-      const snap = (x) => Math.round(x / ground.grid_spacing) * ground.grid_spacing;
-      grid.position.set(snap(centre.x) + (lines % 2 ? ground.grid_spacing / 2 : 0),
-                        ground.height + 1e-3 * ground.grid_spacing,
-                        snap(centre.z) + (lines % 2 ? ground.grid_spacing / 2 : 0));
-      scene.add(grid);
-    }
-    scene.fog = new THREE.Fog(srgb(data.background), 0.35 * half + distance, half + distance);
+    plane.receiveShadow = true;
+    plane.renderOrder = -1;  // before the bodies, which it never covers
+    return plane;
+  }
+
+  // The key light's shadows over the bodies' reach: an orthographic box about `centre` of
+  // `radius` (m), as tumble's shadow map.
+  function castShadows(centre, radius) {
+    renderer.shadowMap.enabled = true;
+    renderer.shadowMap.type = THREE.PCFSoftShadowMap;
+    key.castShadow = true;
+    key.shadow.mapSize.set(2048, 2048);
+    const along = new THREE.Vector3().fromArray(data.light.direction).normalize();
+    key.target.position.copy(centre);
+    key.position.copy(centre).addScaledVector(along, -2 * radius);
+    Object.assign(key.shadow.camera, { left: -radius, right: radius, top: radius,
+                                       bottom: -radius, near: 0.1, far: 4 * radius + 0.1 });
+    key.shadow.camera.updateProjectionMatrix();
+    key.shadow.bias = -0.0005;
+    key.shadow.normalBias = 0.01 * radius;
   }
 
   // --- overlays: arrows (vectors, axes) and trails, one entry per overlay item of the frames ---
@@ -293,6 +336,30 @@
     return url;
   }
 
+  // The box the moving bodies sweep over the frames (a still scene's: every mesh but the ground).
+  function bodiesReach(gltf) {
+    const reach = new THREE.Box3();
+    const moving = new Set((gltf.animations[0]?.tracks ?? []).map(
+      (track) => THREE.PropertyBinding.parseTrackName(track.name).nodeName));
+    const bodies = [];
+    gltf.scene.traverse((object) => {
+      if (object.isMesh && object.name !== 'ground' &&
+          (moving.size === 0 || moving.has(object.name) || moving.has(object.parent?.name))) {
+        bodies.push(object);
+      }
+    });
+    const samples = action ? 32 : 1;
+    for (let i = 0; i < samples; ++i) {
+      if (action) {
+        action.time = startTime + (endTime - startTime) * i / (samples - 1);
+        mixer.update(0);
+      }
+      for (const body of bodies) reach.expandByObject(body);
+    }
+    return reach.isEmpty() ? new THREE.Box3(new THREE.Vector3(-1, -1, -1),
+                                            new THREE.Vector3(1, 1, 1)) : reach;
+  }
+
   function fail(message) {
     const box = document.getElementById('message');
     box.textContent = `This replay cannot be shown: ${message}`;
@@ -309,12 +376,22 @@
 
   const ready = new GLTFLoader().parseAsync(glbBytes(), '').then((gltf) => {
     scene.add(gltf.scene);
+    const glbGround = gltf.scene.getObjectByName('ground');
+    if (glbGround && data.ground && !data.transparent) glbGround.visible = false;
+    gltf.scene.traverse((object) => {
+      if (object.isMesh) object.castShadow = object.receiveShadow = true;
+    });
     if (gltf.animations.length > 0) {
       mixer = new THREE.AnimationMixer(gltf.scene);
       action = mixer.clipAction(gltf.animations[0]);
       action.setLoop(THREE.LoopOnce);
       action.clampWhenFinished = true;
       action.play();
+    }
+    if (data.shadows) {
+      const reach = bodiesReach(gltf);
+      castShadows(reach.getCenter(new THREE.Vector3()),
+                  Math.max(1, reach.getBoundingSphere(new THREE.Sphere()).radius));
     }
     show(time);
     fit();
