@@ -7,7 +7,8 @@
 // For tests and scripts: the fragment #t=2&paused&speed=0.5 chooses the start; the page sets
 // body[data-ready] once the scene is loaded (body[data-error] with the message if it cannot
 // load), and window.tumbleReplay has ready (a promise), seek(t), play(), pause(), time(),
-// playing() and snapshot() (the 3D view drawn at the video's size, as a PNG data: URL).
+// playing(), snapshot() (the 3D view drawn at the video's size, as a PNG data: URL) and scene
+// (three.js's, the glTF's nodes named as the bodies).
 (() => {
   'use strict';
   const { THREE, GLTFLoader, OrbitControls } = TumbleThree;
@@ -287,16 +288,25 @@
     placeLabels();
   }
 
+  // Draws on the next animation frame: while playing every one, else only after a change.
+  let drawPending = false;
+  function redraw() {
+    drawPending = true;
+  }
+
   function tick(now) {
     if (playing) {
       if (lastTick !== null) {
         time += (now - lastTick) / 1000 * speed;
-        if (time > endTime) time = startTime + (time - endTime);  // loops
+        if (time > endTime) {  // loops
+          time = startTime + (time - endTime) % Math.max(endTime - startTime, 1e-9);
+        }
         show(time);
       }
       lastTick = now;
     }
-    draw();
+    if (playing || drawPending) draw();
+    drawPending = false;
     requestAnimationFrame(tick);
   }
 
@@ -419,19 +429,19 @@
     overlays.visible = overlayChoice.checked;
     for (const { label } of arrows) if (label) label.hidden = !overlays.visible;
     show(time);
-    draw();
+    redraw();
   });
   videoCameraChoice.addEventListener('change', () => {
     followVideoCamera = videoCameraChoice.checked;
     if (!followVideoCamera) sceneCamera();
     show(time);
-    draw();
+    redraw();
   });
   document.getElementById('reset-camera').addEventListener('click', () => {
     followVideoCamera = false;
     videoCameraChoice.checked = false;
     sceneCamera();
-    draw();
+    redraw();
   });
   document.addEventListener('keydown', (event) => {
     if (event.code === 'Space' && event.target.tagName !== 'BUTTON') {
@@ -439,7 +449,7 @@
       setPlaying(!playing);
     }
   });
-  controls.addEventListener('change', () => { if (!playing) draw(); });
+  controls.addEventListener('change', redraw);
   window.addEventListener('resize', fit);
 
   window.tumbleReplay = {
@@ -450,5 +460,6 @@
     time: () => time,
     playing: () => playing,
     snapshot,
+    scene,
   };
 })();

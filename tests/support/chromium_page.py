@@ -8,7 +8,8 @@ listens), runs the steps in order and prints one JSON object: {"results": [one p
 "requests": [every URL the page asked for], "errors": [exceptions and console errors]}.
 
 A step is one of
-    {"viewport": [W, H]}            the page's size in CSS px (device scale 1)
+    {"viewport": [W, H]}            the page's size in CSS px (device scale 1); W or H may be a
+                                    JS expression (of the page loaded by then), its value used
     {"wait": "JS expression"}       until it is truthy (its value is the result), or fails after
                                     "timeout" seconds (default 20): a page that never gets there
     {"eval": "JS expression"}       its value (a promise is awaited)
@@ -116,7 +117,8 @@ def run(url, steps):
         navigated = False
         for step in steps:
             if "viewport" in step:
-                width, height = step["viewport"]
+                width, height = (evaluate(browser, session, side) if isinstance(side, str)
+                                 else side for side in step["viewport"])
                 browser.send("Emulation.setDeviceMetricsOverride",
                              {"width": width, "height": height, "deviceScaleFactor": 1,
                               "mobile": False}, session)
