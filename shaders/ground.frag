@@ -11,6 +11,7 @@ uniform vec3 u_background;    // linear
 uniform float u_grid_spacing;  // m; 0 = no grid
 uniform vec3 u_center;
 uniform float u_half_extent;
+uniform float u_fade_start;  // of u_half_extent: render/view_extent.hpp's kGroundFadeStart
 // For a transparent picture (≥ 0) the ground is not drawn, only its shadows, as black of this
 // opacity where the key light is wholly hidden; negative otherwise (Renderer::draw_ground_with).
 uniform float u_shadow_opacity;
@@ -34,7 +35,7 @@ void main() {
 #endif
   vec3 color = grid * mix(u_shadow_color, u_lit_color, visibility);
   float distance_to_center = length(v_world_position.xz - u_center.xz);
-  float fade = smoothstep(0.35 * u_half_extent, u_half_extent, distance_to_center);
+  float fade = smoothstep(u_fade_start * u_half_extent, u_half_extent, distance_to_center);
   if (u_shadow_opacity >= 0.0) {
     // Black of opacity `shadow` over the background colour the frame was cleared to, as every
     // layer of a transparent frame is (render/straight_alpha.hpp makes it straight black).

@@ -8,13 +8,6 @@
 namespace tumble::render {
 namespace {
 
-// A ball's cube faces are divided 16 × 16: its outline is a polygon of 64 sides, whose sides
-// bulge in by 0.12% of the radius (1 − cos(π/64)), a tenth of a pixel for a ball 160 px across;
-// the shading's normal is the sphere's own at every pixel (ball.frag).
-constexpr int kBallDivisions = 16;
-// A cylinder's side is a prism of 64 faces, its outline as close to a circle as a ball's.
-constexpr int kCylinderSides = 64;
-
 // Per box, advancing once per instance, at body.vert's locations. A matrix takes one location
 // per column.
 void point_instance_attributes() {
@@ -50,10 +43,7 @@ BoxBatch BoxBatch::create(Solid solid) {
     vertices = cylinder_vertices(kCylinderSides, indices);
   } else {
     vertices = cube_vertices();
-    for (GLushort face = 0; face < 6; ++face) {
-      const GLushort base = face * 4;
-      for (const GLushort corner : {0, 1, 2, 0, 2, 3}) indices.push_back(base + corner);
-    }
+    indices = cube_indices();
   }
   out.set_up(vertices, indices,
              {{0, offsetof(CubeVertex, position)}, {1, offsetof(CubeVertex, normal)}});

@@ -33,6 +33,11 @@ Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up) {
   return view;
 }
 
+Quat camera_rotation(const Camera& camera) {
+  const Mat4 view = look_at(camera.position, camera.look_at, camera.up);
+  return Quat(Eigen::Matrix3d(view.topLeftCorner<3, 3>().transpose())).normalized();
+}
+
 Mat4 perspective(double fov_y_radians, double aspect, double near, double far) {
   const double f = 1.0 / std::tan(fov_y_radians / 2.0);
   Mat4 m = Mat4::Zero();
@@ -107,6 +112,17 @@ std::vector<CubeVertex> cube_vertices() {
     }
   }
   return out;
+}
+
+std::vector<std::uint16_t> cube_indices() {
+  std::vector<std::uint16_t> indices;
+  for (std::uint16_t face = 0; face < 6; ++face) {
+    const auto base = static_cast<std::uint16_t>(face * 4);
+    for (const std::uint16_t corner : {0, 1, 2, 0, 2, 3}) {
+      indices.push_back(static_cast<std::uint16_t>(base + corner));
+    }
+  }
+  return indices;
 }
 
 std::vector<CubeVertex> sphere_vertices(int divisions, std::vector<std::uint16_t>& indices) {

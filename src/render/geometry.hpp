@@ -1,5 +1,6 @@
 // The maths of drawing, free of GL: colours to linear light, camera matrices, the unit cube's
-// vertices and the model matrices of boxes and quads. Internal to src/render/.
+// vertices and the model matrices of boxes and quads. Internal to src/render/, but for
+// linear_from_srgb and camera_rotation, which a glTF file needs too (job/gltf_scene.cpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -18,6 +19,10 @@ Eigen::Vector3f linear_from_srgb(const Color& srgb);
 
 // World to camera (looking down -z), as gluLookAt; any `up` not along the view will do.
 Mat4 look_at(const Vec3& eye, const Vec3& target, const Vec3& up);
+
+// The camera's frame to the world's: look_at's rotation undone (the camera looks down its -z with
+// its +y up, as a glTF camera does).
+Quat camera_rotation(const Camera& camera);
 
 // Camera to clip space, as gluPerspective; `near` and `far` are distances (m).
 Mat4 perspective(double fov_y_radians, double aspect, double near, double far);
@@ -51,6 +56,15 @@ struct CubeVertex {
 };
 
 std::vector<CubeVertex> cube_vertices();
+// cube_vertices' two triangles a face, counter-clockwise seen from outside.
+std::vector<std::uint16_t> cube_indices();
+
+// A ball's cube faces are divided 16 × 16: its outline is a polygon of 64 sides, whose sides
+// bulge in by 0.12% of the radius (1 − cos(π/64)), a tenth of a pixel for a ball 160 px across;
+// the shading's normal is the sphere's own at every pixel (ball.frag).
+inline constexpr int kBallDivisions = 16;
+// A cylinder's side is a prism of 64 faces, its outline as close to a circle as a ball's.
+inline constexpr int kCylinderSides = 64;
 
 // The sphere of diameter 1 (the ball in the unit cube), each face of the cube divided into
 // `divisions` × `divisions` cells pushed out onto the sphere, normals along the radius; into

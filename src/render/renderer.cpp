@@ -21,6 +21,7 @@
 #include "render/sketch_layer.hpp"
 #include "render/straight_alpha.hpp"
 #include "render/text_layer.hpp"
+#include "render/view_extent.hpp"
 
 namespace tumble::render {
 namespace {
@@ -113,10 +114,9 @@ void vertex_array(const float* vertices, std::size_t bytes, int components, GLui
 struct FrameSetup {
   Mat4 view_projection;
   Mat4 light_view_projection;
-  Vec3 light_direction;    // the way the key light travels, world frame, unit
-  double camera_distance;  // from the camera to the point it looks at (m)
-  double radius;           // of the sphere around the look-at point that holds every box (m)
-  double shadow_radius;    // of the sphere the shadow map covers: radius, or more for quads (m)
+  Vec3 light_direction;  // the way the key light travels, world frame, unit
+  ViewExtent extent;     // the boxes' sphere, near and far, the ground's square
+  double shadow_radius;  // of the sphere the shadow map covers: extent's radius, or more (m)
 };
 
 struct Renderer::Resources {
@@ -367,33 +367,22 @@ FrameSetup Renderer::Resources::setup(const FrameView& view) const {
   FrameSetup frame;
   // The part of the world worth lighting and showing: a sphere around the look-at point that
   // holds every box.
-  frame.radius = 1.0;
-  for (const Box& box : view.boxes) {
-    frame.radius =
-        std::max(frame.radius, (box.position - camera.look_at).norm() + 0.5 * box.size.norm());
-  }
-  // Quads reach further (a wall behind the boxes): the far plane keeps them, and the shadow
-  // map grows to hold those that cast shadows, up to kQuadShadowReach times the boxes' sphere.
-  double quad_reach = 0.0;
+  frame.extent = view_extent(view);
+  // The shadow map grows to hold the quads that cast shadows, up to kQuadShadowReach times the
+  // boxes' sphere.
   double caster_reach = 0.0;
   for (const Quad& quad : view.quads) {
-    const bool casts = !seen_from_back(quad, camera.position);
+    if (seen_from_back(quad, camera.position)) continue;
     for (const Vec3& corner : corners(quad)) {
-      const double reach = (corner - camera.look_at).norm();
-      quad_reach = std::max(quad_reach, reach);
-      if (casts) caster_reach = std::max(caster_reach, reach);
+      caster_reach = std::max(caster_reach, (corner - camera.look_at).norm());
     }
   }
   frame.shadow_radius =
-      std::max(frame.radius, std::min(caster_reach, kQuadShadowReach * frame.radius));
-  frame.camera_distance = (camera.position - camera.look_at).norm();
-  const double near = std::max(0.01, 0.05 * std::max(frame.camera_distance - frame.radius, 0.1));
-  const double far = std::max(frame.camera_distance + 4.0 * frame.radius + 100.0,
-                              frame.camera_distance + 1.01 * quad_reach);
+      std::max(frame.extent.radius, std::min(caster_reach, kQuadShadowReach * frame.extent.radius));
   frame.view_projection =
       perspective(camera.fov_degrees * M_PI / 180.0,
-                  static_cast<double>(settings.width) / static_cast<double>(settings.height), near,
-                  far) *
+                  static_cast<double>(settings.width) / static_cast<double>(settings.height),
+                  frame.extent.near, frame.extent.far) *
       look_at(camera.position, camera.look_at, camera.up);
 
   frame.light_direction = settings.light.direction.normalized();
@@ -454,8 +443,7 @@ GroundKey Renderer::Resources::ground_key(const FrameView& view, const FrameSetu
   key.center = {static_cast<float>(view.camera.look_at.x()),
                 static_cast<float>(settings.ground.height),
                 static_cast<float>(view.camera.look_at.z())};
-  key.half_extent =
-      static_cast<float>(std::max(30.0, 8.0 * (frame.camera_distance + frame.radius)));
+  key.half_extent = static_cast<float>(frame.extent.ground_half_extent);
   return key;
 }
 
@@ -466,6 +454,7 @@ void Renderer::Resources::draw_ground_with(const ShaderProgram& program, const F
   use(program, frame, view.camera);
   glUniform3fv(program.uniform("u_center"), 1, key.center.data());
   glUniform1f(program.uniform("u_half_extent"), key.half_extent);
+  glUniform1f(program.uniform("u_fade_start"), static_cast<float>(kGroundFadeStart));
   // lighting.glsl's shade() for the normal (0, 1, 0) without specular (the hemisphere
   // term is 1 there).
   const Eigen::Vector3f albedo = linear_from_srgb(s.ground.color);

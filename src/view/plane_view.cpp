@@ -38,6 +38,7 @@ DrawnPlanes drawn_planes(const scene::Scene& scene) {
   for (std::size_t i = 0; i < scene.planes.size(); ++i) {
     const scene::PlaneSpec& plane = scene.planes[i];
     if (!plane.visible || static_cast<int>(i) == floor) continue;
+    out.names.push_back(plane.name);
     out.quads.push_back(render::Quad{.center = plane.point,
                                      .orientation = plane_orientation(plane.normal),
                                      .width = plane.size[0],

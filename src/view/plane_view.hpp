@@ -2,6 +2,7 @@
 // every other visible plane as a quad; and how much of them the default camera frames.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "render/frame.hpp"
@@ -24,6 +25,7 @@ struct DrawnPlanes {
   // Every visible plane but the floor: its `size` centred at its point, in [ground]'s colour and
   // grid. Local x runs across the plane (level: world x), local z up its slope (level: world z).
   std::vector<render::Quad> quads;
+  std::vector<std::string> names;  // each quad's plane's name, for a file that names them (glTF)
 };
 
 // For a scene with planes (without any, the ground is placed by frame_scene).

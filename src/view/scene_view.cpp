@@ -110,6 +110,7 @@ Result<Framing> frame_scene(const scene::Scene& scene, std::int64_t frame_count,
     DrawnPlanes planes = drawn_planes(scene);
     out.ground = planes.ground;
     out.quads = std::move(planes.quads);
+    out.quad_names = std::move(planes.names);
   }
   if (framing_needs_motion(scene)) {
     Result<MotionBounds> bounds = motion_bounds(scene, frame_count, stop_requested);
@@ -182,7 +183,8 @@ void add_force_visuals(const scene::BodySpec& body, const physics::BodyState& st
   }
 }
 
-// How a body of the shape is drawn.
+}  // namespace
+
 render::Solid solid_of(scene::Shape shape) {
   switch (shape) {
     case scene::Shape::sphere:
@@ -199,8 +201,6 @@ render::Solid solid_of(scene::Shape shape) {
   }
   return render::Solid::box;
 }
-
-}  // namespace
 
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                              const std::vector<physics::BodyState>& states, double t) {
@@ -257,6 +257,14 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
       checked_states_at(simulation_, scene_, t, stop_requested_);
   if (!states) return Error{states.error()};
   render::FrameView view = frame_view(scene_, framing_, *states, t);
+  if (recording_) {
+    FrameMotion& motion = motion_.emplace_back(
+        FrameMotion{.time = t, .camera = view.camera, .positions = {}, .orientations = {}});
+    for (const physics::BodyState& state : *states) {
+      motion.positions.push_back(state.position());
+      motion.orientations.push_back(state.orientation());
+    }
+  }
   if (!scene_.joints.empty()) add_joints(scene_, simulation_.joints(), *states, view);
   if (overlays_) {
     // The values shown: of the two steps around t, each interpolated as itself.

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "common/result.hpp"
@@ -24,9 +25,10 @@ struct Framing {
   // [ground] as written. Without planes its height is as written, or just below the lowest point
   // any body reaches; with planes it is the floor plane (app/plane_view.hpp).
   render::Ground ground;
-  std::vector<render::Quad> quads;  // the planes other than the floor, the same every frame
-  int follow_index = -1;            // the followed body, or -1
-  std::int64_t physics_steps = 0;   // steps the framing pass took; 0 when it was not needed
+  std::vector<render::Quad> quads;      // the planes other than the floor, the same every frame
+  std::vector<std::string> quad_names;  // each quad's plane's name
+  int follow_index = -1;                // the followed body, or -1
+  std::int64_t physics_steps = 0;       // steps the framing pass took; 0 when it was not needed
 };
 
 // The renderer's settings for `scene` drawn as `framing` places its ground: a font and the lines'
@@ -52,10 +54,22 @@ bool framing_needs_motion(const scene::Scene& scene);
 Result<Framing> frame_scene(const scene::Scene& scene, std::int64_t frame_count,
                             const StopRequested& stop_requested);
 
+// How a body of the shape is drawn.
+render::Solid solid_of(scene::Shape shape);
+
 // The frame for the body states at time t (s): the bodies, the springs and pushes acting, and
 // the planes' quads.
 render::FrameView frame_view(const scene::Scene& scene, const Framing& framing,
                              const std::vector<physics::BodyState>& states, double t);
+
+// What one frame shows of the motion, kept for a file that replays it (a glTF,
+// job/gltf_scene.hpp): the frame's time, its camera and every body's pose, in body order.
+struct FrameMotion {
+  double time = 0.0;  // s
+  render::Camera camera;
+  std::vector<physics::Vec3> positions;     // each body's centre, world frame (m)
+  std::vector<physics::Quat> orientations;  // each body's body-to-world rotation
+};
 
 // The frame loop's source for a render: frame k shows the bodies at t = k / fps (s), their states
 // interpolated between the two physics steps around t, on a simulation of its own, and the
@@ -71,6 +85,10 @@ class SimulatedFrames final : public pipeline::FrameSource {
   // shows what a render from frame 0 shows.
   Result<std::int64_t> seek(std::int64_t frame);
   const sim::Simulation& simulation() const { return simulation_; }
+  // From now on, keeps what each frame view() makes shows of the motion, in frame order: the
+  // very states and camera the frame is drawn from.
+  void record_motion() { recording_ = true; }
+  const std::vector<FrameMotion>& motion() const { return motion_; }
 
  private:
   // Every joint's values at time t (s), just reached by the simulation (joint_view.hpp).
@@ -82,6 +100,8 @@ class SimulatedFrames final : public pipeline::FrameSource {
   sim::Simulation simulation_;
   std::optional<OverlayItems> overlays_;  // only for a scene with overlays
   bool started_ = false;                  // whether a frame was asked for yet
+  bool recording_ = false;                // record_motion() was called
+  std::vector<FrameMotion> motion_;       // of each frame since, when recording
 };
 
 }  // namespace tumble::view
