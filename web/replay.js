@@ -73,8 +73,8 @@
 
   const camera = new THREE.PerspectiveCamera(data.camera.fov_degrees, aspect, 0.01, 1000);
   const controls = new OrbitControls(camera, renderer.domElement);
-  function placeCamera(position, lookAt, fovDegrees) {
-    camera.up.fromArray(data.camera.up).normalize();
+  function placeCamera(position, lookAt, fovDegrees, up) {
+    camera.up.copy(up).normalize();
     camera.position.copy(position);
     camera.fov = fovDegrees;
     // As tumble's renderer: near and far from the distance to the point looked at.
@@ -88,12 +88,14 @@
   }
   function sceneCamera() {
     placeCamera(new THREE.Vector3().fromArray(data.camera.position),
-                new THREE.Vector3().fromArray(data.camera.look_at), data.camera.fov_degrees);
+                new THREE.Vector3().fromArray(data.camera.look_at), data.camera.fov_degrees,
+                new THREE.Vector3().fromArray(data.camera.up));
   }
   function videoCamera(t) {
     const path = data.camera_path;
     const u = Math.min(Math.max(Math.round((t - startTime) * data.fps), 0), data.frames - 1);
-    placeCamera(sampled(path.position, t), sampled(path.look_at, t), path.fov_degrees[u]);
+    placeCamera(sampled(path.position, t), sampled(path.look_at, t), path.fov_degrees[u],
+                sampled(path.up, t));
   }
   sceneCamera();
   controls.addEventListener('start', () => {  // the user takes the camera
@@ -112,7 +114,8 @@
                                       lightColor.clone().multiplyScalar(0.55 * data.light.ambient),
                                       Math.PI));
 
-  if (data.ground && !data.transparent) scene.add(groundOf(data.ground));
+  const ground = data.ground && !data.transparent ? groundOf(data.ground) : null;
+  if (ground) scene.add(ground);
 
   // A canvas of `size` px as a texture, drawn by `paint(context, size)`.
   function paintedTexture(size, paint) {
@@ -126,11 +129,10 @@
 
   // The ground as tumble draws it (shaders/ground.frag): matte, its grid lines 0.65 of its colour
   // at every grid_spacing, fading into the background from 0.35 of its half extent about the
-  // point the camera looks at to the whole of it. It stands in for the glTF's "ground" node, the
-  // unfaded square alone.
+  // point the camera looks at to the whole of it (placeGround moves it there). It stands in for
+  // the glTF's "ground" node, the unfaded square alone.
   function groundOf(ground) {
     const half = ground.half_extent;  // m
-    const centre = new THREE.Vector3().fromArray(data.camera.look_at);
     const material = new THREE.MeshStandardMaterial({
       color: srgb(ground.color), roughness: 1, metalness: 0, transparent: true, depthWrite: true });
     if (ground.grid_spacing > 0) {
@@ -146,9 +148,6 @@
       material.map.wrapS = material.map.wrapT = THREE.RepeatWrapping;
       const cells = 2 * half / ground.grid_spacing;
       material.map.repeat.set(cells, cells);
-      // Lines at whole multiples of the spacing, as the grid of the video: u = 0 at x = centre - half.
-      material.map.offset.set(((centre.x - half) / ground.grid_spacing) % 1,
-                              ((-centre.z - half) / ground.grid_spacing) % 1);
     }
     material.alphaMap = paintedTexture(256, (context, size) => {
       const fade = context.createRadialGradient(size / 2, size / 2, 0.35 * size / 2,
@@ -160,7 +159,7 @@
     });
     const plane = new THREE.Mesh(new THREE.PlaneGeometry(2 * half, 2 * half), material);
     plane.rotation.x = -Math.PI / 2;
-    plane.position.set(centre.x, ground.height, centre.z);
+    plane.position.y = ground.height;
     plane.receiveShadow = true;
     plane.renderOrder = -1;  // before the bodies, which it never covers
     return plane;
@@ -283,7 +282,21 @@
     timeText.value = `${t.toFixed(2)} s / ${endTime.toFixed(2)} s`;
   }
 
+  // The ground's square under the point looked at, its grid lines kept at whole multiples of
+  // the spacing in the world, as the video's.
+  function placeGround(centre) {
+    ground.position.x = centre.x;
+    ground.position.z = centre.z;
+    const map = ground.material.map;
+    if (!map) return;
+    const spacing = data.ground.grid_spacing;
+    const half = data.ground.half_extent;
+    // u runs along x from centre.x − half; v along −z from centre.z + half (the plane's rotation).
+    map.offset.set(((centre.x - half) / spacing) % 1, ((-centre.z - half) / spacing) % 1);
+  }
+
   function draw() {
+    if (ground) placeGround(controls.target);
     renderer.render(scene, camera);
     placeLabels();
   }
