@@ -10,6 +10,15 @@ namespace tumble::common {
 
 enum class VideoFormat { mp4, webm, gif };
 
+// [output] formats and --format take the videos' names and "gltf": the motion as a glTF 2.0
+// binary, <scene>.glb (io/glb_writer.hpp, job/gltf_scene.hpp). It is no video (no encoder, no
+// pixels: it is written from the bodies' poses), so it is not a VideoFormat, [output] video =
+// false and --no-video leave it on, and it has no rule of size or alpha.
+inline constexpr std::string_view kGltfFormatName = "gltf";
+inline constexpr std::string_view kGltfExtension = "glb";  // binary glTF: <scene>.glb
+// Every name of [output] formats and --format, for messages.
+inline constexpr const char* kFormatNames = "\"mp4\", \"webm\", \"gif\" or \"gltf\"";
+
 inline constexpr VideoFormat kAllVideoFormats[] = {VideoFormat::mp4, VideoFormat::webm,
                                                    VideoFormat::gif};
 

@@ -69,6 +69,10 @@ bool wrote(const JsonValue& report, const std::string& name) {
     return directory && directory->kind == JsonValue::Kind::string;
   }
   if (name == kPoster || name == kContactSheet) return true;  // unless kept (earlier_kept first)
+  if (const JsonValue* gltf = report.find("gltf");
+      gltf && gltf->kind == JsonValue::Kind::string && fs::path(gltf->string).filename() == name) {
+    return true;
+  }
   const JsonValue* videos = report.find("videos");
   if (!videos) return false;
   for (const io::JsonMember& video : videos->members) {
@@ -117,6 +121,7 @@ std::vector<std::string> render_files(const fs::path& folder, const std::string&
   for (const common::VideoFormat format : common::kAllVideoFormats) {
     names.push_back(scene_name + "." + common::video_format_name(format));
   }
+  names.push_back(scene_name + "." + std::string(common::kGltfExtension));
   names.push_back(kPoster);
   names.push_back(kContactSheet);
   std::vector<std::string> present;
@@ -168,6 +173,7 @@ EarlierRender read_earlier_render(const fs::path& folder, std::string_view scene
 }
 
 bool writes_own_stills(const scene::Scene& scene, const EarlierRender& earlier) {
+  // No PNG frames and no MP4 or WebM: a GIF, a glTF, or both.
   const bool gif_alone =
       !scene.output.frames &&
       (!scene.output.video ||

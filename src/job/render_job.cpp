@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <memory>
 
+#include "io/glb_writer.hpp"
+#include "job/gltf_scene.hpp"
 #include "job/quality_preset.hpp"
 #include "pipeline/contact_sheet.hpp"
 #include "pipeline/poster_sink.hpp"
@@ -39,9 +41,16 @@ Result<scene::Scene> with_choices(const RenderOptions& options, scene::Scene sce
   }
   if (options.formats.empty()) return scene;
   scene.output.formats.clear();
+  scene.output.gltf = false;
   for (const std::string& name : options.formats) {
+    if (name == common::kGltfFormatName) {
+      scene.output.gltf = true;
+      continue;
+    }
     const std::optional<io::VideoFormat> format = common::video_format_named(name);
-    if (!format) return Error{"--format: unknown format \"" + name + "\" (mp4, webm, gif)"};
+    if (!format) {
+      return Error{"--format: unknown format \"" + name + "\" (" + common::kFormatNames + ")"};
+    }
     if (std::find(scene.output.formats.begin(), scene.output.formats.end(), *format) ==
         scene.output.formats.end()) {
       scene.output.formats.push_back(*format);
@@ -192,6 +201,12 @@ std::string RenderJob::video_path(const fs::path& folder) const {
   return video_path(folder, io::VideoFormat::mp4);
 }
 
+std::string RenderJob::gltf_path(const fs::path& folder) const {
+  return scene.output.gltf
+             ? (folder / (scene.name + "." + std::string(common::kGltfExtension))).string()
+             : std::string();
+}
+
 std::string RenderJob::video_path(const fs::path& folder, io::VideoFormat format) const {
   const std::vector<io::VideoFormat>& formats = scene.output.formats;
   if (!scene.output.video || std::find(formats.begin(), formats.end(), format) == formats.end()) {
@@ -220,6 +235,13 @@ Result<scene::Scene> scene_as_rendered(scene::Scene written, const RenderOptions
 }
 
 Result<void> check_joinable_formats(const scene::Scene& scene, const std::string& asked_by) {
+  if (scene.output.gltf) {
+    return Error{asked_by +
+                 ": gltf is not written in parts (one file holds the animation of every frame it "
+                 "covers, and `tumble join` joins videos only): leave it out with --format mp4 or "
+                 "--format webm (or [output] formats), and render the glTF whole, or of a frame "
+                 "range with --frames"};
+  }
   if (!scene.output.video) return {};
   for (const io::VideoFormat format : scene.output.formats) {
     if (common::joins_in_segments(format)) continue;
@@ -297,6 +319,7 @@ Result<void> render_scene(const RenderJob& job, const fs::path& folder,
   if (!seek_steps) return Error{seek_steps.error()};
   result.seek_steps = *seek_steps;
   result.seek_seconds = pipeline::process_cpu_seconds() - start;
+  if (scene.output.gltf) source.record_motion();
   std::vector<pipeline::FrameSink*> sink_list;
   for (const std::unique_ptr<pipeline::FrameSink>& sink : *sinks) {
     sink_list.push_back(sink.get());
@@ -313,6 +336,11 @@ Result<void> render_scene(const RenderJob& job, const fs::path& folder,
   for (pipeline::FrameSink* sink : sink_list) {
     finished = sink->finish();
     if (!finished) break;
+  }
+  if (finished && scene.output.gltf) {
+    finished = io::write_glb(
+        job.gltf_path(folder),
+        gltf_scene(scene, *framing, source.motion(), std::string("tumble ") + TUMBLE_VERSION));
   }
   result.finish_seconds = seconds_since(finish_start);
   for (std::size_t i = 0; i < result.bodies.size(); ++i) {

@@ -69,6 +69,8 @@ struct RenderJob {
   std::string frames_path(const std::filesystem::path& folder) const;
   std::string video_path(const std::filesystem::path& folder) const;
   std::string video_path(const std::filesystem::path& folder, io::VideoFormat format) const;
+  // <name>.glb (job/gltf_scene.hpp), or "" when [output] formats does not name "gltf".
+  std::string gltf_path(const std::filesystem::path& folder) const;
 };
 
 // The scene with the options' overrides, held to the video rules once more (an override can
@@ -76,8 +78,9 @@ struct RenderJob {
 Result<scene::Scene> scene_as_rendered(scene::Scene scene, const RenderOptions& options);
 
 // Succeeds when every video the scene writes can be written in parts that `tumble join` joins
-// (not a GIF: its palette is its own frames'); else the error, after `asked_by` ("--chunk",
-// "plan"). One home for the rule of `render --chunk` and `tumble plan`.
+// (not a GIF: its palette is its own frames'), and it writes no glTF (one animation of the frames
+// it holds, which nothing joins); else the error, after `asked_by` ("--chunk", "plan"). One home
+// for the rule of `render --chunk` and `tumble plan`.
 Result<void> check_joinable_formats(const scene::Scene& scene, const std::string& asked_by);
 
 // scene_as_rendered, with its frame range (all, --frames or --chunk) and shaders.

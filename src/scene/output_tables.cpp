@@ -5,31 +5,37 @@
 namespace tumble::scene::detail {
 namespace {
 
-constexpr const char* kFormatList = "\"mp4\", \"webm\" or \"gif\"";
-
-std::vector<common::VideoFormat> read_formats(TableReader& in) {
+// The videos of [output] formats into output.formats, in order, and whether it names "gltf".
+void read_formats(TableReader& in, OutputSpec& output) {
   const toml::array* array = in.table().get("formats")->as_array();
-  if (!array) in.fail("formats", std::string("expected an array of ") + kFormatList);
+  if (!array) in.fail("formats", std::string("expected an array of ") + common::kFormatNames);
   if (array->empty()) {
     in.fail("formats", "names no format: list one or more, or set video = false for no video");
   }
-  std::vector<common::VideoFormat> formats;
+  output.formats.clear();
+  output.gltf = false;
   for (const toml::node& node : *array) {
     const std::optional<std::string_view> name = node.value<std::string_view>();
     const std::optional<common::VideoFormat> format =
         name ? common::video_format_named(*name) : std::nullopt;
-    if (!format) {
+    const bool gltf = name == common::kGltfFormatName;
+    if (!format && !gltf) {
       in.fail_at(node.source(), in.qualified("formats"),
                  (name ? "unknown format " + in_quotes(*name)
                        : "expected a string, found " + std::string(type_name(node))) +
-                     " (" + kFormatList + ")");
+                     " (" + common::kFormatNames + ")");
     }
-    if (std::find(formats.begin(), formats.end(), *format) != formats.end()) {
+    if (gltf ? output.gltf
+             : std::find(output.formats.begin(), output.formats.end(), *format) !=
+                   output.formats.end()) {
       in.fail_at(node.source(), in.qualified("formats"), "lists " + in_quotes(*name) + " twice");
     }
-    formats.push_back(*format);
+    if (gltf) {
+      output.gltf = true;
+    } else {
+      output.formats.push_back(*format);
+    }
   }
-  return formats;
 }
 
 common::GifDither read_dither(TableReader& in) {
@@ -44,7 +50,7 @@ common::GifDither read_dither(TableReader& in) {
 }  // namespace
 
 void read_output_choices(TableReader& in, OutputSpec& output) {
-  if (in.has("formats")) output.formats = read_formats(in);
+  if (in.has("formats")) read_formats(in, output);
   output.gif_loop = in.optional_bool("gif_loop", output.gif_loop);
   if (in.has("gif_fps")) {
     output.gif_fps = static_cast<int>(in.optional_integer("gif_fps", 0, 1, common::kMaxGifFps));

@@ -112,7 +112,8 @@ struct OutputSpec {
   bool frames = true;     // PNG frames
   bool video = true;      // the videos of `formats`; false: none
   std::vector<common::VideoFormat> formats = {common::VideoFormat::mp4};  // each once, in order
-  bool gif_loop = true;        // the GIF plays forever (else once)
+  bool gltf = false;     // <name>.glb: formats lists "gltf" (common/video_format.hpp), video or not
+  bool gif_loop = true;  // the GIF plays forever (else once)
   std::optional<int> gif_fps;  // the GIF's frames per second, at most fps (default: fps)
   int gif_colors = common::kMaxGifColors;                   // the GIF's palette, 2 to 256
   common::GifDither gif_dither = common::GifDither::bayer;  // how frames map onto it

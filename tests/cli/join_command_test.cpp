@@ -314,6 +314,27 @@ TEST_F(JoinCommand, AChunkOfAGifIsRefusedBeforeRendering) {
       << plan.err;
 }
 
+// A glTF is one animation of the frames it holds, and join joins videos only: --chunk and
+// `tumble plan` refuse a scene that writes one, before rendering, saying what to do instead.
+TEST_F(JoinCommand, AChunkOfAGltfIsRefusedBeforeRendering) {
+  const Outcome run =
+      tumble("render " + scene() + " --chunk 1/2 --format mp4,gltf -o " + path("out"));
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--chunk: gltf is not written in parts"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("render the glTF whole, or of a frame range with --frames"),
+            std::string::npos)
+      << run.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  const std::string gltf_scene =
+      write("gltf.toml", kScene + "[output]\nformats = [\"gltf\"]\nvideo = false\n").string();
+  const Outcome plan = tumble("plan " + gltf_scene + " --chunks 2");
+  EXPECT_EQ(plan.exit_code, 2);
+  EXPECT_EQ(plan.out, "");
+  EXPECT_NE(plan.err.find("tumble: plan: " + gltf_scene + ": gltf is not written in parts"),
+            std::string::npos)
+      << plan.err;
+}
+
 TEST_F(JoinCommand, ChunkRefusesFramesBesideItAndAChunkPastTheFrames) {
   const Outcome both = tumble("render " + scene() + " --chunk 1/3 --frames 0:5 -o " + path("out"));
   EXPECT_EQ(both.exit_code, 2);

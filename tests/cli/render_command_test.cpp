@@ -498,6 +498,46 @@ TEST_F(RenderCommand, AGifRenderedApartKeepsTheEarlierMp4FramesAndStills) {
   EXPECT_EQ(files_of(dir_ / "out/spin").size(), 15u + 5u);
 }
 
+// --format gltf writes <scene>.glb beside the videos: named in the summary and in report.json's
+// "gltf" (not among its "videos"), kept by a later render that does not write it, and written
+// under --no-video, since it is no video.
+TEST_F(RenderCommand, AGltfIsListedInTheReportAndKeptByALaterRender) {
+  const std::string small = write("small.toml", tumble::testing::spin_scene(64, 36)).string();
+  const Outcome both =
+      tumble("render " + small + " --format mp4,gltf --no-frames -o " + path("out"));
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_NE(both.err.find(path("out/spin") +
+                          "/: spin.mp4, spin.glb, poster.png, contact_sheet.png, report.json\n"),
+            std::string::npos)
+      << both.err;
+  const std::string glb = read_file(dir_ / "out/spin/spin.glb");
+  ASSERT_GT(glb.size(), 12u);
+  EXPECT_EQ(glb.substr(0, 4), "glTF");
+  const auto report = tumble::io::parse_json(read_file(dir_ / "out/spin/report.json"));
+  ASSERT_TRUE(report) << report.error();
+  EXPECT_EQ(report->find("gltf")->string, path("out/spin/spin.glb"));
+  EXPECT_EQ(report->find("videos")->text, "{\"mp4\": \"" + path("out/spin/spin.mp4") + "\"}");
+  EXPECT_EQ(report->find("settings")->find("formats")->text, "[\"mp4\", \"gltf\"]");
+
+  const Outcome mp4 = tumble("render " + small + " --format mp4 --no-frames -o " + path("out"));
+  ASSERT_EQ(mp4.exit_code, 0) << mp4.err;
+  EXPECT_NE(mp4.err.find("kept of the earlier render of this scene in " + path("out/spin") +
+                         "/: spin.glb\n"),
+            std::string::npos)
+      << mp4.err;
+  EXPECT_EQ(read_file(dir_ / "out/spin/spin.glb"), glb);
+  const auto second = tumble::io::parse_json(read_file(dir_ / "out/spin/report.json"));
+  ASSERT_TRUE(second) << second.error();
+  EXPECT_EQ(second->find("gltf")->kind, tumble::io::JsonValue::Kind::null);
+
+  fs::remove_all(dir_ / "out");
+  const Outcome alone =
+      tumble("render -q " + small + " --format gltf --no-video --no-frames -o " + path("out"));
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  EXPECT_EQ(read_file(dir_ / "out/spin/spin.glb"), glb);  // the same bytes again
+  EXPECT_FALSE(fs::exists(dir_ / "out/spin/spin.mp4"));
+}
+
 // Another scene file in the folder's place: replaced as a whole, as before, and said.
 TEST_F(RenderCommand, ARenderOfAnotherSceneReplacesTheFolderWholeAndSaysSo) {
   const std::string small = write("small.toml", tumble::testing::spin_scene(64, 36)).string();

@@ -118,7 +118,9 @@ TEST_F(VideoSinkTest, FormatOnTheCommandLineReplacesTheScenesAndNoVideoWritesNon
   const testing::Outcome bad =
       tumble("render -q " + scene.string() + " -o " + path("out") + " --format avi");
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("--format: unknown format \"avi\" (mp4, webm, gif)"), std::string::npos)
+  EXPECT_NE(
+      bad.err.find("--format: unknown format \"avi\" (\"mp4\", \"webm\", \"gif\" or \"gltf\")"),
+      std::string::npos)
       << bad.err;
 }
 

@@ -49,6 +49,35 @@ TEST(OutputTables, BadFormatsAreErrorsAtTheirLine) {
   EXPECT_NE(error_of("[output]\nformats = \"mp4\"\n").find("expected an array"), std::string::npos);
 }
 
+TEST(OutputTables, GltfIsAFormatBesideTheVideos) {
+  const Scene both = parsed("[output]\nformats = [\"gltf\", \"mp4\"]\n");
+  EXPECT_TRUE(both.output.gltf);
+  EXPECT_EQ(both.output.formats, std::vector<common::VideoFormat>{common::VideoFormat::mp4});
+  // Alone: no video, and no rule of the videos' (an odd size, a transparent background).
+  const Scene alone = parsed(
+      "[render]\nwidth = 161\nbackground = \"transparent\"\n[output]\nformats = [\"gltf\"]\n");
+  EXPECT_TRUE(alone.output.gltf);
+  EXPECT_TRUE(alone.output.formats.empty());
+  EXPECT_FALSE(parsed("").output.gltf);
+  // It is something to write when frames and video are off.
+  EXPECT_FALSE(
+      parsed("[output]\nformats = [\"gltf\"]\nframes = false\nvideo = false\n").output.frames);
+  EXPECT_NE(error_of("[output]\nformats = [\"mp4\"]\nframes = false\nvideo = false\n")
+                .find("nothing to write"),
+            std::string::npos);
+}
+
+TEST(OutputTables, GltfListedTwiceOrMisspeltIsAnErrorAtItsLine) {
+  const std::string twice = error_of("[output]\nformats = [\"gltf\", \"mp4\", \"gltf\"]\n");
+  EXPECT_NE(twice.find("test.toml:7:27: output.formats: lists \"gltf\" twice"), std::string::npos)
+      << twice;
+  const std::string misspelt = error_of("[output]\nformats = [\"glb\"]\n");
+  EXPECT_NE(misspelt.find("test.toml:7:12: output.formats: unknown format \"glb\" (\"mp4\", "
+                          "\"webm\", \"gif\" or \"gltf\")"),
+            std::string::npos)
+      << misspelt;
+}
+
 TEST(OutputTables, TransparentIsABackgroundAndAColourStillIsOne) {
   const Scene clear =
       parsed("[render]\nbackground = \"transparent\"\n[output]\nformats = [\"webm\"]\n");
