@@ -57,9 +57,12 @@ std::string settings_json(const job::RenderJob& job, const job::RenderResult& re
   for (std::size_t i = 0; i < scene.output.formats.size(); ++i) {
     out << (i ? ", " : "") << io::json_string(io::video_format_name(scene.output.formats[i]));
   }
-  if (scene.output.gltf) {
-    out << (scene.output.formats.empty() ? "" : ", ")
-        << io::json_string(std::string(common::kGltfFormatName));
+  bool listed = !scene.output.formats.empty();
+  for (const auto& [asked, name] : {std::pair{scene.output.gltf, common::kGltfFormatName},
+                                    std::pair{scene.output.html, common::kHtmlFormatName}}) {
+    if (!asked) continue;
+    out << (listed ? ", " : "") << io::json_string(std::string(name));
+    listed = true;
   }
   out << "], \"crf\": " << scene.output.crf << ", \"webm_crf\": " << scene.output.webm_crf
       << ", \"preset\": " << io::json_string(scene.output.preset)
@@ -109,6 +112,7 @@ std::string report_json(const job::RenderJob& job, const job::RenderResult& resu
   const std::string frames_directory = job.frames_path(job.directory);
   const std::string video_path = job.video_path(job.directory);
   const std::string gltf_path = job.gltf_path(job.directory);
+  const std::string html_path = job.html_path(job.directory);
   std::ostringstream out;
   out.precision(17);
   // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
@@ -129,6 +133,7 @@ std::string report_json(const job::RenderJob& job, const job::RenderResult& resu
       << ",\n  \"video\": " << (video_path.empty() ? "null" : io::json_string(video_path))
       << ",\n  \"videos\": " << videos_json(job)
       << ",\n  \"gltf\": " << (gltf_path.empty() ? "null" : io::json_string(gltf_path))
+      << ",\n  \"html\": " << (html_path.empty() ? "null" : io::json_string(html_path))
       << ",\n  \"kept\": " << job::kept_json(kept) << ",\n  \"gif\": " << gif_json(job)
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
       << ",\n  \"renderer\": " << io::json_string(result.renderer)
@@ -343,9 +348,9 @@ void add_render_command(CLI::App& app, Commands& commands) {
       "production (2560x1440, 60), 4k (3840x2160, 60); --width, --height, --fps win");
   command
       ->add_option("--format", render.formats,
-                   "Formats to write: videos mp4, webm or gif, and gltf (the motion as a glTF "
-                   "binary, <scene>.glb); repeat or separate with commas (replaces [output] "
-                   "formats)")
+                   "Formats to write: videos mp4, webm or gif, gltf (the motion as a glTF "
+                   "binary, <scene>.glb) and html (a page that replays it in a browser, "
+                   "<scene>.html); repeat or separate with commas (replaces [output] formats)")
       ->delimiter(',');
   command->add_flag("!--no-video", render.video, "Do not write any video");
   command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");

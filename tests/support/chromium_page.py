@@ -14,6 +14,7 @@ A step is one of
                                     "timeout" seconds (default 20): a page that never gets there
     {"eval": "JS expression"}       its value (a promise is awaited)
     {"screenshot": "out.png", "clip": "CSS selector"}   that element's box, as a PNG file
+    {"data_url": "JS expression", "to": "out.png"}      its value, a data: URL, decoded to a file
 
 Exit status 0 when every step ran, 1 with the reason on stderr otherwise. The result says what
 the page did; the test decides what is right.
@@ -140,6 +141,11 @@ def run(url, steps):
                 results.append(value)
             elif "eval" in step:
                 results.append(evaluate(browser, session, step["eval"]))
+            elif "data_url" in step:
+                url = evaluate(browser, session, step["data_url"])
+                with open(step["to"], "wb") as out:
+                    out.write(base64.b64decode(url.split(",", 1)[1]))
+                results.append(len(url))
             elif "screenshot" in step:
                 box = evaluate(browser, session,
                                "(() => { const r = document.querySelector(" +
@@ -173,7 +179,7 @@ def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     try:
-        print(json.dumps(run(sys.argv[1], json.loads(sys.argv[2]))))
+        print(json.dumps(run(sys.argv[1], json.loads(sys.argv[2])), separators=(",", ":")))
     except (RuntimeError, OSError, StopIteration, ValueError) as error:
         print(f"chromium_page.py: {error}", file=sys.stderr)
         sys.exit(1)
