@@ -136,7 +136,7 @@
     const material = new THREE.MeshStandardMaterial({
       color: srgb(ground.color), roughness: 1, metalness: 0, transparent: true, depthWrite: true });
     if (ground.grid_spacing > 0) {
-      material.map = paintedTexture(64, (context, size) => {
+      material.map = paintedTexture(256, (context, size) => {
         context.fillStyle = '#fff';
         context.fillRect(0, 0, size, size);
         context.fillStyle = `rgb(${Math.round(255 * 0.65 ** (1 / 2.2))}, ` +

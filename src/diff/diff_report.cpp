@@ -18,7 +18,8 @@ constexpr const char* kStyle =
     "text-align:right}td.name,th.name{text-align:left}tr.fail td{background:#fdd}"
     ".row{display:flex;gap:8px;flex-wrap:wrap}figure{margin:0}"
     "img{max-width:32vw;image-rendering:pixelated;border:1px solid #888}"
-    "iframe{width:48vw;height:calc(27vw + 4em);border:1px solid #888}";
+    "iframe{width:calc(50vw - 2.5em);height:calc((50vw - 2.5em) * 9 / 16 + 4.5em);"
+    "border:1px solid #888}";
 
 std::string number_cell(const char* format, double value) {
   if (std::isinf(value)) return "<td>inf</td>";

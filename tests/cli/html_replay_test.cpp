@@ -284,6 +284,31 @@ TEST_F(HtmlReplay, ThePageIsReportedKeptByALaterRenderAndRefusedInChunks) {
   EXPECT_FALSE(fs::exists(dir_ / "chunks"));
 }
 
+// tumble diff --report of two renders with replays shows both, each loaded and ready in its
+// frame of the report, with nothing fetched but the three pages.
+TEST_F(HtmlReplay, TheDiffReportShowsBothRendersReplays) {
+  render(kDroppedCube, "--width 160 --height 90 --format mp4,html", "a");
+  render(kDroppedCube, "--width 160 --height 90 --format mp4,html", "b");
+  const Outcome diff = tumble("diff --report " + path("report") + " " + path("a/dropped_cube") +
+                              " " + path("b/dropped_cube"));
+  EXPECT_EQ(diff.exit_code, 0) << diff.err;
+  EXPECT_TRUE(read_file(dir_ / "report/replay-a.html") ==
+              read_file(dir_ / "a/dropped_cube/dropped_cube.html"));
+  if (!missing_.empty()) GTEST_SKIP() << missing_ << ": the report is loaded in it";
+  const std::string ready = "document.body && document.body.dataset.ready";
+  const PageRun run = run_page(
+      "file://" + path("report/index.html"),
+      "[{\"frame\": 0, \"wait\": \"" + ready + "\"}, {\"frame\": 1, \"wait\": \"" + ready + "\"}]");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_EQ(text_of(step_result(run, 0)), "\"true\"");
+  EXPECT_EQ(text_of(step_result(run, 1)), "\"true\"");
+  EXPECT_EQ(run.answer.find("requests")->text, "[\"file://" + path("report/index.html") +
+                                                   "\",\"file://" + path("report/replay-a.html") +
+                                                   "\",\"file://" + path("report/replay-b.html") +
+                                                   "\"]");
+  EXPECT_EQ(run.answer.find("errors")->text, "[]");
+}
+
 TEST_F(HtmlReplay, WithoutThreeJsTheRenderSaysWhatToRunAndWritesNothing) {
   fs::create_directories(dir_ / "web");
   write("web/replay.html", "<!-- tumble: data -->");

@@ -13,6 +13,8 @@ A step is one of
     {"wait": "JS expression"}       until it is truthy (its value is the result), or fails after
                                     "timeout" seconds (default 20): a page that never gets there
     {"eval": "JS expression"}       its value (a promise is awaited)
+        Either may name "frame": N, to run in the page's Nth frame (an iframe, in document
+        order) instead, in a world of its own there: it sees that frame's DOM, not its script.
     {"screenshot": "out.png", "clip": "CSS selector"}   that element's box, as a PNG file
     {"data_url": "JS expression", "to": "out.png"}      its value, a data: URL, decoded to a file
 
@@ -96,9 +98,11 @@ class Browser:
         self.profile.cleanup()
 
 
-def evaluate(browser, session, expression):
-    reply = browser.send("Runtime.evaluate", {"expression": expression, "awaitPromise": True,
-                                              "returnByValue": True}, session)
+def evaluate(browser, session, expression, context=None):
+    params = {"expression": expression, "awaitPromise": True, "returnByValue": True}
+    if context is not None:
+        params["contextId"] = context
+    reply = browser.send("Runtime.evaluate", params, session)
     if "exceptionDetails" in reply:
         details = reply["exceptionDetails"]
         raise RuntimeError(f"{expression}: {details.get('exception', {}).get('description', details)}")
@@ -129,10 +133,17 @@ def run(url, steps):
                 browser.send("Page.navigate", {"url": url}, session)
                 browser.wait_for_event("Page.loadEventFired")
                 navigated = True
+            context = None
+            if "frame" in step:
+                frames = browser.send("Page.getFrameTree", session=session)["frameTree"]
+                frame = frames.get("childFrames", [])[step["frame"]]["frame"]["id"]
+                context = browser.send("Page.createIsolatedWorld",
+                                       {"frameId": frame, "worldName": "chromium_page"},
+                                       session)["executionContextId"]
             if "wait" in step:
                 deadline = time.monotonic() + step.get("timeout", 20)
                 while True:
-                    value = evaluate(browser, session, step["wait"])
+                    value = evaluate(browser, session, step["wait"], context)
                     if value:
                         break
                     if time.monotonic() > deadline:
@@ -140,7 +151,7 @@ def run(url, steps):
                     time.sleep(0.05)
                 results.append(value)
             elif "eval" in step:
-                results.append(evaluate(browser, session, step["eval"]))
+                results.append(evaluate(browser, session, step["eval"], context))
             elif "data_url" in step:
                 url = evaluate(browser, session, step["data_url"])
                 with open(step["to"], "wb") as out:
@@ -180,7 +191,7 @@ def main():
         sys.exit(__doc__)
     try:
         print(json.dumps(run(sys.argv[1], json.loads(sys.argv[2])), separators=(",", ":")))
-    except (RuntimeError, OSError, StopIteration, ValueError) as error:
+    except (RuntimeError, OSError, StopIteration, ValueError, IndexError, KeyError) as error:
         print(f"chromium_page.py: {error}", file=sys.stderr)
         sys.exit(1)
 
