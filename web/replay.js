@@ -7,8 +7,8 @@
 // For tests and scripts: the fragment #t=2&paused&speed=0.5 chooses the start; the page sets
 // body[data-ready] once the scene is loaded (body[data-error] with the message if it cannot
 // load), and window.tumbleReplay has ready (a promise), seek(t), play(), pause(), time(),
-// playing(), snapshot() (the 3D view drawn at the video's size, as a PNG data: URL) and scene
-// (three.js's, the glTF's nodes named as the bodies).
+// playing(), snapshot() (the 3D view drawn at the video's size, as a PNG data: URL), scene
+// (three.js's, the glTF's nodes named as the bodies) and camera.
 (() => {
   'use strict';
   const { THREE, GLTFLoader, OrbitControls } = TumbleThree;
@@ -203,7 +203,7 @@
       label.style.color = srgb(arrow.color).getStyle();
       labelLayer.append(label);
     }
-    return { arrow, helper, label };
+    return { arrow, helper, label, tip: new THREE.Vector3() };
   });
   const trails = data.trails.map((trail) => {
     const geometry = new THREE.BufferGeometry();
@@ -216,12 +216,13 @@
   });
 
   function updateArrows(t) {
-    for (const { arrow, helper, label } of arrows) {
+    for (const entry of arrows) {
+      const { arrow, helper } = entry;
       const from = sampled(arrow.from, t);
-      const along = sampled(arrow.to, t).sub(from);
+      entry.tip = sampled(arrow.to, t);
+      const along = entry.tip.clone().sub(from);
       const length = along.length();
       helper.visible = length > 1e-9;
-      if (label) label.hidden = !helper.visible || !overlays.visible;
       if (!helper.visible) continue;
       helper.position.copy(from);
       helper.setDirection(along.divideScalar(length));
@@ -251,16 +252,17 @@
     }
   }
 
+  // Each arrow's label just right of its tip on the picture, while the arrow is drawn and the
+  // tip is in front of the camera.
   function placeLabels() {
     const width = renderer.domElement.clientWidth;
     const height = renderer.domElement.clientHeight;
     const left = renderer.domElement.offsetLeft;
     const top = renderer.domElement.offsetTop;
-    for (const { helper, label } of arrows) {
-      if (!label || label.hidden) continue;
-      const tip = new THREE.Vector3(0, 1, 0).applyMatrix4(helper.matrixWorld);
-      const ndc = tip.project(camera);
-      label.hidden = ndc.z > 1;
+    for (const { helper, label, tip } of arrows) {
+      if (!label) continue;
+      const ndc = tip.clone().project(camera);
+      label.hidden = !overlays.visible || !helper.visible || ndc.z > 1;
       label.style.left = `${left + (ndc.x + 1) / 2 * width}px`;
       label.style.top = `${top + (1 - ndc.y) / 2 * height}px`;
     }
@@ -440,7 +442,6 @@
   speedChoice.addEventListener('change', () => { speed = Number(speedChoice.value); });
   overlayChoice.addEventListener('change', () => {
     overlays.visible = overlayChoice.checked;
-    for (const { label } of arrows) if (label) label.hidden = !overlays.visible;
     show(time);
     redraw();
   });
@@ -474,5 +475,6 @@
     playing: () => playing,
     snapshot,
     scene,
+    camera,
   };
 })();

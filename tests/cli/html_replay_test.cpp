@@ -214,10 +214,16 @@ length = 1.5
       "arrows[0].quaternion); const corner = new THREE.Vector3(0.5, 0.5, 0.5).applyMatrix4("
       "cube.matrixWorld); const p = trail.geometry.attributes.position; const end = new "
       "THREE.Vector3().fromBufferAttribute(p, p.count - 1); "
+      "const label = document.querySelector('#labels span'); const canvas = "
+      "document.querySelector('#stage canvas'); const length = arrows[0].line.scale.y + "
+      "arrows[0].cone.scale.y; const tip = arrows[0].position.clone().addScaledVector(v, "
+      "length).project(tumbleReplay.camera); const x = canvas.offsetLeft + (tip.x + 1) / 2 * "
+      "canvas.clientWidth; const y = canvas.offsetTop + (1 - tip.y) / 2 * canvas.clientHeight; "
       "return [arrows.length, d(arrows[0].position, cube.position), "
       "Math.round(1e4 * v.dot(new THREE.Vector3(1, 0.5, 0).normalize())) / 1e4, "
       "Math.round(1e4 * arrows[1].line.scale.y + 1e4 * arrows[1].cone.scale.y) / 1e4, "
-      "d(end, corner), document.querySelector('#labels span').textContent]; })()";
+      "d(end, corner), label.textContent, Math.round(Math.hypot(parseFloat(label.style.left) - "
+      "x, parseFloat(label.style.top) - y))]; })()";
   const PageRun run =
       run_page("file://" + page + "#t=0.5&paused",
                "[{\"wait\": \"document.body.dataset.ready || document.body.dataset.error\"}, "
@@ -226,8 +232,9 @@ length = 1.5
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(text_of(step_result(run, 0)), "\"true\"");
   // 4 arrows (the velocity, the three axes); the velocity's from the centre along (1, 0.5, 0)
-  // (no gravity: it keeps it); the x axis 1.5 m long (shaft and head); the trail at the corner.
-  EXPECT_EQ(text_of(step_result(run, 1)), "[4,0,1,1.5,0,\"v\"]");
+  // (no gravity: it keeps it); the x axis 1.5 m long (shaft and head); the trail at the corner;
+  // the velocity's label at its tip on the picture (0 px from it).
+  EXPECT_EQ(text_of(step_result(run, 1)), "[4,0,1,1.5,0,\"v\",0]");
   EXPECT_EQ(run.answer.find("errors")->text, "[]");
 }
 
