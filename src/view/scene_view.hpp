@@ -90,8 +90,9 @@ class SimulatedFrames final : public pipeline::FrameSource {
   // shows what a render from frame 0 shows.
   Result<std::int64_t> seek(std::int64_t frame);
   const sim::Simulation& simulation() const { return simulation_; }
-  // From now on, keeps what each frame view() makes shows of the motion, in frame order: the
-  // very states and camera the frame is drawn from.
+  // From now on, keeps each frame's camera and body poses as view() makes the frame (motion(),
+  // in frame order): the very states and camera the frame is drawn from. They stay in memory to
+  // the end: 56 bytes a body a frame.
   void record_motion() { recording_ = true; }
   const std::vector<FrameMotion>& motion() const { return motion_; }
 

@@ -14,7 +14,6 @@
 #include <iterator>
 
 #include "job/render_job.hpp"
-#include "render/geometry.hpp"
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/glb_checks.hpp"
