@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/base64.hpp"
 #include "io/png_io.hpp"
 #include "support/chromium_page.hpp"
 #include "support/command_test.hpp"
@@ -238,14 +239,20 @@ length = 1.5
   EXPECT_EQ(run.answer.find("errors")->text, "[]");
 }
 
-TEST_F(HtmlReplay, TwoRendersWriteTheSamePage) {
+// The same bytes from two renders, and the glTF in the page is the .glb a render writes.
+TEST_F(HtmlReplay, TwoRendersWriteTheSamePageHoldingTheGlb) {
   const std::string first =
-      render(kDroppedCube, "--width 160 --height 90 --format html --no-frames", "a");
+      render(kDroppedCube, "--width 160 --height 90 --format html,gltf --no-frames", "a");
   const std::string second =
       render(kDroppedCube, "--width 160 --height 90 --format html --no-frames", "b");
   const std::string page = read_file(first);
   ASSERT_GT(page.size(), 500000u);
   EXPECT_TRUE(page == read_file(second)) << "the two renders' pages differ";
+  const std::string glb = read_file(dir_ / "a/dropped_cube/dropped_cube.glb");
+  ASSERT_EQ(glb.substr(0, 4), "glTF");
+  const std::vector<std::uint8_t> bytes(glb.begin(), glb.end());
+  EXPECT_NE(page.find("id=\"tumble-replay-glb\">" + io::base64(bytes) + "</script>"),
+            std::string::npos);
 }
 
 // Like the glTF: named in the summary and in report.json's "html" (not among its videos),
