@@ -249,7 +249,8 @@ Result<void> check_joinable_formats(const scene::Scene& scene, const std::string
                  " is not written in parts (one file holds the animation of every frame it "
                  "covers, and `tumble join` joins videos only): leave it out with --format mp4 or "
                  "--format webm (or [output] formats), and render the " +
-                 name + " whole, or of a frame range with --frames"};
+                 (scene.output.gltf ? "glTF" : "html replay") +
+                 " whole, or of a frame range with --frames"};
   }
   if (!scene.output.video) return {};
   for (const io::VideoFormat format : scene.output.formats) {

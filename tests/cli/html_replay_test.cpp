@@ -295,7 +295,19 @@ TEST_F(HtmlReplay, ThePageIsReportedKeptByALaterRenderAndRefusedInChunks) {
   EXPECT_EQ(chunk.exit_code, 2);
   EXPECT_NE(chunk.err.find("--chunk: html is not written in parts"), std::string::npos)
       << chunk.err;
+  EXPECT_NE(chunk.err.find("render the html replay whole, or of a frame range with --frames"),
+            std::string::npos)
+      << chunk.err;
   EXPECT_FALSE(fs::exists(dir_ / "chunks"));
+  const std::string html_scene =
+      write("html.toml", testing::spin_scene(64, 36) + "[output]\nformats = [\"mp4\", \"html\"]\n")
+          .string();
+  const Outcome plan = tumble("plan " + html_scene + " --chunks 2");
+  EXPECT_EQ(plan.exit_code, 2);
+  EXPECT_EQ(plan.out, "");
+  EXPECT_NE(plan.err.find("tumble: plan: " + html_scene + ": html is not written in parts"),
+            std::string::npos)
+      << plan.err;
 }
 
 // tumble diff --report of two renders with replays shows both, each loaded and ready in its
