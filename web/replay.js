@@ -77,7 +77,7 @@
     camera.up.copy(up).normalize();
     camera.position.copy(position);
     camera.fov = fovDegrees;
-    // As tumble's renderer: near and far from the distance to the point looked at.
+    // Near and far grow with the distance to the point looked at, as tumble's renderer's do.
     const distance = position.distanceTo(lookAt);
     camera.near = Math.max(0.01, 0.01 * distance);
     camera.far = 200 * distance + 200;
