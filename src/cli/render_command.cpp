@@ -271,9 +271,9 @@ void add_render_command(CLI::App& app, Commands& commands) {
       "production (2560x1440, 60), 4k (3840x2160, 60); --width, --height, --fps win");
   command
       ->add_option("--format", render.formats,
-                   "Formats to write: videos mp4, webm or gif, and gltf (the motion as a glTF "
-                   "binary, <scene>.glb); repeat or separate with commas (replaces [output] "
-                   "formats)")
+                   "Formats to write: videos mp4, webm or gif, gltf (the motion as a glTF "
+                   "binary, <scene>.glb) and html (a page that replays it in a browser, "
+                   "<scene>.html); repeat or separate with commas (replaces [output] formats)")
       ->delimiter(',');
   command->add_flag("!--no-video", render.video, "Do not write any video");
   command->add_flag("-q,--quiet", render.quiet, "No progress and no summary");

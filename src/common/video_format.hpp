@@ -16,8 +16,13 @@ enum class VideoFormat { mp4, webm, gif };
 // false and --no-video leave it on, and it has no rule of size or alpha.
 inline constexpr std::string_view kGltfFormatName = "gltf";
 inline constexpr std::string_view kGltfExtension = "glb";  // binary glTF: <scene>.glb
+// And "html": the motion replayed in a browser, <scene>.html, one self-contained page holding
+// the glTF, three.js and the overlays drawn in the scene (job/html_replay.hpp). No video either,
+// for the same reasons.
+inline constexpr std::string_view kHtmlFormatName = "html";
+inline constexpr std::string_view kHtmlExtension = "html";  // <scene>.html
 // Every name of [output] formats and --format, for messages.
-inline constexpr const char* kFormatNames = "\"mp4\", \"webm\", \"gif\" or \"gltf\"";
+inline constexpr const char* kFormatNames = "\"mp4\", \"webm\", \"gif\", \"gltf\" or \"html\"";
 
 inline constexpr VideoFormat kAllVideoFormats[] = {VideoFormat::mp4, VideoFormat::webm,
                                                    VideoFormat::gif};

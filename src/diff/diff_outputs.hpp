@@ -19,6 +19,10 @@ struct DiffSubject {
   diff::FrameCriteria criteria;
 };
 
+// The html replay of a side of the comparison: the one *.html file of a folder (a render's
+// <name>.html, [output] formats = ["html"]); "" for a file, or a folder with none or several.
+std::string replay_of(const std::string& side);
+
 // Writes `text` to `path` through io::AtomicFile; the error names the file.
 Result<void> write_text_atomically(const std::string& path, const std::string& text);
 
@@ -29,7 +33,10 @@ Result<void> write_diff_junit(const std::string& path, const DiffSubject& subjec
                               const SequenceDiff& diff);
 // `folder`/index.html with a summary table of every frame, and for each kept (failing) frame the
 // expected, actual and difference images side by side (PNGs beside the page: no network, no
-// script). The folder is staged and swapped into place whole.
+// script). When both sides have an html replay (replay_of), each is copied beside the page
+// (replay-a.html, replay-b.html) and shown in a frame of it, side by side: the pages run their
+// own script, self-contained as tumble render writes them. The folder is staged and swapped into
+// place whole.
 Result<void> write_diff_report(const std::string& folder, const DiffSubject& subject,
                                const SequenceDiff& diff);
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
 #include "diff/diff_text.hpp"
 #include "io/png_io.hpp"
@@ -15,7 +17,9 @@ constexpr const char* kStyle =
     "table{border-collapse:collapse}td,th{border:1px solid #bbb;padding:2px 6px;"
     "text-align:right}td.name,th.name{text-align:left}tr.fail td{background:#fdd}"
     ".row{display:flex;gap:8px;flex-wrap:wrap}figure{margin:0}"
-    "img{max-width:32vw;image-rendering:pixelated;border:1px solid #888}";
+    "img{max-width:32vw;image-rendering:pixelated;border:1px solid #888}"
+    "iframe{width:calc(50vw - 2.5em);height:calc((50vw - 2.5em) * 9 / 16 + 4.5em);"
+    "border:1px solid #888}";
 
 std::string number_cell(const char* format, double value) {
   if (std::isinf(value)) return "<td>inf</td>";
@@ -84,7 +88,43 @@ Result<std::string> kept_section(const KeptFrame& kept, const SequenceDiff& diff
          figure(image_name(kept, "difference"), "difference") + "</div>\n</section>\n";
 }
 
+// The replays of both sides copied beside the page (replay-a.html, replay-b.html), and their
+// section; "" when a side has none.
+Result<std::string> replays_section(const DiffSubject& subject, const std::string& folder) {
+  const std::string sides[] = {replay_of(subject.first_path), replay_of(subject.second_path)};
+  if (sides[0].empty() || sides[1].empty()) return std::string();
+  const char* names[] = {"replay-a.html", "replay-b.html"};
+  const std::string captions[] = {"expected (A): " + subject.first_path,
+                                  "actual (B): " + subject.second_path};
+  std::string row;
+  for (int n = 0; n < 2; ++n) {
+    std::error_code error;
+    std::filesystem::copy_file(sides[n], folder + "/" + names[n], error);
+    if (error)
+      return Error{folder + "/" + names[n] + ": cannot copy " + sides[n] + ": " + error.message()};
+    row += std::string("<figure><iframe src=\"") + names[n] + "\" title=\"" +
+           markup_text(captions[n]) + "\"></iframe><figcaption>" + markup_text(captions[n]) +
+           "</figcaption></figure>";
+  }
+  return "<h2>Replays</h2>\n<p>Each side's html replay (tumble render's [output] formats = "
+         "[\"html\"]): play, scrub and turn each on its own.</p>\n<div class=\"row\">" +
+         row + "</div>\n";
+}
+
 }  // namespace
+
+std::string replay_of(const std::string& side) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (!fs::is_directory(side, error)) return {};
+  std::string found;
+  for (const fs::directory_entry& entry : fs::directory_iterator(side, error)) {
+    if (!entry.is_regular_file(error) || entry.path().extension() != ".html") continue;
+    if (!found.empty()) return {};  // two pages: neither is known to be the replay
+    found = entry.path().string();
+  }
+  return found;
+}
 
 Result<void> write_diff_report(const std::string& folder, const DiffSubject& subject,
                                const SequenceDiff& diff) {
@@ -97,6 +137,8 @@ Result<void> write_diff_report(const std::string& folder, const DiffSubject& sub
     if (!section) return Error{section.error()};
     sections += *section;
   }
+  const Result<std::string> replays = replays_section(subject, staged->path());
+  if (!replays) return Error{replays.error()};
   const std::string heading = markup_text(subject.first_path + " vs " + subject.second_path);
   const std::string page =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>tumble "
@@ -111,7 +153,7 @@ Result<void> write_diff_report(const std::string& folder, const DiffSubject& sub
       (diff.worst.empty() ? std::string()
                           : "<h2>Failing frames (the worst " + std::to_string(diff.worst.size()) +
                                 ")</h2>\n" + sections) +
-      "<h2>Every frame</h2>\n" + summary_table(diff) + "</body>\n</html>\n";
+      *replays + "<h2>Every frame</h2>\n" + summary_table(diff) + "</body>\n</html>\n";
   if (Result<void> written = write_text_atomically(staged->path() + "/index.html", page);
       !written) {
     return written;

@@ -69,9 +69,12 @@ bool wrote(const JsonValue& report, const std::string& name) {
     return directory && directory->kind == JsonValue::Kind::string;
   }
   if (name == kPoster || name == kContactSheet) return true;  // unless kept (earlier_kept first)
-  if (const JsonValue* gltf = report.find("gltf");
-      gltf && gltf->kind == JsonValue::Kind::string && fs::path(gltf->string).filename() == name) {
-    return true;
+  for (const char* key : {"gltf", "html"}) {
+    const JsonValue* file = report.find(key);
+    if (file && file->kind == JsonValue::Kind::string &&
+        fs::path(file->string).filename() == name) {
+      return true;
+    }
   }
   const JsonValue* videos = report.find("videos");
   if (!videos) return false;
@@ -122,6 +125,7 @@ std::vector<std::string> render_files(const fs::path& folder, const std::string&
     names.push_back(scene_name + "." + common::video_format_name(format));
   }
   names.push_back(scene_name + "." + std::string(common::kGltfExtension));
+  names.push_back(scene_name + "." + std::string(common::kHtmlExtension));
   names.push_back(kPoster);
   names.push_back(kContactSheet);
   std::vector<std::string> present;

@@ -43,13 +43,14 @@ EarlierRender read_earlier_render(const std::filesystem::path& folder, std::stri
                                   const scene::Scene& scene);
 
 // The files a render writes that `folder` holds, in a fixed order: "frames" (the folder), the
-// scene's videos in mp4, webm, gif order, its .glb, "poster.png", "contact_sheet.png".
+// scene's videos in mp4, webm, gif order, its .glb, its .html, "poster.png", "contact_sheet.png".
 std::vector<std::string> render_files(const std::filesystem::path& folder,
                                       const std::string& scene_name);
 
 // Whether a render writes the earlier render's poster.png and contact_sheet.png itself: not when
-// it writes only a GIF or a glTF (no PNG frames, no MP4 or WebM) over an earlier render of the
-// same scene that has them, since the stills belong with the frames and the main video.
+// it writes only a GIF, a glTF or an html replay (no PNG frames, no MP4 or WebM) over an earlier
+// render of the same scene that has them, since the stills belong with the frames and the main
+// video.
 bool writes_own_stills(const scene::Scene& scene, const EarlierRender& earlier);
 
 // Each file of `earlier` (in `from`) that `staging` lacks, hard-linked into `staging` (copied

@@ -22,13 +22,15 @@ bool is_render_folder(const fs::path& folder) {
 }
 
 // Whether a render writes a file of this name at the top of its folder: report.json, poster.png,
-// contact_sheet.png, <scene name>.<format> for each video format and <scene name>.glb.
+// contact_sheet.png, <scene name>.<format> for each video format, <scene name>.glb and
+// <scene name>.html.
 bool is_render_file(const fs::path& file) {
   const std::string name = file.filename().string();
   if (name == "report.json" || name == "poster.png" || name == "contact_sheet.png") return true;
   const std::string extension = file.extension().string();
   return !extension.empty() && (common::video_format_named(extension.substr(1)).has_value() ||
-                                extension.substr(1) == common::kGltfExtension);
+                                extension.substr(1) == common::kGltfExtension ||
+                                extension.substr(1) == common::kHtmlExtension);
 }
 
 // The first thing in a render's folder that a render does not write: it writes the files of

@@ -44,9 +44,12 @@ std::string settings_json(const RenderJob& job, const RenderResult& result) {
   for (std::size_t i = 0; i < scene.output.formats.size(); ++i) {
     out << (i ? ", " : "") << io::json_string(io::video_format_name(scene.output.formats[i]));
   }
-  if (scene.output.gltf) {
-    out << (scene.output.formats.empty() ? "" : ", ")
-        << io::json_string(std::string(common::kGltfFormatName));
+  bool listed = !scene.output.formats.empty();
+  for (const auto& [asked, name] : {std::pair{scene.output.gltf, common::kGltfFormatName},
+                                    std::pair{scene.output.html, common::kHtmlFormatName}}) {
+    if (!asked) continue;
+    out << (listed ? ", " : "") << io::json_string(std::string(name));
+    listed = true;
   }
   out << "], \"crf\": " << scene.output.crf << ", \"webm_crf\": " << scene.output.webm_crf
       << ", \"preset\": " << io::json_string(scene.output.preset)
@@ -101,6 +104,7 @@ std::string report_json(const RenderJob& job, const RenderResult& result,
   const std::string frames_directory = job.frames_path(job.directory);
   const std::string video_path = job.video_path(job.directory);
   const std::string gltf_path = job.gltf_path(job.directory);
+  const std::string html_path = job.html_path(job.directory);
   std::ostringstream out;
   out.precision(17);
   // This first line is how a folder is known for a render's (output_folder.cpp): keep it.
@@ -121,6 +125,7 @@ std::string report_json(const RenderJob& job, const RenderResult& result,
       << ",\n  \"video\": " << (video_path.empty() ? "null" : io::json_string(video_path))
       << ",\n  \"videos\": " << videos_json(job)
       << ",\n  \"gltf\": " << (gltf_path.empty() ? "null" : io::json_string(gltf_path))
+      << ",\n  \"html\": " << (html_path.empty() ? "null" : io::json_string(html_path))
       << ",\n  \"kept\": " << kept_json(kept) << ",\n  \"gif\": " << gif_json(job)
       << ",\n  \"path\": " << (job.serial ? "\"serial\"" : "\"pipelined\"")
       << ",\n  \"renderer\": " << io::json_string(result.renderer)

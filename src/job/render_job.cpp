@@ -10,6 +10,7 @@
 
 #include "io/glb_writer.hpp"
 #include "job/gltf_scene.hpp"
+#include "job/html_replay.hpp"
 #include "job/quality_preset.hpp"
 #include "pipeline/contact_sheet.hpp"
 #include "pipeline/poster_sink.hpp"
@@ -42,9 +43,10 @@ Result<scene::Scene> with_choices(const RenderOptions& options, scene::Scene sce
   if (options.formats.empty()) return scene;
   scene.output.formats.clear();
   scene.output.gltf = false;
+  scene.output.html = false;
   for (const std::string& name : options.formats) {
-    if (name == common::kGltfFormatName) {
-      scene.output.gltf = true;
+    if (bool* const file = scene::file_format_flag(scene.output, name)) {
+      *file = true;
       continue;
     }
     const std::optional<io::VideoFormat> format = common::video_format_named(name);
@@ -207,6 +209,12 @@ std::string RenderJob::gltf_path(const fs::path& folder) const {
              : std::string();
 }
 
+std::string RenderJob::html_path(const fs::path& folder) const {
+  return scene.output.html
+             ? (folder / (scene.name + "." + std::string(common::kHtmlExtension))).string()
+             : std::string();
+}
+
 std::string RenderJob::video_path(const fs::path& folder, io::VideoFormat format) const {
   const std::vector<io::VideoFormat>& formats = scene.output.formats;
   if (!scene.output.video || std::find(formats.begin(), formats.end(), format) == formats.end()) {
@@ -235,12 +243,14 @@ Result<scene::Scene> scene_as_rendered(scene::Scene written, const RenderOptions
 }
 
 Result<void> check_joinable_formats(const scene::Scene& scene, const std::string& asked_by) {
-  if (scene.output.gltf) {
-    return Error{asked_by +
-                 ": gltf is not written in parts (one file holds the animation of every frame it "
+  if (scene.output.gltf || scene.output.html) {
+    const std::string name(scene.output.gltf ? common::kGltfFormatName : common::kHtmlFormatName);
+    return Error{asked_by + ": " + name +
+                 " is not written in parts (one file holds the animation of every frame it "
                  "covers, and `tumble join` joins videos only): leave it out with --format mp4 or "
-                 "--format webm (or [output] formats), and render the glTF whole, or of a frame "
-                 "range with --frames"};
+                 "--format webm (or [output] formats), and render the " +
+                 (scene.output.gltf ? "glTF" : "html replay") +
+                 " whole, or of a frame range with --frames"};
   }
   if (!scene.output.video) return {};
   for (const io::VideoFormat format : scene.output.formats) {
@@ -284,6 +294,12 @@ Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& opti
     return Error{asked ? std::string("no shaders (body.vert) in TUMBLE_SHADER_DIR=") + asked
                        : "cannot find the shaders/ folder (set TUMBLE_SHADER_DIR)"};
   }
+  std::optional<ReplayAssets> replay_assets;
+  if (scene.output.html) {
+    Result<ReplayAssets> assets = load_replay_assets();
+    if (!assets) return Error{assets.error()};
+    replay_assets = std::move(*assets);
+  }
   const fs::path root = fs::path(options.output_root).lexically_normal();
   const fs::path directory = root / scene.output.directory;
   return RenderJob{.scene = std::move(scene),
@@ -296,7 +312,8 @@ Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& opti
                    .directory = directory,
                    .png = options.png,
                    .serial = options.serial,
-                   .shader_directory = std::move(shader_directory)};
+                   .shader_directory = std::move(shader_directory),
+                   .replay_assets = std::move(replay_assets)};
 }
 
 Result<void> render_scene(const RenderJob& job, const fs::path& folder,
@@ -326,7 +343,7 @@ Result<void> render_scene(const RenderJob& job, const fs::path& folder,
   if (!seek_steps) return Error{seek_steps.error()};
   result.seek_steps = *seek_steps;
   result.seek_seconds = pipeline::process_cpu_seconds() - start;
-  if (scene.output.gltf) source.record_motion();
+  if (scene.output.gltf || scene.output.html) source.record_motion();
   std::vector<pipeline::FrameSink*> sink_list;
   for (const std::unique_ptr<pipeline::FrameSink>& sink : *sinks) {
     sink_list.push_back(sink.get());
@@ -348,6 +365,10 @@ Result<void> render_scene(const RenderJob& job, const fs::path& folder,
     finished = io::write_glb(
         job.gltf_path(folder),
         gltf_scene(scene, *framing, source.motion(), std::string("tumble ") + TUMBLE_VERSION));
+  }
+  if (finished && scene.output.html) {
+    finished = write_html_replay(job.html_path(folder), *job.replay_assets, scene, *framing,
+                                 source.motion(), job.first);
   }
   result.finish_seconds = seconds_since(finish_start);
   for (std::size_t i = 0; i < result.bodies.size(); ++i) {

@@ -14,6 +14,7 @@
 #include "io/png_io.hpp"
 #include "io/video_encoder.hpp"
 #include "job/chunk_plan.hpp"
+#include "job/replay_assets.hpp"
 #include "pipeline/frame_pipeline.hpp"
 #include "render/offscreen_context.hpp"
 #include "scene/scene.hpp"
@@ -62,6 +63,8 @@ struct RenderJob {
   bool serial = false;  // one thread, for comparison (same bytes as the pipeline)
   bool stills = true;   // poster.png and contact_sheet.png (bench pipeline measures without)
   std::string shader_directory;
+  // The html replay's page, player and three.js, read when [output] formats lists "html".
+  std::optional<ReplayAssets> replay_assets;
 
   // A part of the whole render (a chunk or --frames A:B): its videos are then segments to be
   // joined (io::VideoSettings::segment).
@@ -74,6 +77,8 @@ struct RenderJob {
   std::string video_path(const std::filesystem::path& folder, io::VideoFormat format) const;
   // <name>.glb (job/gltf_scene.hpp), or "" when [output] formats does not name "gltf".
   std::string gltf_path(const std::filesystem::path& folder) const;
+  // <name>.html (job/html_replay.hpp), or "" when [output] formats does not name "html".
+  std::string html_path(const std::filesystem::path& folder) const;
 };
 
 // The scene with the options' overrides, held to the video rules once more (an override can
@@ -81,12 +86,13 @@ struct RenderJob {
 Result<scene::Scene> scene_as_rendered(scene::Scene scene, const RenderOptions& options);
 
 // Succeeds when every video the scene writes can be written in parts that `tumble join` joins
-// (not a GIF: its palette is its own frames'), and it writes no glTF (one animation of the frames
-// it holds, which nothing joins); else the error, after `asked_by` ("--chunk", "plan"). One home
-// for the rule of `render --chunk` and `tumble plan`.
+// (not a GIF: its palette is its own frames'), and it writes no glTF or html replay (one
+// animation of the frames it holds, which nothing joins); else the error, after `asked_by`
+// ("--chunk", "plan"). One home for the rule of `render --chunk` and `tumble plan`.
 Result<void> check_joinable_formats(const scene::Scene& scene, const std::string& asked_by);
 
-// scene_as_rendered, with its frame range (all, --frames or --chunk) and shaders.
+// scene_as_rendered, with its frame range (all, --frames or --chunk), shaders and, for an html
+// replay, its assets (an error when three.js is not installed, before any work).
 Result<RenderJob> make_render_job(scene::Scene scene, const RenderOptions& options);
 
 struct BodyDiagnostics {

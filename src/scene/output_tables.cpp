@@ -5,7 +5,8 @@
 namespace tumble::scene::detail {
 namespace {
 
-// The videos of [output] formats into output.formats, in order, and whether it names "gltf".
+// The videos of [output] formats into output.formats, in order, and whether it names "gltf" and
+// "html".
 void read_formats(TableReader& in, OutputSpec& output) {
   const toml::array* array = in.table().get("formats")->as_array();
   if (!array) in.fail("formats", std::string("expected an array of ") + common::kFormatNames);
@@ -14,24 +15,25 @@ void read_formats(TableReader& in, OutputSpec& output) {
   }
   output.formats.clear();
   output.gltf = false;
+  output.html = false;
   for (const toml::node& node : *array) {
     const std::optional<std::string_view> name = node.value<std::string_view>();
     const std::optional<common::VideoFormat> format =
         name ? common::video_format_named(*name) : std::nullopt;
-    const bool gltf = name == common::kGltfFormatName;
-    if (!format && !gltf) {
+    bool* const file = name ? file_format_flag(output, *name) : nullptr;
+    if (!format && !file) {
       in.fail_at(node.source(), in.qualified("formats"),
                  (name ? "unknown format " + in_quotes(*name)
                        : "expected a string, found " + std::string(type_name(node))) +
                      " (" + common::kFormatNames + ")");
     }
-    if (gltf ? output.gltf
+    if (file ? *file
              : std::find(output.formats.begin(), output.formats.end(), *format) !=
                    output.formats.end()) {
       in.fail_at(node.source(), in.qualified("formats"), "lists " + in_quotes(*name) + " twice");
     }
-    if (gltf) {
-      output.gltf = true;
+    if (file) {
+      *file = true;
     } else {
       output.formats.push_back(*format);
     }

@@ -113,6 +113,7 @@ struct OutputSpec {
   bool video = true;      // the videos of `formats`; false: none
   std::vector<common::VideoFormat> formats = {common::VideoFormat::mp4};  // each once, in order
   bool gltf = false;     // <name>.glb: formats lists "gltf" (common/video_format.hpp), video or not
+  bool html = false;     // <name>.html: formats lists "html", the replay page, video or not
   bool gif_loop = true;  // the GIF plays forever (else once)
   std::optional<int> gif_fps;  // the GIF's frames per second, at most fps (default: fps)
   int gif_colors = common::kMaxGifColors;                   // the GIF's palette, 2 to 256
@@ -122,6 +123,14 @@ struct OutputSpec {
   int webm_crf = 30;                  // VP9's constant quality, 0 (best) to 63
   std::string preset = "veryfast";    // x264 speed preset
 };
+
+// The flag of `output` that [output] formats (or --format) sets by `name` when it names a format
+// that is no video ("gltf", "html"); null for any other name.
+inline bool* file_format_flag(OutputSpec& output, std::string_view name) {
+  if (name == common::kGltfFormatName) return &output.gltf;
+  if (name == common::kHtmlFormatName) return &output.html;
+  return nullptr;
+}
 
 struct Scene {
   std::string name;         // used for output folder and file names

@@ -86,11 +86,11 @@ std::optional<BrokenRule> broken_video_rule(const Scene& scene) {
                   scene.duration);
     return BrokenRule{{"output.poster_time"}, "output", problem};
   }
-  if (!scene.output.frames && !scene.output.video && !scene.output.gltf) {
+  if (!scene.output.frames && !scene.output.video && !scene.output.gltf && !scene.output.html) {
     return BrokenRule{{"output.video"},
                       "output",
                       "frames and video are both off: nothing to write (formats names no "
-                      "\"gltf\")"};
+                      "\"gltf\" or \"html\")"};
   }
   return std::nullopt;
 }

@@ -276,8 +276,12 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
   if (!states) return Error{states.error()};
   render::FrameView view = frame_view(scene_, framing_, *states, t);
   if (recording_) {
-    FrameMotion& motion = motion_.emplace_back(
-        FrameMotion{.time = t, .camera = view.camera, .positions = {}, .orientations = {}});
+    FrameMotion& motion = motion_.emplace_back(FrameMotion{.time = t,
+                                                           .camera = view.camera,
+                                                           .positions = {},
+                                                           .orientations = {},
+                                                           .arrows = {},
+                                                           .trail_points = {}});
     for (const physics::BodyState& state : *states) {
       motion.positions.push_back(state.position());
       motion.orientations.push_back(state.orientation());
@@ -292,6 +296,14 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
     std::vector<BodyContact> contacts;
     if (overlays_->needs_contacts()) contacts = contact_forces(simulation_);
     overlays_->add_to(*states, steps, t, frame, view, joints, contacts);
+    if (recording_) {
+      // Only the overlays draw arrows and lines, and each trail's line ends at the point just
+      // recorded: the frame's own.
+      motion_.back().arrows = view.arrows;
+      for (const render::Polyline& line : view.lines) {
+        motion_.back().trail_points.push_back(line.points.back());
+      }
+    }
   }
   if (blur.on()) {
     const Result<void> after = add_pictures_until(std::numeric_limits<double>::infinity());

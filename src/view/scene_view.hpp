@@ -69,6 +69,11 @@ struct FrameMotion {
   render::Camera camera;
   std::vector<physics::Vec3> positions;     // each body's centre, world frame (m)
   std::vector<physics::Quat> orientations;  // each body's body-to-world rotation
+  // The overlays drawn in the scene (an html replay draws them too): the arrows of the vectors
+  // and axes as the frame draws them, and each trail's point at this frame, in the order of the
+  // scene's [[overlays]].
+  std::vector<render::Arrow> arrows;
+  std::vector<render::Vec3> trail_points;  // world frame (m)
 };
 
 // The frame loop's source for a render: frame k shows the bodies at t = k / fps (s), their states

@@ -13,6 +13,7 @@
 #include "io/image.hpp"
 #include "io/png_io.hpp"
 #include "io/video_encoder.hpp"
+#include "support/chromium_page.hpp"
 #include "support/command_test.hpp"
 #include "support/result_text.hpp"
 
@@ -309,6 +310,62 @@ TEST_F(DiffSequences, TheHtmlReportShowsEveryImageInHeadlessChromium) {
   EXPECT_EQ(check("check.html", ""), "9/9");
   // The check can fail: an image that is not there is not counted.
   EXPECT_EQ(check("broken.html", "<img src=\"absent.png\">"), "9/10");
+}
+
+// A stand-in for a render's html replay: a page that tells the page framing it that it ran.
+std::string replay_page(const std::string& side) {
+  return "<!DOCTYPE html>\n<html><body><p>replay of " + side + "</p><script>parent.postMessage('" +
+         side + " ran', '*');</script></body></html>\n";
+}
+
+TEST_F(DiffSequences, TheReportShowsBothSidesReplaysWhenBothHaveOne) {
+  write_frames("a", 3);
+  write_frames("b", 3, 1);
+  write("a/scene.html", replay_page("A"));
+  write("b/scene.html", replay_page("B"));
+  const Outcome run = tumble("diff --report " + path("report") + " " + path("a") + " " + path("b"));
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  // Copies, byte for byte, so that the report folder holds all it shows.
+  EXPECT_EQ(read_file(dir_ / "report/replay-a.html"), replay_page("A"));
+  EXPECT_EQ(read_file(dir_ / "report/replay-b.html"), replay_page("B"));
+  const std::string page = read_file(dir_ / "report/index.html");
+  EXPECT_NE(page.find("<h2>Replays</h2>"), std::string::npos);
+  EXPECT_NE(page.find("<iframe src=\"replay-a.html\" title=\"expected (A): " + path("a")),
+            std::string::npos);
+  EXPECT_NE(page.find("<iframe src=\"replay-b.html\" title=\"actual (B): " + path("b")),
+            std::string::npos);
+  EXPECT_EQ(page.find("<script"), std::string::npos);  // the report itself still runs nothing
+
+  const std::string missing = tumble::testing::chromium_missing();
+  if (!missing.empty()) GTEST_SKIP() << missing << ": the frames are checked by loading the report";
+  // A copy of the page that lists the replays that ran in its frames.
+  std::string listening = page;
+  listening.insert(listening.find("</body>"),
+                   "<script>const ran = []; addEventListener('message', (e) => { ran.push(e.data); "
+                   "document.body.dataset.ran = ran.sort().join(', '); });</script>");
+  write("report/listening.html", listening);
+  const tumble::testing::PageRun loaded = tumble::testing::run_page(
+      "file://" + path("report/listening.html"),
+      R"([{"wait": "document.body.dataset.ran && document.body.dataset.ran.includes(',') && document.body.dataset.ran"}])");
+  ASSERT_EQ(loaded.exit_code, 0) << loaded.output;
+  EXPECT_EQ(tumble::testing::step_result(loaded, 0)->string, "A ran, B ran");
+  EXPECT_EQ(loaded.answer.find("errors")->text, "[]");
+}
+
+TEST_F(DiffSequences, TheReportHasNoReplaysUnlessBothSidesHaveOne) {
+  write_frames("a", 2);
+  write_frames("b", 2);
+  write("a/scene.html", replay_page("A"));
+  Outcome run = tumble("diff --report " + path("report") + " " + path("a") + " " + path("b"));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(read_file(dir_ / "report/index.html").find("<h2>Replays"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "report/replay-a.html"));
+  // Two pages in a folder: neither is known to be its replay.
+  write("b/scene.html", replay_page("B"));
+  write("b/other.html", replay_page("B"));
+  run = tumble("diff --report " + path("report") + " " + path("a") + " " + path("b"));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(read_file(dir_ / "report/index.html").find("<h2>Replays"), std::string::npos);
 }
 
 TEST_F(DiffSequences, ErrorsNameTheFileAndExitTwo) {

@@ -119,7 +119,8 @@ TEST_F(VideoSinkTest, FormatOnTheCommandLineReplacesTheScenesAndNoVideoWritesNon
       tumble("render -q " + scene.string() + " -o " + path("out") + " --format avi");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(
-      bad.err.find("--format: unknown format \"avi\" (\"mp4\", \"webm\", \"gif\" or \"gltf\")"),
+      bad.err.find(
+          "--format: unknown format \"avi\" (\"mp4\", \"webm\", \"gif\", \"gltf\" or \"html\")"),
       std::string::npos)
       << bad.err;
 }

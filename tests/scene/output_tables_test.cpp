@@ -73,9 +73,25 @@ TEST(OutputTables, GltfListedTwiceOrMisspeltIsAnErrorAtItsLine) {
       << twice;
   const std::string misspelt = error_of("[output]\nformats = [\"glb\"]\n");
   EXPECT_NE(misspelt.find("test.toml:7:12: output.formats: unknown format \"glb\" (\"mp4\", "
-                          "\"webm\", \"gif\" or \"gltf\")"),
+                          "\"webm\", \"gif\", \"gltf\" or \"html\")"),
             std::string::npos)
       << misspelt;
+}
+
+TEST(OutputTables, HtmlIsAFormatBesideTheVideosAndTheGltf) {
+  const Scene all = parsed("[output]\nformats = [\"html\", \"mp4\", \"gltf\"]\n");
+  EXPECT_TRUE(all.output.html);
+  EXPECT_TRUE(all.output.gltf);
+  EXPECT_EQ(all.output.formats, std::vector<common::VideoFormat>{common::VideoFormat::mp4});
+  EXPECT_FALSE(parsed("").output.html);
+  const Scene alone =
+      parsed("[render]\nwidth = 161\n[output]\nformats = [\"html\"]\nframes = false\n");
+  EXPECT_TRUE(alone.output.html);
+  EXPECT_FALSE(alone.output.gltf);
+  EXPECT_TRUE(alone.output.formats.empty());
+  const std::string twice = error_of("[output]\nformats = [\"html\", \"html\"]\n");
+  EXPECT_NE(twice.find("test.toml:7:20: output.formats: lists \"html\" twice"), std::string::npos)
+      << twice;
 }
 
 TEST(OutputTables, TransparentIsABackgroundAndAColourStillIsOne) {

@@ -128,5 +128,50 @@ TEST(SceneView, AStopDuringTheFramingPassIsAnError) {
   EXPECT_EQ(stopped.error(), "interrupted");
 }
 
+// A recording keeps, of each frame, the overlays it draws in the scene: its arrows (a vector's,
+// an axes' three) exactly as drawn, and each trail's point at the frame's time.
+TEST(SceneView, RecordedMotionKeepsTheArrowsAndTrailPointsEachFrameDraws) {
+  scene::Scene scene = dragged_cube_scene();
+  scene.bodies.front().velocity = Vec3(1.0, 0.0, 0.0);
+  scene.bodies.front().forces.clear();
+  scene.camera.position = Vec3(4, 3, 6);
+  scene.camera.look_at = Vec3::Zero();
+  scene.ground_height = -1.0;
+  scene::VectorOverlay velocity;
+  velocity.scale = 0.5;
+  velocity.label = "v";
+  scene::TrailOverlay trail;
+  trail.point = Vec3(0.5, 0.0, 0.0);
+  scene::AxesOverlay axes;
+  axes.length = 2.0;
+  scene.overlays = {velocity, trail, axes};
+  const Result<Framing> framing = frame_scene(scene, 60, [] { return false; });
+  ASSERT_TRUE(framing) << framing.error();
+  SimulatedFrames frames(scene, *framing, [] { return false; });
+  frames.record_motion();
+  std::vector<render::FrameView> views;
+  for (std::int64_t k = 0; k < 3; ++k) {
+    Result<render::FrameView> view = frames.view(k);
+    ASSERT_TRUE(view) << view.error();
+    views.push_back(std::move(*view));
+  }
+  ASSERT_EQ(frames.motion().size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const FrameMotion& motion = frames.motion()[k];
+    ASSERT_EQ(motion.arrows.size(), 4u);  // the velocity and three axes
+    for (std::size_t a = 0; a < 4; ++a) {
+      EXPECT_EQ(motion.arrows[a].from, views[k].arrows[a].from);
+      EXPECT_EQ(motion.arrows[a].to, views[k].arrows[a].to);
+      EXPECT_EQ(motion.arrows[a].label, views[k].arrows[a].label);
+    }
+    const double x = static_cast<double>(k) / 60.0;  // m: the cube moves at 1 m/s along x
+    EXPECT_NEAR(motion.arrows[0].from.x(), x, 1e-12);
+    EXPECT_NEAR(motion.arrows[0].to.x(), x + 0.5, 1e-12);
+    ASSERT_EQ(motion.trail_points.size(), 1u);
+    EXPECT_NEAR(motion.trail_points[0].x(), x + 0.5, 1e-12);
+    EXPECT_NEAR((motion.arrows[1].to - motion.arrows[1].from).norm(), 2.0, 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace tumble::view
