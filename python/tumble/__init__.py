@@ -168,7 +168,7 @@ class Render:
     """What a render wrote: ``directory``, ``files`` (name -> path of each file written, plus
     ``frames`` for the PNG folder), ``kept`` (names kept of an earlier render of the scene),
     ``warnings``, ``report`` (report.json as a dict), ``video`` (the first video's path, or
-    None) and ``gltf`` (the .glb's path, or None). In Jupyter it shows its video (or GIF, or
+    None), ``gltf`` and ``html`` (the .glb's and the replay page's paths, or None). In Jupyter it shows its video (or GIF, or
     poster)."""
 
     def __init__(self, directory, written, kept, warnings):
@@ -182,6 +182,8 @@ class Render:
         self.video = next(iter(self.videos.values()), None)
         gltf = self.report.get("gltf")
         self.gltf = self.directory / pathlib.Path(gltf).name if gltf else None
+        html = self.report.get("html")
+        self.html = self.directory / pathlib.Path(html).name if html else None
         poster = self.directory / "poster.png"
         self.poster = poster if poster.exists() else None
 

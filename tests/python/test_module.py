@@ -157,6 +157,7 @@ class Render(unittest.TestCase):
             self.assertTrue(render.video.is_file())
             self.assertIn("frames", render.files)
             self.assertEqual(render.gltf, render.directory / "dropped_cube.glb")
+            self.assertIsNone(render.html)
             self.assertIn("dropped_cube.glb", expected)
 
             # In Jupyter: the MP4's own bytes in a data URI, the poster beside it.
