@@ -168,8 +168,8 @@ class Render:
     """What a render wrote: ``directory``, ``files`` (name -> path of each file written, plus
     ``frames`` for the PNG folder), ``kept`` (names kept of an earlier render of the scene),
     ``warnings``, ``report`` (report.json as a dict), ``video`` (the first video's path, or
-    None), ``gltf`` and ``html`` (the .glb's and the replay page's paths, or None). In Jupyter it shows its video (or GIF, or
-    poster)."""
+    None), ``gltf`` and ``html`` (the .glb's and the replay page's paths, or None). In Jupyter
+    it shows its video (or GIF, or poster)."""
 
     def __init__(self, directory, written, kept, warnings):
         self.directory = pathlib.Path(directory)
