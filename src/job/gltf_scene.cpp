@@ -98,20 +98,6 @@ class Builder {
   std::vector<Made> made_;
 };
 
-// Frame k's bodies as the renderer would see them, for its reach (render/view_extent.hpp).
-render::FrameView frame_bodies(const scene::Scene& scene, const view::Framing& framing,
-                               const view::FrameMotion& frame) {
-  render::FrameView view;
-  view.camera = frame.camera;
-  view.quads = framing.quads;
-  for (std::size_t i = 0; i < frame.positions.size(); ++i) {
-    view.boxes.push_back(render::Box{.position = frame.positions[i],
-                                     .orientation = frame.orientations[i],
-                                     .size = scene.bodies[i].size});
-  }
-  return view;
-}
-
 // The renderer's reach over every frame: the camera's nearest near and farthest far, and the
 // ground it shows unfaded (a square about the point each frame looks at), as one rectangle.
 struct Reach {
@@ -125,7 +111,7 @@ Reach renderer_reach(const scene::Scene& scene, const view::Framing& framing,
                      const std::vector<view::FrameMotion>& motion) {
   Reach out;
   for (const view::FrameMotion& frame : motion) {
-    const render::ViewExtent extent = render::view_extent(frame_bodies(scene, framing, frame));
+    const render::ViewExtent extent = render::view_extent(view::motion_view(scene, framing, frame));
     out.near = std::min(out.near, extent.near);
     out.far = std::max(out.far, extent.far);
     const Eigen::Vector2d centre(frame.camera.look_at.x(), frame.camera.look_at.z());

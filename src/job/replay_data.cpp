@@ -70,28 +70,12 @@ std::string camera_path_json(const std::vector<view::FrameMotion>& motion) {
          ", \"fov_degrees\": " + fov + "]}";
 }
 
-// The first frame as the renderer sees its reach: the camera, the bodies' boxes and the planes.
-render::FrameView first_view(const scene::Scene& scene, const view::Framing& framing,
-                             const view::FrameMotion& frame) {
-  render::FrameView view;
-  view.camera = frame.camera;
-  view.quads = framing.quads;
-  for (std::size_t i = 0; i < frame.positions.size(); ++i) {
-    view.boxes.push_back(render::Box{.position = frame.positions[i],
-                                     .orientation = frame.orientations[i],
-                                     .size = scene.bodies[i].size,
-                                     .color = scene.bodies[i].color,
-                                     .solid = view::solid_of(scene.bodies[i].shape),
-                                     .mesh = 0});
-  }
-  return view;
-}
-
 std::string ground_json(const scene::Scene& scene, const view::Framing& framing,
                         const std::vector<view::FrameMotion>& motion) {
   const render::Ground& ground = framing.ground;
   if (!ground.enabled || scene.render.transparent) return "null";
-  const render::ViewExtent extent = render::view_extent(first_view(scene, framing, motion.front()));
+  const render::ViewExtent extent =
+      render::view_extent(view::motion_view(scene, framing, motion.front()));
   return "{\"height\": " + number(ground.height) + ", \"color\": " + vector(ground.color) +
          ", \"grid_spacing\": " + number(ground.grid_spacing) +
          ", \"half_extent\": " + number(extent.ground_half_extent) + "}";

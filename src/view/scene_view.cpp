@@ -313,6 +313,21 @@ Result<render::FrameView> SimulatedFrames::view(std::int64_t frame) {
   return view;
 }
 
+render::FrameView motion_view(const scene::Scene& scene, const Framing& framing,
+                              const FrameMotion& frame) {
+  render::FrameView view;
+  view.camera = frame.camera;
+  view.quads = framing.quads;
+  for (std::size_t i = 0; i < frame.positions.size(); ++i) {
+    view.boxes.push_back(render::Box{.position = frame.positions[i],
+                                     .orientation = frame.orientations[i],
+                                     .size = scene.bodies[i].size,
+                                     .color = scene.bodies[i].color,
+                                     .solid = solid_of(scene.bodies[i].shape)});
+  }
+  return view;
+}
+
 Result<std::int64_t> SimulatedFrames::seek(std::int64_t frame) {
   const std::int64_t before = simulation_.step_count();
   // Not past the first state view(frame) needs: its trails' past comes first.

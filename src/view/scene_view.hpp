@@ -76,6 +76,11 @@ struct FrameMotion {
   std::vector<render::Vec3> trail_points;  // world frame (m)
 };
 
+// The camera, the planes and the bodies' boxes of a recorded frame: what render::view_extent
+// needs for the renderer's reach at that frame (a glTF's ground and the replay's).
+render::FrameView motion_view(const scene::Scene& scene, const Framing& framing,
+                              const FrameMotion& frame);
+
 // The frame loop's source for a render: frame k shows the bodies at t = k / fps (s), their states
 // interpolated between the two physics steps around t, on a simulation of its own, and the
 // scene's overlays computed from those same states.

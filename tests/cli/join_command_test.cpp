@@ -405,8 +405,9 @@ TEST_F(JoinCommand, JobsRendersChunksInProcessesAndJoinsThemIntoTheWholeRender) 
     const std::string root = "jobs" + std::to_string(jobs);
     const fs::path joined = render(root, "--jobs " + std::to_string(jobs));
     EXPECT_EQ(names_in(dir_ / root), std::vector<std::string>{"spin"}) << jobs;
-    EXPECT_EQ(names_in(joined), (std::vector<std::string>{"contact_sheet.png", "frames",
-                                                          "poster.png", "report.json", "spin.mp4"}));
+    EXPECT_EQ(names_in(joined),
+              (std::vector<std::string>{"contact_sheet.png", "frames", "poster.png", "report.json",
+                                        "spin.mp4"}));
     ASSERT_EQ(names_in(joined / "frames"), names_in(whole / "frames"));
     for (const std::string& name : names_in(whole / "frames")) {
       EXPECT_EQ(read_file(joined / "frames" / name), read_file(whole / "frames" / name)) << name;
