@@ -33,6 +33,12 @@ def _shader_directory():
     return str(installed) if (installed / "body.vert").exists() else ""
 
 
+def _web_directory():
+    """The html replay's files installed beside the module, or "" to let tumble find them."""
+    installed = _HERE / "web"
+    return str(installed) if (installed / "replay.html").exists() else ""
+
+
 def load(path):
     """The scene in the TOML file at ``path``; raises SceneError as ``tumble check`` reports."""
     return Scene(_tumble.load(os.fspath(path)))
@@ -83,7 +89,8 @@ class Scene:
             formats = [formats]
         done = self._scene.render(os.fspath(output) if output is not None else "output",
                                   list(formats) if formats is not None else None, width, height,
-                                  fps, quality, frames, _shader_directory())
+                                  fps, quality, frames, _shader_directory(),
+                                  _web_directory())
         return Render(done["directory"], done["written"], done["kept"], done["warnings"])
 
 

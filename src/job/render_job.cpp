@@ -296,7 +296,7 @@ Result<RenderJob> make_render_job(scene::Scene loaded, const RenderOptions& opti
   }
   std::optional<ReplayAssets> replay_assets;
   if (scene.output.html) {
-    Result<ReplayAssets> assets = load_replay_assets();
+    Result<ReplayAssets> assets = load_replay_assets(options.web_directory);
     if (!assets) return Error{assets.error()};
     replay_assets = std::move(*assets);
   }

@@ -47,6 +47,9 @@ struct RenderOptions {
   // The shaders/ folder to draw with; "" finds it (find_shader_directory). The Python module
   // gives the one installed beside it.
   std::string shader_directory;
+  // The html replay's web/ folder; "" finds it (find_web_directory). The Python module gives the
+  // one installed beside it.
+  std::string web_directory;
 };
 
 struct RenderJob {

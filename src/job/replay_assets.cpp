@@ -40,8 +40,8 @@ std::string find_web_directory() {
   return {};
 }
 
-Result<ReplayAssets> load_replay_assets() {
-  const std::string directory = find_web_directory();
+Result<ReplayAssets> load_replay_assets(const std::string& given) {
+  const std::string directory = given.empty() ? find_web_directory() : given;
   if (directory.empty()) {
     const char* asked = std::getenv("TUMBLE_WEB_DIR");
     return Error{asked

@@ -21,8 +21,9 @@ struct ReplayAssets {
 // built from; TUMBLE_WEB_DIR overrides both. "" if none holds replay.html.
 std::string find_web_directory();
 
-// The three files, read. Without three.js the error says what to run: scripts/install-deps, or
-// npm ci and npm run bundle in the folder.
-Result<ReplayAssets> load_replay_assets();
+// The three files, read from `directory`, or from find_web_directory() when it is "" (the
+// Python module gives the one installed beside it). Without three.js the error says what to run:
+// scripts/install-deps, or npm ci and npm run bundle in the folder.
+Result<ReplayAssets> load_replay_assets(const std::string& directory = "");
 
 }  // namespace tumble::job

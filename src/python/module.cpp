@@ -167,7 +167,7 @@ py::dict render(const LoadedScene& loaded, const std::string& output,
                 const std::optional<std::vector<std::string>>& formats, std::optional<int> width,
                 std::optional<int> height, std::optional<int> fps,
                 const std::optional<std::string>& quality, std::optional<bool> frames,
-                const std::string& shader_directory) {
+                const std::string& shader_directory, const std::string& web_directory) {
   job::RenderOptions options;
   options.scene_path = loaded.path;
   options.output_root = output;
@@ -182,6 +182,7 @@ py::dict render(const LoadedScene& loaded, const std::string& output,
   if (frames) options.frames = *frames;
   options.quiet = true;
   options.shader_directory = shader_directory;
+  options.web_directory = web_directory;
   Result<job::PreparedRender> prepared = job::prepare_render(loaded.text, options, Clock::now());
   if (!prepared) throw SceneError{prepared.error()};
   job::RenderOutcome outcome;
@@ -247,7 +248,7 @@ PYBIND11_MODULE(_tumble, m) {
       .def("simulate", &simulate, py::arg("every") = 1)
       .def("render", &render, py::arg("output"), py::arg("formats"), py::arg("width"),
            py::arg("height"), py::arg("fps"), py::arg("quality"), py::arg("frames"),
-           py::arg("shader_directory"));
+           py::arg("shader_directory"), py::arg("web_directory"));
   m.def("load", &load, py::arg("path"));
   m.def("loads", &parse, py::arg("text"), py::arg("path"));
 }

@@ -238,15 +238,19 @@ class Installed(unittest.TestCase):
             env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
             env["PYTHONUSERBASE"] = prefix
             probe = ("import tumble; print(tumble.__file__); print(tumble._shader_directory()); "
-                     "print(len(tumble.load(%r).simulate(every=600).t))"
+                     "print(len(tumble.load(%r).simulate(every=600).t)); "
+                     "print(tumble._web_directory())"
                      % str(SCENES / "dropped_cube.toml"))
             done = subprocess.run(["/usr/bin/python3", "-c", probe], capture_output=True,
                                   text=True, env=env, cwd=prefix)
             self.assertEqual(done.returncode, 0, done.stderr)
-            module, shaders, samples = done.stdout.split("\n")[:3]
+            module, shaders, samples, web = done.stdout.split("\n")[:4]
             self.assertTrue(module.startswith(prefix), module)
             self.assertTrue(shaders.startswith(prefix), shaders)
             self.assertGreater(int(samples), 1)
+            # The replay's page, player and three.js inside the package too.
+            self.assertTrue(web.startswith(prefix), web)
+            self.assertTrue((pathlib.Path(web) / "dist" / "three.bundle.js").is_file())
 
 
 if __name__ == "__main__":
