@@ -7,11 +7,18 @@
 
 namespace tumble::render {
 
+double linear_from_srgb(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+double srgb_from_linear(double linear) {
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
 Eigen::Vector3f linear_from_srgb(const Color& srgb) {
   Eigen::Vector3f out;
   for (int i = 0; i < 3; ++i) {
-    const double c = std::clamp(srgb[i], 0.0, 1.0);
-    out[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    out[i] = static_cast<float>(linear_from_srgb(std::clamp(srgb[i], 0.0, 1.0)));
   }
   return out;
 }

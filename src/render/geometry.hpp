@@ -15,6 +15,10 @@ namespace tumble::render {
 using Mat4 = Eigen::Matrix4d;
 
 // The sRGB decoding function (IEC 61966-2-1): written colours to linear light.
+// The sRGB transfer function (IEC 61966-2-1) of one component in [0, 1]: encoded to linear
+// light, and back.
+double linear_from_srgb(double encoded);
+double srgb_from_linear(double linear);
 Eigen::Vector3f linear_from_srgb(const Color& srgb);
 
 // World to camera (looking down -z), as gluLookAt; any `up` not along the view will do.

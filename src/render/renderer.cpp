@@ -648,10 +648,7 @@ namespace {
 const std::array<double, 256>& linear_levels() {
   static const std::array<double, 256> table = [] {
     std::array<double, 256> out{};
-    for (int level = 0; level < 256; ++level) {
-      const double c = level / 255.0;
-      out[level] = c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-    }
+    for (int level = 0; level < 256; ++level) out[level] = linear_from_srgb(level / 255.0);
     return out;
   }();
   return table;
@@ -659,9 +656,8 @@ const std::array<double, 256>& linear_levels() {
 
 // Linear light in [0, 1] -> the nearest sRGB level.
 std::uint8_t srgb_level(double linear) {
-  const double c =
-      linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-  return static_cast<std::uint8_t>(std::clamp(std::lround(255.0 * c), 0L, 255L));
+  return static_cast<std::uint8_t>(
+      std::clamp(std::lround(255.0 * srgb_from_linear(linear)), 0L, 255L));
 }
 
 }  // namespace
