@@ -1,6 +1,8 @@
-// The cost of text and overlays over a frame (Google Benchmark; not run by ctest):
+// The cost of text and overlays over a frame, and of the default look (Google Benchmark; not run
+// by ctest):
 //   build/render_bench --benchmark_filter=CostPerFrame --benchmark_repetitions=5
 //   --benchmark_min_time=1
+//   build/render_bench --benchmark_filter='Look|FourK' --benchmark_min_time=2
 // One cube at 720p with the default ground, shadows and edge filter, drawn without text and
 // with three texts (a boxed two-line live value, a caption, a label), the values changing every
 // frame as a documentation video's do: as two benchmarks, and alternated frame by frame on one
@@ -11,6 +13,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <memory>
@@ -24,8 +27,8 @@ using namespace tumble::render;
 
 const std::string kShaders = std::string(TUMBLE_SOURCE_DIR) + "/shaders";
 
-std::unique_ptr<Renderer> make_renderer() {
-  RenderSettings settings;  // 1280 × 720, edge filter, ground and shadows
+std::unique_ptr<Renderer> make_renderer(RenderSettings settings = {}) {
+  // 1280 × 720, edge filter, ground and shadows, the default look
   settings.font = std::string(kDefaultFontFamily);
   settings.overlays = true;
   tumble::Result<std::unique_ptr<Renderer>> renderer = Renderer::create(settings, kShaders);
@@ -179,6 +182,108 @@ void BM_TrailCost720p(benchmark::State& state) {
   });
 }
 
+// A settled pile: 1000 boxes of 0.15 to 0.3 m heaped in a cone on the ground (y = 0), turned
+// every way, the camera above it as scenes/pile.toml's: the hard case of soft shadows (every box
+// casts on its neighbours and the ground) and of occlusion (hundreds of boxes stand on the ground).
+FrameView pile_frame(int frame) {
+  FrameView view;
+  view.camera.position = Vec3(5.0 + 0.01 * frame, 4.5, 7.0);
+  view.camera.look_at = Vec3(0.0, 0.5, 0.0);
+  for (int i = 0; i < 1000; ++i) {
+    const auto fraction = [&](int salt) { return ((i * 37 + salt * 101) % 97) / 96.0; };
+    const double radius = 1.6 * std::sqrt(fraction(1));
+    const double angle = 6.283185 * fraction(2) + 0.1 * i;
+    const double size = 0.15 + 0.15 * fraction(3);
+    const double height = std::max(0.0, 1.2 * (1.0 - radius / 1.6)) * fraction(4) + 0.5 * size;
+    view.boxes.push_back(
+        Box{.position = Vec3(radius * std::cos(angle), height, radius * std::sin(angle)),
+            .orientation = Quat(Eigen::AngleAxisd(
+                6.0 * fraction(5), Vec3(fraction(6) - 0.5, 0.5, fraction(7) - 0.5).normalized())),
+            .size = Vec3(size, size, size),
+            .color = Color(0.2 + 0.6 * fraction(8), 0.3, 0.8 - 0.5 * fraction(8))});
+  }
+  return view;
+}
+
+// Two renderers of the same frames drawn in turn, frame by frame (a shared machine's load falls
+// on both alike): the iteration's time is the second's (wall); the counters give the ratios of
+// the second to the first, wall and CPU, and each one's ms per frame.
+void alternate_renderers(benchmark::State& state, const RenderSettings& first,
+                         const RenderSettings& second, FrameView (*frame_at)(int)) {
+  const auto a = make_renderer(first);
+  const auto b = make_renderer(second);
+  if (!a || !b) {
+    state.SkipWithError("no renderer");
+    return;
+  }
+  using Clock = std::chrono::steady_clock;
+  tumble::io::Image image;
+  double wall_a = 0.0, wall_b = 0.0, cpu_a = 0.0, cpu_b = 0.0;  // ms
+  int frame = 0;
+  for (auto _ : state) {
+    const FrameView view = frame_at(frame);
+    const auto start = Clock::now();
+    const double cpu_start = process_cpu_ms();
+    a->draw(view, image);
+    const auto middle = Clock::now();
+    const double cpu_middle = process_cpu_ms();
+    b->draw(view, image);
+    const auto end = Clock::now();
+    cpu_a += cpu_middle - cpu_start;
+    cpu_b += process_cpu_ms() - cpu_middle;
+    wall_a += std::chrono::duration<double, std::milli>(middle - start).count();
+    const double with = std::chrono::duration<double, std::milli>(end - middle).count();
+    wall_b += with;
+    state.SetIterationTime(1e-3 * with);
+    ++frame;
+  }
+  state.counters["wall_ratio"] = wall_b / wall_a;
+  state.counters["cpu_ratio"] = cpu_b / cpu_a;
+  state.counters["ms_first"] = wall_a / frame;
+  state.counters["ms_second"] = wall_b / frame;
+}
+
+RenderSettings plain_look() {
+  RenderSettings settings;
+  settings.look = tumble::common::Look::plain();
+  return settings;
+}
+
+// The default look against the plain one (the look of before soft shadows, occlusion and
+// exposure): the budget is 1.3 times.
+void BM_LookCostPerFrame720p(benchmark::State& state) {
+  alternate_renderers(state, plain_look(), RenderSettings{}, cube_frame);
+}
+void BM_LookCostPerFrame720pPile(benchmark::State& state) {
+  alternate_renderers(state, plain_look(), RenderSettings{}, pile_frame);
+}
+
+// Each part of the default look alone against the plain look, on the cube: 0 soft shadows,
+// 1 ambient occlusion, 2 the fill's contrast and the exposure.
+void BM_LookPartCostPerFrame720p(benchmark::State& state) {
+  RenderSettings part = plain_look();
+  const tumble::common::Look look;
+  if (state.range(0) == 0) part.look.shadow_softness = look.shadow_softness;
+  if (state.range(0) == 1) part.look.ambient_occlusion = look.ambient_occlusion;
+  if (state.range(0) == 2) {
+    part.look.fill_light = look.fill_light;
+    part.look.exposure = look.exposure;
+  }
+  alternate_renderers(state, plain_look(), part, cube_frame);
+}
+
+// 3840 × 2160 against 1280 × 720 in the default look: wall_ratio / 9 is the cost per pixel at 4K
+// as a multiple of that at 720p (the budget: 1.2).
+void BM_FourKAgainst720p(benchmark::State& state) {
+  RenderSettings four_k;
+  four_k.width = 3840;
+  four_k.height = 2160;
+  alternate_renderers(state, RenderSettings{}, four_k, cube_frame);
+  if (state.counters.count("wall_ratio")) {
+    state.counters["per_pixel_ratio"] = state.counters["wall_ratio"] / 9.0;
+  }
+}
+
 void BM_Frame720pWithoutText(benchmark::State& state) {
   draw_frames(state, false);
 }
@@ -200,6 +305,13 @@ BENCHMARK(BM_TextCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime
 BENCHMARK(BM_OverlayCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_TwoArrowsCost720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_TrailCost720p)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_LookCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_LookCostPerFrame720pPile)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_LookPartCostPerFrame720p)
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime();
+BENCHMARK(BM_FourKAgainst720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 
 }  // namespace
 

@@ -13,8 +13,9 @@ layout(location = 10) in vec3 in_albedo;   // linear
 uniform mat4 u_view_projection;
 uniform mat4 u_light_view_projection;
 uniform vec3 u_light_direction;  // the way the light travels, world frame, unit
-uniform vec3 u_light_color;      // linear
+uniform vec3 u_light_color;      // linear, times the exposure
 uniform float u_ambient;         // fraction of the key light
+uniform float u_fill_low;        // the fill on a face turned down, of that on a face turned up
 
 out vec3 v_world_position;
 out vec2 v_face_position;  // body frame, along the face's two edges from its centre (m)
@@ -45,7 +46,7 @@ void main() {
   v_world_normal = normal;
   vec3 albedo = in_albedo;  // the body's colour as given: faces differ by their light alone
   float diffuse = max(dot(normal, -u_light_direction), 0.0);
-  float hemisphere = mix(0.55, 1.0, normal.y * 0.5 + 0.5);  // sky above, a darker bounce below
+  float hemisphere = mix(u_fill_low, 1.0, normal.y * 0.5 + 0.5);  // lighting.glsl's hemisphere()
   v_ambient = u_ambient * hemisphere * u_light_color * albedo;
   v_diffuse = diffuse * u_light_color * albedo;
   v_specular = diffuse > 0.0 ? 0.25 * u_light_color : vec3(0.0);  // highlight strength 0.25

@@ -15,6 +15,10 @@ uniform float u_fade_start;  // of u_half_extent: render/view_extent.hpp's kGrou
 // For a transparent picture (≥ 0) the ground is not drawn, only its shadows, as black of this
 // opacity where the key light is wholly hidden; negative otherwise (Renderer::draw_ground_with).
 uniform float u_shadow_opacity;
+// The fill light the bodies leave each pixel's ground (render/occlusion_layer.hpp), read by
+// the passes with RECEIVE_OCCLUSION.
+uniform sampler2D u_occlusion;   // a texel per 4 × 4 pixels, filtered bilinearly
+uniform vec2 u_occlusion_scale;  // pixel position to the buffer's coordinates
 out vec4 out_color;
 
 void main() {
@@ -28,18 +32,29 @@ void main() {
     on_line *= 1.0 - smoothstep(0.3, 0.8, max(width.x, width.y));
     grid = 1.0 - 0.35 * on_line;
   }
+#ifdef RECEIVE_OCCLUSION
+  float fill = texture(u_occlusion, gl_FragCoord.xy * u_occlusion_scale).r;
+#ifndef RECEIVE_SHADOWS
+  if (fill == 1.0) discard;  // nothing hidden here: the kept ground is already right
+#endif
+#else
+  float fill = 1.0;
+#endif
 #ifdef RECEIVE_SHADOWS
   float visibility = key_light_visibility(v_light_clip, vec3(0.0, 1.0, 0.0));
 #else
   float visibility = 1.0;
 #endif
-  vec3 color = grid * mix(u_shadow_color, u_lit_color, visibility);
+  // The fill (u_shadow_color) times what the occlusion leaves of it, plus the key where it falls.
+  vec3 color = grid * mix(u_shadow_color * fill, u_lit_color - u_shadow_color * (1.0 - fill),
+                          visibility);
   float distance_to_center = length(v_world_position.xz - u_center.xz);
   float fade = smoothstep(u_fade_start * u_half_extent, u_half_extent, distance_to_center);
   if (u_shadow_opacity >= 0.0) {
     // Black of opacity `shadow` over the background colour the frame was cleared to, as every
     // layer of a transparent frame is (render/straight_alpha.hpp makes it straight black).
-    float shadow = (1.0 - visibility) * u_shadow_opacity * (1.0 - fade);
+    float shadow = ((1.0 - visibility) * u_shadow_opacity + (1.0 - fill) * (1.0 - u_shadow_opacity)) *
+                   (1.0 - fade);
     out_color = vec4(encode_srgb(u_background) * (1.0 - shadow), shadow);
     return;
   }

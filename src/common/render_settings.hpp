@@ -59,6 +59,46 @@ inline constexpr Backend kAllBackends[] = {Backend::automatic, Backend::osmesa, 
 inline constexpr int kAutomaticEglDevice = -1;
 inline constexpr int kMaxEglDevice = 255;  // the largest index a scene or --egl-device may name
 
+// How the light falls ([render] shadow_softness, ambient_occlusion, fill_light, exposure;
+// docs/scene-reference.md, "Lighting", gives the formula). The defaults are tumble's look; plain()
+// is the look of the releases before it: hard-edged shadows, no occlusion, the old fill and no
+// exposure, which draws the bytes those releases drew.
+struct Look {
+  // The key light's apparent diameter (degrees): a shadow's penumbra widens with the distance
+  // from the caster as the sun's does (0.53°); 0 = hard shadows (a 2×2 filtered edge).
+  double shadow_softness = 4.0;
+  // The fill light hidden from a point of the ground by the bodies near it (Quílez's closed-form
+  // occlusion of a box, of a sphere): 1 = all of it, 0 = none (off).
+  double ambient_occlusion = 1.0;
+  // The fill light's sky/ground contrast: a face turned straight down gets 1 − fill_light of the
+  // fill a face turned straight up gets (the light the ground sends back); 0 = the same fill from
+  // every direction.
+  double fill_light = 0.6;
+  // A factor on the key light's colour; kAutoExposure: the one that makes a face turned straight
+  // to the key light show exactly its colour (1 / (1 + ambient × hemisphere)).
+  double exposure = kAutoExposure;
+  static constexpr double kAutoExposure = 0.0;
+
+  // The fill's hemisphere factor for a unit normal's y: 1 facing up, 1 − fill_light facing down.
+  double hemisphere(double normal_y) const {
+    return (1.0 - fill_light) + fill_light * (0.5 * normal_y + 0.5);
+  }
+  // The factor on the key light's colour: `exposure`, or with kAutoExposure the one that makes a
+  // face turned straight to the key `light` show its colour: 1 / (1 + ambient × hemisphere).
+  double exposure_for(const DirectionalLight& light) const {
+    if (exposure != kAutoExposure) return exposure;
+    return 1.0 / (1.0 + light.ambient * hemisphere(-light.direction.normalized().y()));
+  }
+
+  static constexpr Look plain() {
+    return Look{
+        .shadow_softness = 0.0, .ambient_occlusion = 0.0, .fill_light = 0.45, .exposure = 1.0};
+  }
+  bool operator==(const Look&) const = default;
+};
+
+inline constexpr double kMaxShadowSoftness = 20.0;  // degrees
+
 inline constexpr int kMaxMotionBlurSamples = 64;
 
 struct MotionBlur {
@@ -88,6 +128,7 @@ struct RenderSettings {
   DirectionalLight light;
   Ground ground;
   bool shadows = true;
+  Look look;
   Backend backend = Backend::automatic;  // [render] backend; tumble render's --backend overrides
   // [render] egl_device; --egl-device overrides: an index into EGL's device list
   // (eglQueryDevicesEXT's order), drawn on through EGL's device platform; or kAutomaticEglDevice.

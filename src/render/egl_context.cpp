@@ -102,7 +102,9 @@ class EglContext final : public OffscreenContext {
   EglContext(EGLDisplay display, std::string device, int width, int height)
       : display_(display), device_(std::move(device)), width_(width), height_(height) {}
   ~EglContext() override {
-    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (eglGetCurrentContext() == context_) {  // another renderer's context may be current
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    }
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
     // No eglTerminate: a platform's display is one per process (per device), shared by every
     // context made on it (two renderers in one process, a test drawing with each back end), and
@@ -146,6 +148,9 @@ class EglContext final : public OffscreenContext {
     return Result<void>::success();
   }
 
+  bool make_current() override {
+    return eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE;
+  }
   int width() const override { return width_; }
   int height() const override { return height_; }
   Backend backend() const override { return Backend::egl; }

@@ -20,6 +20,7 @@ namespace tumble::render {
   X(PFNGLBINDBUFFERPROC, glBindBuffer)                                         \
   X(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer)                               \
   X(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer)                             \
+  X(PFNGLBINDSAMPLERPROC, glBindSampler)                                       \
   X(PFNGLBINDTEXTUREPROC, glBindTexture)                                       \
   X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                               \
   X(PFNGLBLENDEQUATIONPROC, glBlendEquation)                                   \
@@ -39,6 +40,7 @@ namespace tumble::render {
   X(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers)                         \
   X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                                   \
   X(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers)                       \
+  X(PFNGLDELETESAMPLERSPROC, glDeleteSamplers)                                 \
   X(PFNGLDELETESHADERPROC, glDeleteShader)                                     \
   X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                                 \
   X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)                         \
@@ -60,6 +62,7 @@ namespace tumble::render {
   X(PFNGLGENBUFFERSPROC, glGenBuffers)                                         \
   X(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers)                               \
   X(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers)                             \
+  X(PFNGLGENSAMPLERSPROC, glGenSamplers)                                       \
   X(PFNGLGENTEXTURESPROC, glGenTextures)                                       \
   X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                               \
   X(PFNGLGETERRORPROC, glGetError)                                             \
@@ -79,6 +82,7 @@ namespace tumble::render {
   X(PFNGLREADPIXELSPROC, glReadPixels)                                         \
   X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                       \
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, glRenderbufferStorageMultisample) \
+  X(PFNGLSAMPLERPARAMETERIPROC, glSamplerParameteri)                           \
   X(PFNGLSCISSORPROC, glScissor)                                               \
   X(PFNGLSHADERSOURCEPROC, glShaderSource)                                     \
   X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                         \

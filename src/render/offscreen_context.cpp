@@ -3,6 +3,35 @@
 #include "render/gl_loader.hpp"
 
 namespace tumble::render {
+namespace {
+
+// The context current on this thread, as far as the contexts made here know.
+thread_local const OffscreenContext* current_context = nullptr;
+
+Result<std::unique_ptr<OffscreenContext>> create_context(int width, int height, Backend backend,
+                                                         int egl_device);
+
+}  // namespace
+
+OffscreenContext::~OffscreenContext() {
+  if (current_context == this) current_context = nullptr;
+}
+
+bool OffscreenContext::use() {
+  if (current_context == this) return true;
+  if (!make_current()) return false;
+  current_context = this;
+  return true;
+}
+
+Result<std::unique_ptr<OffscreenContext>> create_offscreen_context(int width, int height,
+                                                                   Backend backend,
+                                                                   int egl_device) {
+  Result<std::unique_ptr<OffscreenContext>> made =
+      create_context(width, height, backend, egl_device);
+  if (made) current_context = made.value().get();
+  return made;
+}
 
 std::string OffscreenContext::description() const {
   return gl_description() +
@@ -37,9 +66,10 @@ bool backend_built(Backend backend) {
   return false;
 }
 
-Result<std::unique_ptr<OffscreenContext>> create_offscreen_context(int width, int height,
-                                                                   Backend backend,
-                                                                   int egl_device) {
+namespace {
+
+Result<std::unique_ptr<OffscreenContext>> create_context(int width, int height, Backend backend,
+                                                         int egl_device) {
   const auto unbuilt = [&](Backend wanted) -> Result<std::unique_ptr<OffscreenContext>> {
     return Error{
         std::string("this tumble was built without the ") + backend_name(wanted) +
@@ -60,7 +90,7 @@ Result<std::unique_ptr<OffscreenContext>> create_offscreen_context(int width, in
   // end every frame was drawn with before EGL came (the two give the same bytes on llvmpipe,
   // tested), then EGL, which newer Mesas keep.
   if (egl_device != kAutomaticEglDevice) {
-    return create_offscreen_context(width, height, Backend::egl, egl_device);
+    return create_context(width, height, Backend::egl, egl_device);
   }
   const bool egl_first = egl_has_gpu();
   std::string tried;
@@ -69,11 +99,13 @@ Result<std::unique_ptr<OffscreenContext>> create_offscreen_context(int width, in
   for (const Backend each : order) {
     if (!backend_built(each)) continue;
     Result<std::unique_ptr<OffscreenContext>> context =
-        create_offscreen_context(width, height, each, egl_device);
+        create_context(width, height, each, egl_device);
     if (context) return context;
     tried += std::string(tried.empty() ? "" : "; ") + backend_name(each) + ": " + context.error();
   }
   return Error{tried.empty() ? "this tumble was built with no off-screen back end" : tried};
 }
+
+}  // namespace
 
 }  // namespace tumble::render

@@ -20,7 +20,11 @@ using common::kAutomaticEglDevice;
 
 class OffscreenContext {
  public:
-  virtual ~OffscreenContext() = default;
+  virtual ~OffscreenContext();
+
+  // Makes this context the calling thread's current one, if it is not already (a thread may hold
+  // several renderers of one back end and draw with each in turn); false if the back end refused.
+  bool use();
 
   virtual int width() const = 0;
   virtual int height() const = 0;
@@ -32,6 +36,10 @@ class OffscreenContext {
   // bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6 (OSMesa)" or "… (EGL device 0 of 1: Mesa
   // software)". With the context current.
   std::string description() const;
+
+ protected:
+  // The back end's own call, made by use() (its constructor makes the context current itself).
+  virtual bool make_current() = 0;
 };
 
 // Whether this build has the back end (CMake found its library).

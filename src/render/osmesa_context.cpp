@@ -18,11 +18,13 @@ class OsmesaContext final : public OffscreenContext {
         height_(height),
         buffer_(static_cast<std::size_t>(width) * height * 4) {}
   ~OsmesaContext() override {
-    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);  // release the buffer before the context
+    // Release the buffer before the context, if this is the current one (another renderer's may
+    // be).
+    if (OSMesaGetCurrentContext() == context_) OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
     OSMesaDestroyContext(context_);
   }
 
-  bool make_current() {
+  bool make_current() override {
     return OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width_, height_);
   }
 

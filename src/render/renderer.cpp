@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <initializer_list>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "render/geometry.hpp"
 #include "render/gl.hpp"
 #include "render/ground_cache.hpp"
+#include "render/occlusion_layer.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/overlay_geometry.hpp"
 #include "render/overlay_layer.hpp"
@@ -49,10 +51,9 @@ void set_vector(GLint location, const Eigen::Vector3f& v) {
 // The screen rectangle (x, y, width, height in pixels, GL's bottom-up rows) that holds the
 // shadows of all boxes and quads on the ground: each corner projected along the light onto the
 // ground plane, then onto the screen. Nothing when no shadow can fall on the ground in view.
-std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
-                                                const RenderSettings& settings,
-                                                const Mat4& view_projection,
-                                                const Vec3& light_direction) {
+std::optional<PixelRect> shadow_region(const FrameView& view, const std::vector<Box>& boxes,
+                                       const RenderSettings& settings, const Mat4& view_projection,
+                                       const Vec3& light_direction) {
   if (light_direction.y() > -1e-3) return std::nullopt;  // light from below or level: none
   double low_x = 1e30, low_y = 1e30, high_x = -1e30, high_y = -1e30;
   // Takes in one corner's shadow; false when it falls behind the camera.
@@ -67,8 +68,8 @@ std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
     high_y = std::max(high_y, clip.y() / clip.w());
     return true;
   };
-  const std::array<int, 4> whole = {0, 0, settings.width, settings.height};
-  for (const Box& box : view.boxes) {
+  const PixelRect whole = {0, 0, settings.width, settings.height};
+  for (const Box& box : boxes) {
     const Mat3 rotation = box.orientation.normalized().toRotationMatrix();
     for (int corner = 0; corner < 8; ++corner) {
       const Vec3 local(corner & 1 ? 0.5 : -0.5, corner & 2 ? 0.5 : -0.5, corner & 4 ? 0.5 : -0.5);
@@ -91,7 +92,7 @@ std::optional<std::array<int, 4>> shadow_region(const FrameView& view,
   const int y1 =
       std::min(settings.height, static_cast<int>(std::ceil(pixel(high_y, settings.height))) + 2);
   if (x1 <= x0 || y1 <= y0) return std::nullopt;
-  return std::array<int, 4>{x0, y0, x1 - x0, y1 - y0};
+  return PixelRect{x0, y0, x1 - x0, y1 - y0};
 }
 
 // A vertex array of one attribute (location 0) of `components` floats a vertex, from `bytes`
@@ -114,9 +115,10 @@ void vertex_array(const float* vertices, std::size_t bytes, int components, GLui
 struct FrameSetup {
   Mat4 view_projection;
   Mat4 light_view_projection;
-  Vec3 light_direction;  // the way the key light travels, world frame, unit
-  ViewExtent extent;     // the boxes' sphere, near and far, the ground's square
-  double shadow_radius;  // of the sphere the shadow map covers: extent's radius, or more (m)
+  Vec3 light_direction;        // the way the key light travels, world frame, unit
+  Vec3 light_right, light_up;  // the shadow map's x and y axes, world frame, unit
+  ViewExtent extent;           // the boxes' sphere, near and far, the ground's square
+  double shadow_radius;        // of the sphere the shadow map covers: extent's radius, or more (m)
 };
 
 struct Renderer::Resources {
@@ -124,7 +126,7 @@ struct Renderer::Resources {
   std::unique_ptr<OffscreenContext> context;
   ShaderProgram body_program;
   ShaderProgram ground_program;
-  ShaderProgram shadowed_ground_program;  // the same, receiving shadows
+  ShaderProgram shadowed_ground_program;  // the same, receiving shadows (and occlusion)
   ShaderProgram shadow_program;           // quads
   ShaderProgram box_shadow_program;       // boxes, instanced
   ShaderProgram plane_program;            // quads
@@ -139,20 +141,24 @@ struct Renderer::Resources {
   Framebuffer resolved;                   // one sample per pixel of a multisampled target
   std::vector<std::uint8_t> rgba;         // the frame read back: RGBA, top row first
   GroundCache ground;                     // the ground without shadows, while the camera stays
+  OcclusionLayer occlusion;               // with ambient occlusion on the ground
   std::unique_ptr<TextLayer> text;        // when the settings name a font
   std::unique_ptr<OverlayLayer> overlay;  // when the settings ask for overlays
   GLuint ground_vao = 0, ground_vbo = 0;
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
+  GLuint depth_sampler = 0;  // the shadow map read as depths (no comparison), for soft shadows
 
   ~Resources() {
     if (!context) return;
+    context->use();  // the names below are this context's
     glDeleteVertexArrays(1, &ground_vao);
     glDeleteVertexArrays(1, &quad_vao);
     const GLuint buffers[] = {ground_vbo, quad_vbo};
     glDeleteBuffers(2, buffers);
     glDeleteFramebuffers(1, &shadow_fbo);
     glDeleteTextures(1, &shadow_texture);
+    glDeleteSamplers(1, &depth_sampler);
   }
 
   Result<void> create(const std::string& shader_directory);
@@ -160,12 +166,16 @@ struct Renderer::Resources {
   void draw_shadow_map(const FrameView& view, const FrameSetup& frame);
   // Binds `program` with the uniforms every lit shader shares.
   void use(const ShaderProgram& program, const FrameSetup& frame, const Camera& camera);
+  // The key light's colour, linear, times the exposure (common::Look::exposure_for).
+  Eigen::Vector3f key_light_color() const;
   GroundKey ground_key(const FrameView& view, const FrameSetup& frame) const;
   void draw_ground_with(const ShaderProgram& program, const FrameView& view,
                         const FrameSetup& frame);
   // Binds `target` and fills it with the background and the ground without shadows.
   void start_frame(const FrameView& view, const FrameSetup& frame, GLuint target);
-  void draw_ground_shadows(const FrameView& view, const FrameSetup& frame);
+  // The ground again with `program` (its shadows, its occlusion), inside `region`.
+  void draw_ground_shadows(const ShaderProgram& program, const FrameView& view,
+                           const FrameSetup& frame, const PixelRect& region);
   void draw_quads(const FrameView& view, const FrameSetup& frame, bool back_sides);
   // Reads the frame into `out`, through the edge filter unless multisampled, which leaves
   // `text_boxes` (from TextLayer::lay_out) alone.
@@ -192,22 +202,32 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     return Result<void>::success();
   };
 
-  if (Result<void> built = build(body_program, {"body.vert"}, {"lighting.glsl", "body.frag"});
-      !built)
+  // A lit fragment shader's sources: lighting.glsl (soft or hard shadows, as the look has them)
+  // and then `files`.
+  const bool soft = settings.look.shadow_softness > 0.0;
+  const auto lit = [soft](std::initializer_list<std::string> files) {
+    std::vector<std::string> out = {"version.glsl"};
+    if (soft) out.push_back("soft_shadows.glsl");
+    out.push_back("lighting.glsl");
+    out.insert(out.end(), files);
+    return out;
+  };
+  const bool occluded = settings.ground.enabled && settings.look.ambient_occlusion > 0.0;
+  if (Result<void> built = build(body_program, {"body.vert"}, lit({"body.frag"})); !built)
     return built;
-  if (Result<void> built = build(ground_program, {"ground.vert"}, {"lighting.glsl", "ground.frag"});
-      !built)
+  if (Result<void> built = build(ground_program, {"ground.vert"}, lit({"ground.frag"})); !built)
     return built;
-  if (Result<void> built = build(shadowed_ground_program, {"ground.vert"},
-                                 {"lighting.glsl", "receive_shadows.glsl", "ground.frag"});
+  if (Result<void> built =
+          build(shadowed_ground_program, {"ground.vert"},
+                occluded ? lit({"receive_shadows.glsl", "receive_occlusion.glsl", "ground.frag"})
+                         : lit({"receive_shadows.glsl", "ground.frag"}));
       !built)
     return built;
   if (Result<void> built = build(shadow_program, {"shadow.vert"}, {"shadow.frag"}); !built)
     return built;
   if (Result<void> built = build(box_shadow_program, {"box_shadow.vert"}, {"shadow.frag"}); !built)
     return built;
-  if (Result<void> built = build(plane_program, {"plane.vert"}, {"lighting.glsl", "plane.frag"});
-      !built)
+  if (Result<void> built = build(plane_program, {"plane.vert"}, lit({"plane.frag"})); !built)
     return built;
 
   boxes = BoxBatch::create(Solid::box);
@@ -223,8 +243,7 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     };
     for (const Sources& source : sources) {
       RoundSolid& round = rounds.emplace_back();
-      if (Result<void> built = build(round.program, source.vertex, {"lighting.glsl", "ball.frag"});
-          !built)
+      if (Result<void> built = build(round.program, source.vertex, lit({"ball.frag"})); !built)
         return built;
       if (Result<void> built = build(round.shadow_program, source.shadow, {"shadow.frag"}); !built)
         return built;
@@ -236,8 +255,7 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
       RoundSolid& hull = rounds.emplace_back();
       // Each hull its own program objects: the same two sources, built once per mesh (a scene
       // has a few).
-      if (Result<void> built = build(hull.program, {"hull.vert"}, {"lighting.glsl", "hull.frag"});
-          !built)
+      if (Result<void> built = build(hull.program, {"hull.vert"}, lit({"hull.frag"})); !built)
         return built;
       if (Result<void> built = build(hull.shadow_program, {"box_shadow.vert"}, {"shadow.frag"});
           !built)
@@ -275,6 +293,12 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       return Error{"shadow-map framebuffer is incomplete"};
     }
+    glGenSamplers(1, &depth_sampler);
+    glSamplerParameteri(depth_sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glSamplerParameteri(depth_sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(depth_sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(depth_sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(depth_sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
 
   if (settings.msaa > 1) {
@@ -311,6 +335,12 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     Result<GroundCache> made_ground = GroundCache::create(settings.width, settings.height, samples);
     if (!made_ground) return Error{made_ground.error()};
     ground = std::move(made_ground).value();
+    if (occluded) {
+      Result<OcclusionLayer> made_occlusion =
+          OcclusionLayer::create(settings.width, settings.height, shader_directory);
+      if (!made_occlusion) return Error{made_occlusion.error()};
+      occlusion = std::move(made_occlusion).value();
+    }
   }
   if (!settings.font.empty()) {
     Result<std::unique_ptr<TextLayer>> layer =
@@ -388,9 +418,11 @@ FrameSetup Renderer::Resources::setup(const FrameView& view) const {
   frame.light_direction = settings.light.direction.normalized();
   const Vec3& light = frame.light_direction;
   const double r = frame.shadow_radius;
-  frame.light_view_projection = orthographic(r, 0.1, 4.0 * r + 0.1) *
-                                look_at(camera.look_at - 2.0 * r * light, camera.look_at,
-                                        std::abs(light.y()) > 0.99 ? Vec3::UnitZ() : Vec3::UnitY());
+  const Mat4 light_view = look_at(camera.look_at - 2.0 * r * light, camera.look_at,
+                                  std::abs(light.y()) > 0.99 ? Vec3::UnitZ() : Vec3::UnitY());
+  frame.light_view_projection = orthographic(r, 0.1, 4.0 * r + 0.1) * light_view;
+  frame.light_right = light_view.row(0).head<3>().transpose();
+  frame.light_up = light_view.row(1).head<3>().transpose();
   return frame;
 }
 
@@ -430,11 +462,24 @@ void Renderer::Resources::use(const ShaderProgram& program, const FrameSetup& fr
   set_matrix(program.uniform("u_view_projection"), frame.view_projection);
   set_matrix(program.uniform("u_light_view_projection"), frame.light_view_projection);
   set_vector(program.uniform("u_light_direction"), frame.light_direction.cast<float>());
-  set_vector(program.uniform("u_light_color"), linear_from_srgb(settings.light.color));
+  set_vector(program.uniform("u_light_color"), key_light_color());
   glUniform1f(program.uniform("u_ambient"), static_cast<float>(settings.light.ambient));
+  glUniform1f(program.uniform("u_fill_low"), static_cast<float>(1.0 - settings.look.fill_light));
   set_vector(program.uniform("u_camera_position"), camera.position.cast<float>());
   glUniform1i(program.uniform("u_shadows"), settings.shadows ? 1 : 0);
   glUniform1i(program.uniform("u_shadow_map"), 0);
+  glUniform1i(program.uniform("u_shadow_depth"), 1);
+  // The filter's radius per unit of map depth: the map is 2r across and 4r deep (setup()).
+  const double half_angle = 0.5 * settings.look.shadow_softness * M_PI / 180.0;
+  glUniform1f(program.uniform("u_penumbra"), static_cast<float>(2.0 * std::tan(half_angle)));
+  set_vector(program.uniform("u_light_right"), frame.light_right.cast<float>());
+  set_vector(program.uniform("u_light_up"), frame.light_up.cast<float>());
+}
+
+Eigen::Vector3f Renderer::Resources::key_light_color() const {
+  const Eigen::Vector3f color = linear_from_srgb(settings.light.color);
+  const double exposure = settings.look.exposure_for(settings.light);
+  return exposure == 1.0 ? color : Eigen::Vector3f(color * static_cast<float>(exposure));
 }
 
 GroundKey Renderer::Resources::ground_key(const FrameView& view, const FrameSetup& frame) const {
@@ -458,7 +503,7 @@ void Renderer::Resources::draw_ground_with(const ShaderProgram& program, const F
   // lighting.glsl's shade() for the normal (0, 1, 0) without specular (the hemisphere
   // term is 1 there).
   const Eigen::Vector3f albedo = linear_from_srgb(s.ground.color);
-  const Eigen::Vector3f key_light = linear_from_srgb(s.light.color);
+  const Eigen::Vector3f key_light = key_light_color();
   const float ambient = static_cast<float>(s.light.ambient);
   const float diffuse = static_cast<float>(std::max(-frame.light_direction.y(), 0.0));
   set_vector(program.uniform("u_lit_color"), albedo.cwiseProduct(key_light) * (ambient + diffuse));
@@ -471,6 +516,12 @@ void Renderer::Resources::draw_ground_with(const ShaderProgram& program, const F
   glUniform1f(program.uniform("u_shadow_opacity"),
               !s.transparent ? -1.0f : (lit > 0.0f ? diffuse / lit : 0.0f));
   glUniform1f(program.uniform("u_grid_spacing"), static_cast<float>(s.ground.grid_spacing));
+  if (occlusion.texture() != 0) {
+    glUniform1i(program.uniform("u_occlusion"), 2);
+    glUniform2f(program.uniform("u_occlusion_scale"),
+                1.0f / static_cast<float>(kOcclusionDownsampling * occlusion.buffer_width()),
+                1.0f / static_cast<float>(kOcclusionDownsampling * occlusion.buffer_height()));
+  }
   glDisable(GL_CULL_FACE);  // seen from below too, if the camera goes there
   glBindVertexArray(ground_vao);
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
@@ -503,17 +554,18 @@ void Renderer::Resources::start_frame(const FrameView& view, const FrameSetup& f
   ground.copy_to(target);
 }
 
-void Renderer::Resources::draw_ground_shadows(const FrameView& view, const FrameSetup& frame) {
-  // Again with shadows inside the screen rectangle that holds every box's shadow on the ground:
-  // the same triangles give the same depths (ground.vert's gl_Position is invariant), so
-  // GL_LEQUAL passes where the kept ground shows and fails where a box is nearer, before
-  // shading.
-  const auto region = shadow_region(view, settings, frame.view_projection, frame.light_direction);
-  if (!region) return;
+void Renderer::Resources::draw_ground_shadows(const ShaderProgram& program, const FrameView& view,
+                                              const FrameSetup& frame, const PixelRect& region) {
+  // Again with shadows inside the screen rectangle that holds every box's shadow on the ground
+  // (and its occlusion): the same triangles give the same depths (ground.vert's gl_Position is
+  // invariant), so GL_LEQUAL passes where the kept ground shows and fails where a box is nearer,
+  // before shading.
   glEnable(GL_SCISSOR_TEST);
-  glScissor((*region)[0], (*region)[1], (*region)[2], (*region)[3]);
+  glScissor(region[0], region[1], region[2], region[3]);
   glDepthFunc(GL_LEQUAL);
-  draw_ground_with(shadowed_ground_program, view, frame);
+  glDepthMask(GL_FALSE);  // the depths are the kept ground's already
+  draw_ground_with(program, view, frame);
+  glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
   glDisable(GL_SCISSOR_TEST);
 }
@@ -665,6 +717,9 @@ std::uint8_t srgb_level(double linear) {
 void Renderer::draw(const FrameView& view, io::Image& out) {
   Resources& r = *resources_;
   const RenderSettings& s = r.settings;
+  // Another renderer of this thread may have drawn last.
+  [[maybe_unused]] const bool current = r.context->use();
+  assert(current && "the off-screen context could not be made current again");
   if (view.blurred_boxes.empty()) {
     draw_picture(view, view.boxes, out, false);
     return;
@@ -707,10 +762,36 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);
+  // Where the ground is drawn again with its shadows (and their occlusion), and where the
+  // occlusion falls (drawn now for both).
+  std::optional<PixelRect> shadowed_region, occluded_region;
+  if (s.ground.enabled) {
+    if (s.shadows) {
+      shadowed_region = shadow_region(view, boxes, s, frame.view_projection, frame.light_direction);
+    }
+    if (r.occlusion.texture() != 0) {
+      occluded_region = r.occlusion.draw(boxes, s.ground.height, s.look.ambient_occlusion,
+                                         frame.view_projection, shadowed_region);
+    }
+  }
 
   r.start_frame(view, frame, r.target.id());
+  // The occlusion of the lit ground, before the bodies hide any of it. A transparent picture has
+  // no ground drawn: its shadowed pass covers the occlusion's region instead.
+  if (occluded_region && s.transparent) shadowed_region = occluded_region;
+  if (occluded_region && !s.transparent) {
+    const double diffuse = std::max(-frame.light_direction.y(), 0.0);
+    const double lit = s.light.ambient + diffuse;
+    r.occlusion.apply(*occluded_region, lit > 0.0 ? s.light.ambient / lit : 0.0);
+  }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
+  glBindSampler(1, r.depth_sampler);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D, r.occlusion.texture());
+  glActiveTexture(GL_TEXTURE0);
 
   // The opaque surfaces in any order give the same picture (GL_LESS keeps the nearest) but
   // where two are at exactly the same depth. The ground is there first (the kept copy), then the
@@ -723,7 +804,9 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
     r.use(round.program, frame, view.camera);
     round.batch.draw();
   }
-  if (s.ground.enabled && s.shadows) r.draw_ground_shadows(view, frame);
+  if (shadowed_region) {
+    r.draw_ground_shadows(r.shadowed_ground_program, view, frame, *shadowed_region);
+  }
   r.draw_quads(view, frame, false);
   r.draw_quads(view, frame, true);
   // Lines and arrows in the scene (overlay_layer.hpp says how they meet it), then text last,

@@ -29,7 +29,8 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   // Draws one frame into `out` (resized to the settings' width and height). Must be called on
-  // the thread that created the renderer.
+  // the thread that created the renderer; several renderers of one back end on a thread may draw
+  // in turn (each makes its context current again).
   void draw(const FrameView& view, io::Image& out);
 
   // The GL implementation in use and the back end that made its context, for --verbose.

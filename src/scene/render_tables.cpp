@@ -40,6 +40,44 @@ common::MotionBlur read_motion_blur(TableReader& in) {
   return out;
 }
 
+// A number of [render] from `low` to `high` (inclusive), or the fallback.
+double number_within(TableReader& in, std::string_view key, double fallback, double low,
+                     double high, std::string_view unit) {
+  const double value = in.optional_number(key, fallback);
+  if (!(value >= low && value <= high)) {
+    in.fail(key, "must be from " + format_number(low) + " to " + format_number(high) +
+                     std::string(unit) + " (got " + format_number(value) + ")");
+  }
+  return value;
+}
+
+// shadow_softness, ambient_occlusion, fill_light, exposure: how the light falls
+// (common::Look).
+common::Look read_look(TableReader& in) {
+  common::Look look;
+  look.shadow_softness = number_within(in, "shadow_softness", look.shadow_softness, 0.0,
+                                       common::kMaxShadowSoftness, " degrees");
+  look.ambient_occlusion =
+      number_within(in, "ambient_occlusion", look.ambient_occlusion, 0.0, 1.0, "");
+  look.fill_light = number_within(in, "fill_light", look.fill_light, 0.0, 1.0, "");
+  if (in.has("exposure")) {
+    const toml::node& node = *in.table().get("exposure");
+    if (node.is_string()) {
+      if (node.as_string()->get() != "auto") {
+        in.fail("exposure",
+                "expected \"auto\" or a number, found " + in_quotes(node.as_string()->get()));
+      }
+    } else {
+      look.exposure = in.number("exposure", node);
+      if (!(look.exposure > 0.0 && look.exposure <= 100.0)) {
+        in.fail("exposure", "must be more than 0 and at most 100 (got " +
+                                format_number(look.exposure) + "), or \"auto\"");
+      }
+    }
+  }
+  return look;
+}
+
 void read_render(TableReader& in, Scene& scene) {
   common::RenderSettings& r = scene.render;
   r.width = setting_integer(in, common::render_setting("width"), r.width);
@@ -52,6 +90,7 @@ void read_render(TableReader& in, Scene& scene) {
   }
   read_background(in, r);
   r.shadows = in.optional_bool("shadows", r.shadows);
+  r.look = read_look(in);
   constexpr const common::RenderSetting& backend_setting = common::render_setting("backend");
   const std::string backend =
       in.optional_string(backend_setting.key, common::backend_name(r.backend));

@@ -16,6 +16,7 @@
 #include "scene/scene_builder.hpp"
 #include "scene/scene_loader.hpp"
 #include "support/command_test.hpp"
+#include "support/render_golden.hpp"
 #include "support/result_text.hpp"
 
 using tumble::testing::read_file;
@@ -25,7 +26,22 @@ namespace {
 const std::string kSource = TUMBLE_SOURCE_DIR;
 const std::string kScene = kSource + "/scenes/dropped_cube.toml";
 
-class DroppedCube : public tumble::testing::CommandTest {};
+class DroppedCube : public tumble::testing::CommandTest {
+ protected:
+  // The last frame of the 4 s scene at 60 frames/s, at 320 × 180.
+  tumble::io::Image last_frame(const std::string& scene, const std::string& folder) const {
+    const tumble::testing::Outcome run = tumble("render " + scene + " -o " + path(folder) +
+                                                " --width 320 --height 180 --no-video "
+                                                "--frames 239:240 -q");
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    tumble::io::Image frame;
+    EXPECT_EQ(
+        ::tumble::testing::take(
+            tumble::io::read_png(path(folder) + "/dropped_cube/frames/frame_00239.png"), frame),
+        "");
+    return frame;
+  }
+};
 
 TEST_F(DroppedCube, RestsOnTheFloorWithinAPixelAt720p) {
   const auto loaded = tumble::scene::load_scene_file(kScene);
@@ -46,35 +62,29 @@ TEST_F(DroppedCube, RestsOnTheFloorWithinAPixelAt720p) {
   EXPECT_LE(std::abs(gap), 1e-6);  // and in fact far below it
 }
 
+// As the renderer's goldens: 8 levels per channel, on at most 1% of the pixels.
+constexpr tumble::diff::DiffOptions kTolerance{.threshold = 8, .max_pixels = 320 * 180 / 100};
+
+// In the default look, and in the plain one (common::Look::plain's keys), each its golden.
 TEST_F(DroppedCube, LastFrameMatchesItsGolden) {
-  const std::string golden_path = kSource + "/tests/render/golden/dropped_cube_at_rest.png";
-  // The last frame of the 4 s scene at 60 frames/s, at 320 × 180.
-  const tumble::testing::Outcome run =
-      tumble("render " + kScene + " -o " + path("out") +
-             " --width 320 --height 180 --no-video --frames 239:240 -q");
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  tumble::io::Image frame, golden;
-  ASSERT_EQ(::tumble::testing::take(
-                tumble::io::read_png(path("out/dropped_cube/frames/frame_00239.png")), frame),
-            "");
-  if (std::getenv("TUMBLE_UPDATE_GOLDEN")) {
-    ASSERT_EQ(::tumble::testing::error_text(tumble::io::write_png(golden_path, frame)), "");
-    GTEST_SKIP() << "wrote " << golden_path;
-  }
-  ASSERT_EQ(::tumble::testing::take(tumble::io::read_png(golden_path), golden), "");
-  ASSERT_EQ(golden.width, frame.width);
-  ASSERT_EQ(golden.height, frame.height);
-  // As the renderer's goldens: 8 levels per channel, on at most 1% of the pixels.
-  const tumble::diff::DiffResult diff =
-      tumble::diff::compare_images(golden, frame, {.threshold = 8, .max_pixels = 320 * 180 / 100});
-  EXPECT_TRUE(diff.match) << diff.differing_pixels << " pixels differ, by up to "
-                          << diff.max_channel_difference;
+  tumble::testing::expect_matches_golden(last_frame(kScene, "out"), "dropped_cube_at_rest",
+                                         kTolerance);
+}
+
+TEST_F(DroppedCube, LastFrameInThePlainLookMatchesTheGoldenOfBeforeTheLook) {
+  const std::string plain = read_file(kScene) +
+                            "\n[render]\nshadow_softness = 0\nambient_occlusion = 0\n"
+                            "fill_light = 0.45\nexposure = 1.0\n";
+  write("dropped_cube.toml", plain);
+  tumble::testing::expect_matches_golden(last_frame(path("dropped_cube.toml"), "plain"),
+                                         "dropped_cube_at_rest_plain", kTolerance);
 }
 
 // The first 1.5 s of scenes/pile.toml, 600 boxes, while the column lands (every island sub-stepped,
 // up to 32 times a step, fast pairs' points and bodies' corners near planes found again within
 // steps): the CSV of two runs, and the frames of a pipelined and a serial render, are the same
-// bytes. (1.5 s, not more: the sanitizer build takes about 25 s a simulated second here.)
+// bytes; the last is the pile's golden in the default look. (1.5 s, not more: the sanitizer build
+// takes about 25 s a simulated second here.)
 class PilePour : public tumble::testing::CommandTest {
  protected:
   std::string pour() const {
@@ -96,15 +106,36 @@ TEST_F(PilePour, SimulateAndRenderGiveTheSameBytesEveryWay) {
   const std::string csv = read_file(path("a.csv"));
   EXPECT_GT(csv.size(), 100000u);  // 600 bodies, 4 rows of each
   EXPECT_EQ(csv, read_file(path("b.csv")));
-  const std::string frames = " -q --frames 60:65 --width 96 --height 54 --no-video ";
+  const std::string frames = " -q --frames 86:90 --width 320 --height 180 --no-video ";
   ASSERT_EQ(tumble("render" + frames + scene + " -o " + path("piped")).exit_code, 0);
   ASSERT_EQ(tumble("render --serial" + frames + scene + " -o " + path("serial")).exit_code, 0);
-  for (int k = 60; k < 65; ++k) {
+  for (int k = 86; k < 90; ++k) {
     const std::string name = "pile/frames/frame_000" + std::to_string(k) + ".png";
     const std::string piped = read_file(path("piped") + "/" + name);
     EXPECT_FALSE(piped.empty()) << name;
     EXPECT_EQ(piped, read_file(path("serial") + "/" + name)) << name;
   }
+  tumble::io::Image last;
+  ASSERT_EQ(::tumble::testing::take(
+                tumble::io::read_png(path("serial") + "/pile/frames/frame_00089.png"), last),
+            "");
+  tumble::testing::expect_matches_golden(last, "pile_landing", kTolerance);
+}
+
+// The tower's last frame (6 s) at 320 × 180 in the default look: boxes on boxes, their soft
+// shadows down the tower's side and on the floor, the floor's occlusion at its foot.
+class Tower : public tumble::testing::CommandTest {};
+
+TEST_F(Tower, LastFrameMatchesItsGolden) {
+  const tumble::testing::Outcome run =
+      tumble("render " + kSource + "/scenes/tower.toml -o " + path("out") +
+             " --width 320 --height 180 --no-video --frames 359:360 -q");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  tumble::io::Image frame;
+  ASSERT_EQ(::tumble::testing::take(
+                tumble::io::read_png(path("out") + "/tower/frames/frame_00359.png"), frame),
+            "");
+  tumble::testing::expect_matches_golden(frame, "tower", kTolerance);
 }
 
 }  // namespace

@@ -151,7 +151,8 @@ RgbaFile read_rgba(const std::string& path) {
 TEST_F(VideoSinkTest, TransparentBackgroundGivesAlphaInPngAndWebm) {
   const fs::path scene =
       write("spin.toml", testing::spinning_cube_scene(0.25, "[output]\nformats = [\"webm\"]\n",
-                                                      "background = \"transparent\"\n"));
+                                                      "background = \"transparent\"\n"
+                                                      "ambient_occlusion = 0\n"));
   const testing::Outcome run = tumble("render -q " + scene.string() + " -o " + path("out"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   // The cube sits in the middle of the frame; the corners show nothing (no ground is drawn).
@@ -161,7 +162,8 @@ TEST_F(VideoSinkTest, TransparentBackgroundGivesAlphaInPngAndWebm) {
   EXPECT_EQ(png.alpha_at(95, 63), 0);
   EXPECT_EQ(png.alpha_at(48, 32), 255);
   // The ground is not drawn but the cube's shadow on it is: partly transparent black, at most
-  // diffuse / (ambient + diffuse) = 0.736 opaque (188 of 255) with the default light. Black
+  // diffuse / (ambient + diffuse) = 0.736 opaque (188 of 255) with the default light (and no
+  // ambient occlusion, which would darken the fill too). Black
   // within 2 levels a channel (made straight from 8-bit values: straight_alpha.hpp); the other
   // partly transparent pixels are the cube's outline, smoothed by the edge filter.
   int shadow_pixels = 0, most_opaque = 0, outline = 0;

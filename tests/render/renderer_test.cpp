@@ -28,9 +28,12 @@ using testing::kShaders;
 // differently: a pixel may differ by up to 8 of 255 per channel, and up to 1% of pixels by more.
 constexpr diff::DiffOptions kGoldenTolerance{.threshold = 8, .max_pixels = 160 * 120 / 100};
 
-// 4 samples per pixel, as the goldens were drawn before the edge filter became the default.
+// 4 samples per pixel, as the goldens were drawn before the edge filter became the default; the
+// plain look, as they were drawn before soft shadows, occlusion and exposure (the default look's
+// goldens are tests/render/look_golden_test.cpp's).
 RenderSettings small_settings() {
   RenderSettings settings;
+  settings.look = common::Look::plain();
   settings.width = 160;
   settings.height = 120;
   settings.msaa = 4;

@@ -31,9 +31,11 @@ diff::DiffOptions golden_tolerance(const io::Image& image) {
           .max_pixels = static_cast<std::int64_t>(image.width) * image.height / 100};
 }
 
-// The default antialiasing (the edge filter), a plain background that compresses well, a cube.
+// The default antialiasing (the edge filter), a plain background that compresses well, a cube in
+// the plain look (common::Look::plain, as the goldens were drawn).
 RenderSettings text_settings(int width, int height) {
   RenderSettings settings;
+  settings.look = common::Look::plain();
   settings.width = width;
   settings.height = height;
   settings.ground.enabled = false;

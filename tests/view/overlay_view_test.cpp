@@ -20,7 +20,8 @@ namespace tumble::view {
 namespace {
 
 // A cube tossed up and spun about a tilted axis under gravity, the camera given (no framing
-// pass), the ground's grid and shadows on: what a documentation video looks like.
+// pass), the ground's grid and shadows on: what a documentation video looks like, drawn in the
+// plain look its goldens were drawn in (parse() sets it).
 constexpr const char* kScene = R"(name = "overlays"
 duration = 2.0
 [physics]
@@ -47,7 +48,9 @@ scene::Scene parse(const std::string& overlays) {
     ADD_FAILURE() << result.error();
     return {};
   }
-  return std::move(result).value();
+  scene::Scene scene = std::move(result).value();
+  scene.render.look = common::Look::plain();
+  return scene;
 }
 
 // Frame `frame` of the scene at width × height, drawn as `tumble render` draws it (render_job).

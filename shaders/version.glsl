@@ -1,0 +1,2 @@
+#version 330 core
+// First of every program's fragment sources that use lighting.glsl (and of nothing else).
