@@ -59,6 +59,16 @@ std::string settings_json(const RenderJob& job, const RenderResult& result) {
     out << ", \"motion_blur\": {\"samples\": " << scene.render.motion_blur.samples
         << ", \"shutter\": " << scene.render.motion_blur.shutter << "}";
   }
+  const common::Look& look = scene.render.look;
+  out << ", \"look\": {\"shadow_softness\": " << look.shadow_softness
+      << ", \"ambient_occlusion\": " << look.ambient_occlusion
+      << ", \"fill_light\": " << look.fill_light << ", \"exposure\": ";
+  if (look.exposure == common::Look::kAutoExposure) {
+    out << "\"auto\"";
+  } else {
+    out << look.exposure;
+  }
+  out << "}";
   out << ", \"opengl\": " << io::json_string(result.opengl) << "}";
   return out.str();
 }

@@ -42,7 +42,7 @@ Result<OcclusionLayer> OcclusionLayer::create(int width, int height,
 
   glGenTextures(1, out.texture_.out());
   glBindTexture(GL_TEXTURE_2D, out.texture_.get());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, out.buffer_width_, out.buffer_height_, 0, GL_RED,
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, out.buffer_width_, out.buffer_height_, 0, GL_RGBA,
                GL_UNSIGNED_BYTE, nullptr);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -97,9 +97,9 @@ OcclusionLayer::~OcclusionLayer() {
   glDeleteBuffers(2, buffers);
 }
 
-std::optional<PixelRect> OcclusionLayer::draw(const std::vector<Box>& boxes, double ground_height,
-                                              double strength, const Mat4& view_projection,
-                                              const std::optional<PixelRect>& also) {
+OcclusionLayer::Regions OcclusionLayer::draw(const std::vector<Box>& boxes, double ground_height,
+                                             double strength, const Mat4& view_projection,
+                                             const std::optional<PixelRect>& also) {
   instances_.clear();
   double low_x = 1e30, low_y = 1e30, high_x = -1e30, high_y = -1e30;
   bool whole = false;
@@ -159,7 +159,7 @@ std::optional<PixelRect> OcclusionLayer::draw(const std::vector<Box>& boxes, dou
     if (x1 > x0 && y1 > y0) own = PixelRect{x0, y0, x1 - x0, y1 - y0};
   }
   const std::optional<PixelRect> region = merged(own, also);
-  if (!region) return region;
+  if (!region) return {};
 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
   glViewport(0, 0, buffer_width_, buffer_height_);
@@ -194,7 +194,7 @@ std::optional<PixelRect> OcclusionLayer::draw(const std::vector<Box>& boxes, dou
     glBindVertexArray(0);
   }
   glDisable(GL_SCISSOR_TEST);
-  return region;
+  return {.occluded = own, .fresh = region};
 }
 
 void OcclusionLayer::apply(const PixelRect& region, double fill_share) {

@@ -40,12 +40,15 @@ class OcclusionLayer {
   OcclusionLayer(OcclusionLayer&&) noexcept = default;
   OcclusionLayer& operator=(OcclusionLayer&&) noexcept = default;
 
-  // Draws the occlusion of `boxes` on the ground at `ground_height` with this strength (0 to 1)
-  // and returns the screen rectangle that holds it and `also`: the buffer is fresh there (no
-  // occlusion where no body darkens) and stale elsewhere. Nothing when both are empty.
-  std::optional<PixelRect> draw(const std::vector<Box>& boxes, double ground_height,
-                                double strength, const Mat4& view_projection,
-                                const std::optional<PixelRect>& also);
+  // Where draw() darkens the ground, and where its buffer is fresh (that and the rectangle
+  // asked for besides): the buffer elsewhere is stale.
+  struct Regions {
+    std::optional<PixelRect> occluded, fresh;
+  };
+  // Draws the occlusion of `boxes` on the ground at `ground_height` with this strength (0 to 1),
+  // fresh over `also` too (where the shadowed ground pass will read it).
+  Regions draw(const std::vector<Box>& boxes, double ground_height, double strength,
+               const Mat4& view_projection, const std::optional<PixelRect>& also);
   // Multiplies the lit ground drawn in the bound framebuffer, inside `region`, by what the
   // occlusion leaves of its light, `fill_share` being the fill's share of it
   // (shaders/occlusion_apply.frag): before the bodies are drawn over it.

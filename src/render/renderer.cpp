@@ -32,6 +32,8 @@ using Mat4f = Eigen::Matrix4f;
 using Mat3 = Eigen::Matrix3d;
 
 constexpr int kShadowMapSize = 1024;  // texels per side
+// The widest soft penumbra's radius, in shadow-map texels (lighting.glsl's kMaxFilterTexels).
+constexpr double kMaxPenumbraTexels = 12.0;
 // A quad seen from its back (from inside the solid, between the camera and the boxes): enough
 // to show where the wall is, little enough to show the boxes behind it clearly.
 constexpr float kBackSideOpacity = 0.3f;
@@ -51,21 +53,31 @@ void set_vector(GLint location, const Eigen::Vector3f& v) {
 // The screen rectangle (x, y, width, height in pixels, GL's bottom-up rows) that holds the
 // shadows of all boxes and quads on the ground: each corner projected along the light onto the
 // ground plane, then onto the screen. Nothing when no shadow can fall on the ground in view.
+// `penumbra` (m) widens each shadow point on the ground that much each way, for soft shadows.
 std::optional<PixelRect> shadow_region(const FrameView& view, const std::vector<Box>& boxes,
                                        const RenderSettings& settings, const Mat4& view_projection,
-                                       const Vec3& light_direction) {
+                                       const Vec3& light_direction, double penumbra) {
   if (light_direction.y() > -1e-3) return std::nullopt;  // light from below or level: none
   double low_x = 1e30, low_y = 1e30, high_x = -1e30, high_y = -1e30;
-  // Takes in one corner's shadow; false when it falls behind the camera.
-  const auto take_in = [&](Vec3 point) {
-    // Along the light to the ground (a corner below the ground casts nothing above it).
-    point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
+  const auto take_in_point = [&](const Vec3& point) {
     const Eigen::Vector4d clip = view_projection * point.homogeneous();
     if (clip.w() <= 1e-9) return false;
     low_x = std::min(low_x, clip.x() / clip.w());
     high_x = std::max(high_x, clip.x() / clip.w());
     low_y = std::min(low_y, clip.y() / clip.w());
     high_y = std::max(high_y, clip.y() / clip.w());
+    return true;
+  };
+  // Takes in one corner's shadow; false when it falls behind the camera.
+  const auto take_in = [&](Vec3 point) {
+    // Along the light to the ground (a corner below the ground casts nothing above it).
+    point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
+    if (penumbra == 0.0) return take_in_point(point);
+    for (const Vec3 side : {Vec3::UnitX(), Vec3::UnitZ()}) {
+      if (!take_in_point(point + penumbra * side) || !take_in_point(point - penumbra * side)) {
+        return false;
+      }
+    }
     return true;
   };
   const PixelRect whole = {0, 0, settings.width, settings.height};
@@ -764,25 +776,34 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
   if (s.shadows) r.draw_shadow_map(view, frame);
   // Where the ground is drawn again with its shadows (and their occlusion), and where the
   // occlusion falls (drawn now for both).
-  std::optional<PixelRect> shadowed_region, occluded_region;
+  std::optional<PixelRect> shadowed_region;
+  OcclusionLayer::Regions occluded;
   if (s.ground.enabled) {
     if (s.shadows) {
-      shadowed_region = shadow_region(view, boxes, s, frame.view_projection, frame.light_direction);
+      // A soft shadow's penumbra reaches kMaxPenumbraTexels of the map past the hard edge,
+      // stretched on the ground by the light's slant.
+      const double penumbra =
+          s.look.shadow_softness > 0.0
+              ? kMaxPenumbraTexels * 2.0 * frame.shadow_radius / kShadowMapSize /
+                    std::max(-frame.light_direction.y(), 0.2)
+              : 0.0;
+      shadowed_region = shadow_region(view, boxes, s, frame.view_projection,
+                                      frame.light_direction, penumbra);
     }
     if (r.occlusion.texture() != 0) {
-      occluded_region = r.occlusion.draw(boxes, s.ground.height, s.look.ambient_occlusion,
-                                         frame.view_projection, shadowed_region);
+      occluded = r.occlusion.draw(boxes, s.ground.height, s.look.ambient_occlusion,
+                                  frame.view_projection, shadowed_region);
     }
   }
 
   r.start_frame(view, frame, r.target.id());
   // The occlusion of the lit ground, before the bodies hide any of it. A transparent picture has
   // no ground drawn: its shadowed pass covers the occlusion's region instead.
-  if (occluded_region && s.transparent) shadowed_region = occluded_region;
-  if (occluded_region && !s.transparent) {
+  if (occluded.occluded && s.transparent) shadowed_region = occluded.fresh;
+  if (occluded.occluded && !s.transparent) {
     const double diffuse = std::max(-frame.light_direction.y(), 0.0);
     const double lit = s.light.ambient + diffuse;
-    r.occlusion.apply(*occluded_region, lit > 0.0 ? s.light.ambient / lit : 0.0);
+    r.occlusion.apply(*occluded.occluded, lit > 0.0 ? s.light.ambient / lit : 0.0);
   }
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, r.shadow_texture);
