@@ -119,42 +119,67 @@ double process_cpu_ms() {
   return 1e3 * static_cast<double>(now.tv_sec) + 1e-6 * static_cast<double>(now.tv_nsec);
 }
 
-// The same frame without and with `add` (the texts, or every overlay), one after the other on one
-// renderer, so that a shared machine's load falls on both alike. The iteration's time is what they
-// add (wall); the counters give the ratios of with to without, wall and CPU: the render stage's
-// cost of them as a fraction.
+// Per iteration: `prepare(frame)`, then `first()` and `second()` one after the other, each timed
+// (wall, and the process's CPU: llvmpipe rasterises on threads of its own), so that a shared
+// machine's load falls on both alike. The iteration's manual time is `iteration_ms(first's,
+// second's)`. The sums, in ms, and the frame count.
+struct TimesInTurn {
+  double wall_first = 0.0, wall_second = 0.0, cpu_first = 0.0, cpu_second = 0.0;
+  int frames = 0;
+};
+template <typename Prepare, typename First, typename Second, typename IterationMs>
+TimesInTurn time_in_turn(benchmark::State& state, Prepare prepare, First first, Second second,
+                         IterationMs iteration_ms) {
+  using Clock = std::chrono::steady_clock;
+  TimesInTurn out;
+  for (auto _ : state) {
+    prepare(out.frames);
+    const auto start = Clock::now();
+    const double cpu_start = process_cpu_ms();
+    first();
+    const auto middle = Clock::now();
+    const double cpu_middle = process_cpu_ms();
+    second();
+    const auto end = Clock::now();
+    const double one = std::chrono::duration<double, std::milli>(middle - start).count();
+    const double two = std::chrono::duration<double, std::milli>(end - middle).count();
+    out.cpu_first += cpu_middle - cpu_start;
+    out.cpu_second += process_cpu_ms() - cpu_middle;
+    out.wall_first += one;
+    out.wall_second += two;
+    state.SetIterationTime(1e-3 * iteration_ms(one, two));
+    ++out.frames;
+  }
+  return out;
+}
+
+// The same frame without and with `add` (the texts, or every overlay) on one renderer. The
+// iteration's time is what they add (wall); the counters give the ratios of with to without,
+// wall and CPU: the render stage's cost of them as a fraction.
 void alternate(benchmark::State& state, void (*add)(FrameView&, int)) {
   const auto renderer = make_renderer();
   if (!renderer) {
     state.SkipWithError("no renderer");
     return;
   }
-  using Clock = std::chrono::steady_clock;
   tumble::io::Image image;
-  double wall_without = 0.0, wall_with = 0.0, cpu_without = 0.0, cpu_with = 0.0;  // ms
+  FrameView view;
   int frame = 0;
-  for (auto _ : state) {
-    FrameView view = cube_frame(frame);
-    const auto start = Clock::now();
-    const double cpu_start = process_cpu_ms();
-    renderer->draw(view, image);
-    const auto middle = Clock::now();
-    const double cpu_middle = process_cpu_ms();
-    add(view, frame);
-    renderer->draw(view, image);
-    const auto end = Clock::now();
-    cpu_without += cpu_middle - cpu_start;
-    cpu_with += process_cpu_ms() - cpu_middle;
-    const double without = std::chrono::duration<double, std::milli>(middle - start).count();
-    const double with = std::chrono::duration<double, std::milli>(end - middle).count();
-    wall_without += without;
-    wall_with += with;
-    state.SetIterationTime(1e-3 * (with - without));
-    ++frame;
-  }
-  state.counters["wall_ratio"] = wall_with / wall_without;
-  state.counters["cpu_ratio"] = cpu_with / cpu_without;
-  state.counters["ms_without"] = wall_without / frame;
+  const TimesInTurn times = time_in_turn(
+      state,
+      [&](int k) {
+        frame = k;
+        view = cube_frame(k);
+      },
+      [&] { renderer->draw(view, image); },
+      [&] {
+        add(view, frame);
+        renderer->draw(view, image);
+      },
+      [](double without, double with) { return with - without; });
+  state.counters["wall_ratio"] = times.wall_second / times.wall_first;
+  state.counters["cpu_ratio"] = times.cpu_second / times.cpu_first;
+  state.counters["ms_without"] = times.wall_first / times.frames;
 }
 
 void BM_TextCostPerFrame720p(benchmark::State& state) {
@@ -205,9 +230,9 @@ FrameView pile_frame(int frame) {
   return view;
 }
 
-// Two renderers of the same frames drawn in turn, frame by frame (a shared machine's load falls
-// on both alike): the iteration's time is the second's (wall); the counters give the ratios of
-// the second to the first, wall and CPU, and each one's ms per frame.
+// Two renderers of the same frames drawn in turn, frame by frame: the iteration's time is the
+// second's (wall); the counters give the ratios of the second to the first, wall and CPU, and each
+// one's ms per frame.
 void alternate_renderers(benchmark::State& state, const RenderSettings& first,
                          const RenderSettings& second, FrameView (*frame_at)(int)) {
   const auto a = make_renderer(first);
@@ -216,31 +241,15 @@ void alternate_renderers(benchmark::State& state, const RenderSettings& first,
     state.SkipWithError("no renderer");
     return;
   }
-  using Clock = std::chrono::steady_clock;
   tumble::io::Image image;
-  double wall_a = 0.0, wall_b = 0.0, cpu_a = 0.0, cpu_b = 0.0;  // ms
-  int frame = 0;
-  for (auto _ : state) {
-    const FrameView view = frame_at(frame);
-    const auto start = Clock::now();
-    const double cpu_start = process_cpu_ms();
-    a->draw(view, image);
-    const auto middle = Clock::now();
-    const double cpu_middle = process_cpu_ms();
-    b->draw(view, image);
-    const auto end = Clock::now();
-    cpu_a += cpu_middle - cpu_start;
-    cpu_b += process_cpu_ms() - cpu_middle;
-    wall_a += std::chrono::duration<double, std::milli>(middle - start).count();
-    const double with = std::chrono::duration<double, std::milli>(end - middle).count();
-    wall_b += with;
-    state.SetIterationTime(1e-3 * with);
-    ++frame;
-  }
-  state.counters["wall_ratio"] = wall_b / wall_a;
-  state.counters["cpu_ratio"] = cpu_b / cpu_a;
-  state.counters["ms_first"] = wall_a / frame;
-  state.counters["ms_second"] = wall_b / frame;
+  FrameView view;
+  const TimesInTurn times = time_in_turn(
+      state, [&](int frame) { view = frame_at(frame); }, [&] { a->draw(view, image); },
+      [&] { b->draw(view, image); }, [](double, double with) { return with; });
+  state.counters["wall_ratio"] = times.wall_second / times.wall_first;
+  state.counters["cpu_ratio"] = times.cpu_second / times.cpu_first;
+  state.counters["ms_first"] = times.wall_first / times.frames;
+  state.counters["ms_second"] = times.wall_second / times.frames;
 }
 
 RenderSettings plain_look() {

@@ -782,13 +782,12 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
     if (s.shadows) {
       // A soft shadow's penumbra reaches kMaxPenumbraTexels of the map past the hard edge,
       // stretched on the ground by the light's slant.
-      const double penumbra =
-          s.look.shadow_softness > 0.0
-              ? kMaxPenumbraTexels * 2.0 * frame.shadow_radius / kShadowMapSize /
-                    std::max(-frame.light_direction.y(), 0.2)
-              : 0.0;
-      shadowed_region = shadow_region(view, boxes, s, frame.view_projection,
-                                      frame.light_direction, penumbra);
+      const double penumbra = s.look.shadow_softness > 0.0
+                                  ? kMaxPenumbraTexels * 2.0 * frame.shadow_radius /
+                                        kShadowMapSize / std::max(-frame.light_direction.y(), 0.2)
+                                  : 0.0;
+      shadowed_region =
+          shadow_region(view, boxes, s, frame.view_projection, frame.light_direction, penumbra);
     }
     if (r.occlusion.texture() != 0) {
       occluded = r.occlusion.draw(boxes, s.ground.height, s.look.ambient_occlusion,
@@ -848,6 +847,7 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
          "FrameView::texts and labels need RenderSettings::font");
   std::vector<PixelBox> text_boxes;
   if (text) text_boxes = r.text->lay_out(r.texts_with_labels(view, frame));
+  glBindSampler(1, 0);  // unit 1 is the shadow map's only while the frame is drawn
   r.read_pixels(out, text_boxes);
   if (!one_of_several) finish_picture(view, out);  // else once, over the pictures' average
 }
