@@ -101,7 +101,7 @@ OcclusionLayer::Regions OcclusionLayer::draw(const std::vector<Box>& boxes, doub
                                              double strength, const Mat4& view_projection,
                                              const std::optional<PixelRect>& also) {
   instances_.clear();
-  double low_x = 1e30, low_y = 1e30, high_x = -1e30, high_y = -1e30;
+  ScreenBounds bounds(view_projection);
   bool whole = false;
   for (const Box& box : boxes) {
     const Eigen::Matrix3d rotation = box.orientation.normalized().toRotationMatrix();
@@ -134,30 +134,14 @@ OcclusionLayer::Regions OcclusionLayer::draw(const std::vector<Box>& boxes, doub
                                            static_cast<float>(reach)};
     instances_.insert(instances_.end(), std::begin(values), std::end(values));
     for (int corner = 0; corner < 4 && !whole; ++corner) {
-      const Vec3 point(box.position.x() + (corner & 1 ? square : -square), ground_height,
-                       box.position.z() + (corner & 2 ? square : -square));
-      const Eigen::Vector4d clip = view_projection * point.homogeneous();
-      if (clip.w() <= 1e-9) {
-        whole = true;
-        break;
-      }
-      low_x = std::min(low_x, clip.x() / clip.w());
-      high_x = std::max(high_x, clip.x() / clip.w());
-      low_y = std::min(low_y, clip.y() / clip.w());
-      high_y = std::max(high_y, clip.y() / clip.w());
+      whole =
+          !bounds.take_in(Vec3(box.position.x() + (corner & 1 ? square : -square), ground_height,
+                               box.position.z() + (corner & 2 ? square : -square)));
     }
   }
-  std::optional<PixelRect> own;
-  if (whole) {
-    own = PixelRect{0, 0, width_, height_};
-  } else if (!instances_.empty()) {
-    const auto pixel = [](double ndc, int size) { return 0.5 * (ndc + 1.0) * size; };
-    const int x0 = std::max(0, static_cast<int>(std::floor(pixel(low_x, width_))) - 1);
-    const int y0 = std::max(0, static_cast<int>(std::floor(pixel(low_y, height_))) - 1);
-    const int x1 = std::min(width_, static_cast<int>(std::ceil(pixel(high_x, width_))) + 1);
-    const int y1 = std::min(height_, static_cast<int>(std::ceil(pixel(high_y, height_))) + 1);
-    if (x1 > x0 && y1 > y0) own = PixelRect{x0, y0, x1 - x0, y1 - y0};
-  }
+  const std::optional<PixelRect> own =
+      whole ? std::optional<PixelRect>(PixelRect{0, 0, width_, height_})
+            : bounds.pixels(width_, height_, 1);
   const std::optional<PixelRect> region = merged(own, also);
   if (!region) return {};
 

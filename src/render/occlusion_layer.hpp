@@ -15,6 +15,7 @@
 #include "common/result.hpp"
 #include "render/frame.hpp"
 #include "render/gl_name.hpp"
+#include "render/screen_bounds.hpp"
 #include "render/shader_program.hpp"
 
 namespace tumble::render {
@@ -28,9 +29,6 @@ inline constexpr int kOcclusionDownsampling = 4;
 // How far from a body the ground is darkened: fully out to half this, fading to nothing at it,
 // as a multiple of the body's longest edge.
 inline constexpr double kOcclusionReach = 1.25;
-
-// A screen rectangle: x, y, width, height in pixels, GL's bottom-up rows.
-using PixelRect = std::array<int, 4>;
 
 class OcclusionLayer {
  public:

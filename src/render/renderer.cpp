@@ -19,6 +19,7 @@
 #include "render/offscreen_context.hpp"
 #include "render/overlay_geometry.hpp"
 #include "render/overlay_layer.hpp"
+#include "render/screen_bounds.hpp"
 #include "render/shader_program.hpp"
 #include "render/sketch_layer.hpp"
 #include "render/straight_alpha.hpp"
@@ -52,33 +53,18 @@ void set_vector(GLint location, const Eigen::Vector3f& v) {
 
 // The screen rectangle (x, y, width, height in pixels, GL's bottom-up rows) that holds the
 // shadows of all boxes and quads on the ground: each corner projected along the light onto the
-// ground plane, then onto the screen. Nothing when no shadow can fall on the ground in view.
-// `penumbra` (m) widens each shadow point on the ground that much each way, for soft shadows.
+// ground plane, then onto the screen, widened by `penumbra` (m, soft shadows' widest) where it
+// is nearest the camera. Nothing when no shadow can fall on the ground in view.
 std::optional<PixelRect> shadow_region(const FrameView& view, const std::vector<Box>& boxes,
                                        const RenderSettings& settings, const Mat4& view_projection,
                                        const Vec3& light_direction, double penumbra) {
   if (light_direction.y() > -1e-3) return std::nullopt;  // light from below or level: none
-  double low_x = 1e30, low_y = 1e30, high_x = -1e30, high_y = -1e30;
-  const auto take_in_point = [&](const Vec3& point) {
-    const Eigen::Vector4d clip = view_projection * point.homogeneous();
-    if (clip.w() <= 1e-9) return false;
-    low_x = std::min(low_x, clip.x() / clip.w());
-    high_x = std::max(high_x, clip.x() / clip.w());
-    low_y = std::min(low_y, clip.y() / clip.w());
-    high_y = std::max(high_y, clip.y() / clip.w());
-    return true;
-  };
+  ScreenBounds bounds(view_projection);
   // Takes in one corner's shadow; false when it falls behind the camera.
   const auto take_in = [&](Vec3 point) {
     // Along the light to the ground (a corner below the ground casts nothing above it).
     point += light_direction * ((settings.ground.height - point.y()) / light_direction.y());
-    if (penumbra == 0.0) return take_in_point(point);
-    for (const Vec3 side : {Vec3::UnitX(), Vec3::UnitZ()}) {
-      if (!take_in_point(point + penumbra * side) || !take_in_point(point - penumbra * side)) {
-        return false;
-      }
-    }
-    return true;
+    return bounds.take_in(point);
   };
   const PixelRect whole = {0, 0, settings.width, settings.height};
   for (const Box& box : boxes) {
@@ -95,16 +81,9 @@ std::optional<PixelRect> shadow_region(const FrameView& view, const std::vector<
       if (!take_in(point)) return whole;
     }
   }
-  // To pixels, widened by two for the filter's reach, clamped to the image.
-  const auto pixel = [](double ndc, int size) { return 0.5 * (ndc + 1.0) * size; };
-  const int x0 = std::max(0, static_cast<int>(std::floor(pixel(low_x, settings.width))) - 2);
-  const int y0 = std::max(0, static_cast<int>(std::floor(pixel(low_y, settings.height))) - 2);
-  const int x1 =
-      std::min(settings.width, static_cast<int>(std::ceil(pixel(high_x, settings.width))) + 2);
-  const int y1 =
-      std::min(settings.height, static_cast<int>(std::ceil(pixel(high_y, settings.height))) + 2);
-  if (x1 <= x0 || y1 <= y0) return std::nullopt;
-  return PixelRect{x0, y0, x1 - x0, y1 - y0};
+  // Widened by two for the filter's reach, and by the penumbra.
+  const double margin = penumbra > 0.0 ? bounds.pixels_of(penumbra, settings.height) : 0.0;
+  return bounds.pixels(settings.width, settings.height, 2 + static_cast<int>(std::ceil(margin)));
 }
 
 // A vertex array of one attribute (location 0) of `components` floats a vertex, from `bytes`
