@@ -16,7 +16,7 @@ uniform float u_fade_start;  // of u_half_extent: render/view_extent.hpp's kGrou
 // opacity where the key light is wholly hidden; negative otherwise (Renderer::draw_ground_with).
 uniform float u_shadow_opacity;
 // The fill light the bodies leave each pixel's ground (render/occlusion_layer.hpp), read by
-// the passes with RECEIVE_OCCLUSION.
+// the shadowed pass when the look has occlusion (RECEIVE_OCCLUSION).
 uniform sampler2D u_occlusion;   // a texel per 4 × 4 pixels, filtered bilinearly
 uniform vec2 u_occlusion_scale;  // pixel position to the buffer's coordinates
 out vec4 out_color;
@@ -34,9 +34,6 @@ void main() {
   }
 #ifdef RECEIVE_OCCLUSION
   float fill = texture(u_occlusion, gl_FragCoord.xy * u_occlusion_scale).r;
-#ifndef RECEIVE_SHADOWS
-  if (fill == 1.0) discard;  // nothing hidden here: the kept ground is already right
-#endif
 #else
   float fill = 1.0;
 #endif

@@ -59,7 +59,7 @@ const float kMaxFilterTexels = 12.0;  // the widest penumbra's radius, in shadow
 // 1 where the key light reaches the point, 0 in shadow. Points outside the map's square are lit;
 // this also spares most of the ground the lookups, which are the costliest part of a software
 // render. A face turned away from the light gets none of it whatever the map says (the caller
-// multiplies by its diffuse factor, 0): no lookup.
+// multiplies by its diffuse factor, 0): 1 there.
 float key_light_visibility(vec4 light_clip, vec3 normal) {
   if (!u_shadows) return 1.0;
   float facing = dot(normal, -u_light_direction);

@@ -4,7 +4,8 @@
 // back L (1 − a (1 − fill)), a = the fill's share of its light: the factor on the linear colour.
 // The frame holds sRGB-encoded colours, whose curve is nearly the power 1/2.4: the factor's own
 // power 1/2.4 on the encoded colour is within 0.6 of a level of the exact encoding's for factors
-// down to 0.5 (the fill's share of the ground's light keeps them above 0.7 by default). In shadow the ground is shaded again, exactly (ground.frag, RECEIVE_SHADOWS).
+// down to 0.5 (the fill's share of the ground's light keeps them above 0.7 by default). In
+// shadow the ground is shaded again, exactly (ground.frag, RECEIVE_SHADOWS).
 uniform sampler2D u_occlusion;   // a texel per 4 × 4 pixels, filtered bilinearly
 uniform vec2 u_occlusion_scale;  // pixel position to the buffer's coordinates
 uniform float u_fill_share;      // a

@@ -62,7 +62,7 @@ inline constexpr int kMaxEglDevice = 255;  // the largest index a scene or --egl
 // How the light falls ([render] shadow_softness, ambient_occlusion, fill_light, exposure;
 // docs/scene-reference.md, "Lighting", gives the formula). The defaults are tumble's look; plain()
 // is the look of the releases before it: hard-edged shadows, no occlusion, the old fill and no
-// exposure, which draws the bytes those releases drew.
+// exposure (the goldens drawn before it still hold).
 struct Look {
   // The key light's apparent diameter (degrees): a shadow's penumbra widens with the distance
   // from the caster as the sun's does (0.53°); 0 = hard shadows (a 2×2 filtered edge).
