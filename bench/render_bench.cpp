@@ -267,6 +267,14 @@ void BM_LookCostPerFrame720pPile(benchmark::State& state) {
   alternate_renderers(state, plain_look(), RenderSettings{}, pile_frame);
 }
 
+// The default look without ambient occlusion against the default look, on the pile: what the
+// occlusion of the ground and of the boxes by each other costs where it is dearest.
+void BM_OcclusionCostPerFrame720pPile(benchmark::State& state) {
+  RenderSettings without;
+  without.look.ambient_occlusion = 0.0;
+  alternate_renderers(state, without, RenderSettings{}, pile_frame);
+}
+
 // Each part of the default look alone against the plain look, on the cube: 0 soft shadows,
 // 1 ambient occlusion, 2 the fill's contrast and the exposure.
 void BM_LookPartCostPerFrame720p(benchmark::State& state) {
@@ -316,6 +324,7 @@ BENCHMARK(BM_TwoArrowsCost720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_TrailCost720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_LookCostPerFrame720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_LookCostPerFrame720pPile)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_OcclusionCostPerFrame720pPile)->Unit(benchmark::kMillisecond)->UseManualTime();
 BENCHMARK(BM_LookPartCostPerFrame720p)
     ->DenseRange(0, 2)
     ->Unit(benchmark::kMillisecond)

@@ -9,6 +9,7 @@ layout(location = 2) in mat4 in_model;     // body to world, including the scale
 layout(location = 6) in mat3 in_rotation;  // body to world, for the normals
 layout(location = 9) in vec3 in_size;      // edge lengths (m)
 layout(location = 10) in vec3 in_albedo;   // linear
+layout(location = 12) in vec4 in_occluders;  // render/box_instances.hpp: indices + 1, 0 none
 
 uniform mat4 u_view_projection;
 uniform mat4 u_light_view_projection;
@@ -26,6 +27,7 @@ flat out float v_frame_width;    // of the dark frame along the edges (m)
 flat out vec3 v_ambient;         // linear: the ambient light the face sends back
 flat out vec3 v_diffuse;         // linear: the key light it sends back where lit
 flat out vec3 v_specular;        // linear: the highlight's colour; 0 on a face turned away
+flat out vec4 v_occluders;
 
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
@@ -50,4 +52,5 @@ void main() {
   v_ambient = u_ambient * hemisphere * u_light_color * albedo;
   v_diffuse = diffuse * u_light_color * albedo;
   v_specular = diffuse > 0.0 ? 0.25 * u_light_color : vec3(0.0);  // highlight strength 0.25
+  v_occluders = in_occluders;
 }

@@ -25,6 +25,7 @@ void point_instance_attributes() {
   }
   attribute(9, 3, offsetof(BoxInstance, size));
   attribute(10, 3, offsetof(BoxInstance, albedo));
+  attribute(12, 4, offsetof(BoxInstance, occluders));  // 11 is a hull vertex's edge
 }
 
 }  // namespace
@@ -98,8 +99,9 @@ BoxBatch::~BoxBatch() {
   glDeleteBuffers(3, buffers);
 }
 
-void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye) {
-  const std::vector<BoxInstance> instances = box_instances(boxes, eye, solid_, mesh_);
+void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye,
+                      const std::vector<std::array<int, kOccludersPerBody>>* occluders) {
+  const std::vector<BoxInstance> instances = box_instances(boxes, eye, solid_, mesh_, occluders);
   count_ = static_cast<GLsizei>(instances.size());
   glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_.get());
   // A fresh store each frame, so the driver need not wait for the last frame's draws.

@@ -4,6 +4,7 @@
 // same upload. Internal to src/render/; needs a current GL context from create() to destruction.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <initializer_list>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "render/frame.hpp"
 #include "render/gl.hpp"
 #include "render/gl_name.hpp"
+#include "render/occluders.hpp"
 
 namespace tumble::render {
 
@@ -29,8 +31,9 @@ class BoxBatch {
   BoxBatch& operator=(const BoxBatch&) = delete;
 
   // Replaces the boxes drawn by draw() with those of `boxes` that are this batch's solid, nearest
-  // to `eye` (world frame, m) first.
-  void upload(const std::vector<Box>& boxes, const Vec3& eye);
+  // to `eye` (world frame, m) first, each with its occluders when given (box_instances()).
+  void upload(const std::vector<Box>& boxes, const Vec3& eye,
+              const std::vector<std::array<int, kOccludersPerBody>>* occluders = nullptr);
   // One draw of every uploaded box with the bound program, which reads body.vert's attribute
   // locations (or a subset of them, as box_shadow.vert).
   void draw() const;

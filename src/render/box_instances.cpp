@@ -6,8 +6,9 @@
 
 namespace tumble::render {
 
-std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye, Solid solid,
-                                       std::uint32_t mesh) {
+std::vector<BoxInstance> box_instances(
+    const std::vector<Box>& boxes, const Vec3& eye, Solid solid, std::uint32_t mesh,
+    const std::vector<std::array<int, kOccludersPerBody>>* occluders) {
   std::vector<double> distance(boxes.size());  // squared, from the eye to the centre (m²)
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -27,6 +28,11 @@ std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3
         box.orientation.normalized().toRotationMatrix().cast<float>();
     Eigen::Map<Eigen::Vector3f>(instance.size) = box.size.cast<float>();
     Eigen::Map<Eigen::Vector3f>(instance.albedo) = linear_from_srgb(box.color);
+    if (occluders) {
+      for (int k = 0; k < kOccludersPerBody; ++k) {
+        instance.occluders[k] = static_cast<float>((*occluders)[order[i]][k] + 1);
+      }
+    }
   }
   return out;
 }

@@ -3,9 +3,11 @@
 // Internal to src/render/.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "render/frame.hpp"
+#include "render/occluders.hpp"
 
 namespace tumble::render {
 
@@ -15,6 +17,9 @@ struct BoxInstance {
   float rotation[9];  // body to world, turns the face normals
   float size[3];      // edge lengths along the body axes (m)
   float albedo[3];    // linear (linear_from_srgb of the box's colour)
+  // The bodies whose occlusion it receives (occluders.hpp), as their indices plus one; 0 past
+  // the last (and when the look has no occlusion).
+  float occluders[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 };
 
 // One record per box of `solid`, nearest to `eye` (world frame, m) first, ties in the given order.
@@ -22,8 +27,11 @@ struct BoxInstance {
 // (llvmpipe tests depth before shading when the shader writes no depth and discards nothing). The
 // picture is the same in any order (opaque boxes, GL_LESS) but where faces of two boxes meet at
 // exactly equal depth.
-// A hull's batch takes the boxes of its `mesh` only.
-std::vector<BoxInstance> box_instances(const std::vector<Box>& boxes, const Vec3& eye,
-                                       Solid solid = Solid::box, std::uint32_t mesh = 0);
+// A hull's batch takes the boxes of its `mesh` only. `occluders`, when given, has a list per box
+// (nearest_occluders()).
+std::vector<BoxInstance> box_instances(
+    const std::vector<Box>& boxes, const Vec3& eye, Solid solid = Solid::box,
+    std::uint32_t mesh = 0,
+    const std::vector<std::array<int, kOccludersPerBody>>* occluders = nullptr);
 
 }  // namespace tumble::render

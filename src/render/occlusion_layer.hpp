@@ -15,6 +15,7 @@
 #include "common/result.hpp"
 #include "render/frame.hpp"
 #include "render/gl_name.hpp"
+#include "render/occluders.hpp"
 #include "render/screen_bounds.hpp"
 #include "render/shader_program.hpp"
 
@@ -25,10 +26,6 @@ using Mat4 = Eigen::Matrix4d;
 // The occlusion buffer has one texel per 4 × 4 pixels, read with bilinear filtering: occlusion
 // varies over a body's width, and its closed form is the costliest shading of a frame.
 inline constexpr int kOcclusionDownsampling = 4;
-
-// How far from a body the ground is darkened: fully out to half this, fading to nothing at it,
-// as a multiple of the body's longest edge.
-inline constexpr double kOcclusionReach = 1.25;
 
 class OcclusionLayer {
  public:

@@ -16,6 +16,7 @@
 #include "render/gl.hpp"
 #include "render/ground_cache.hpp"
 #include "render/occlusion_layer.hpp"
+#include "render/occluders.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/overlay_geometry.hpp"
 #include "render/overlay_layer.hpp"
@@ -139,6 +140,8 @@ struct Renderer::Resources {
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
   GLuint depth_sampler = 0;  // the shadow map read as depths (no comparison), for soft shadows
+  // With ambient occlusion: every body's shape, for the boxes beside it (occluders.hpp).
+  GLuint occluder_texture = 0;
 
   ~Resources() {
     if (!context) return;
@@ -150,6 +153,7 @@ struct Renderer::Resources {
     glDeleteFramebuffers(1, &shadow_fbo);
     glDeleteTextures(1, &shadow_texture);
     glDeleteSamplers(1, &depth_sampler);
+    glDeleteTextures(1, &occluder_texture);
   }
 
   Result<void> create(const std::string& shader_directory);
@@ -204,8 +208,21 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     return out;
   };
   const bool occluded = settings.ground.enabled && settings.look.ambient_occlusion > 0.0;
-  if (Result<void> built = build(body_program, {"body.vert"}, lit({"body.frag"})); !built)
+  // Boxes receive the occlusion of the bodies beside them whether or not there is a ground.
+  const bool bodies_occluded = settings.look.ambient_occlusion > 0.0;
+  if (Result<void> built = build(body_program, {"body.vert"},
+                                 bodies_occluded ? lit({"form_factor.glsl",
+                                                        "receive_body_occlusion.glsl", "body.frag"})
+                                                 : lit({"body.frag"}));
+      !built)
     return built;
+  if (bodies_occluded) {
+    glGenTextures(1, &occluder_texture);
+    glBindTexture(GL_TEXTURE_2D, occluder_texture);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
   if (Result<void> built = build(ground_program, {"ground.vert"}, lit({"ground.frag"})); !built)
     return built;
   if (Result<void> built =
@@ -465,6 +482,9 @@ void Renderer::Resources::use(const ShaderProgram& program, const FrameSetup& fr
   glUniform1f(program.uniform("u_penumbra"), static_cast<float>(2.0 * std::tan(half_angle)));
   set_vector(program.uniform("u_light_right"), frame.light_right.cast<float>());
   set_vector(program.uniform("u_light_up"), frame.light_up.cast<float>());
+  glUniform1i(program.uniform("u_occluders"), 3);
+  glUniform1f(program.uniform("u_occlusion_strength"),
+              static_cast<float>(settings.look.ambient_occlusion));
 }
 
 Eigen::Vector3f Renderer::Resources::key_light_color() const {
@@ -743,7 +763,18 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
   const RenderSettings& s = r.settings;
   const FrameSetup frame = r.setup(view);
 
-  r.boxes.upload(boxes, view.camera.position);
+  // The bodies each box receives occlusion from, and every body's shape for the shader.
+  std::vector<std::array<int, kOccludersPerBody>> occluders;
+  if (r.occluder_texture != 0 && !boxes.empty()) {
+    occluders = nearest_occluders(boxes);
+    const std::vector<float> texels = occluder_texels(boxes);
+    glBindTexture(GL_TEXTURE_2D, r.occluder_texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 4 * kOccludersPerRow,
+                 static_cast<GLsizei>(texels.size() / (16 * kOccludersPerRow)), 0, GL_RGBA,
+                 GL_FLOAT, texels.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  r.boxes.upload(boxes, view.camera.position, occluders.empty() ? nullptr : &occluders);
   // A round solid needs RenderSettings::round_solids, a hull its mesh among RenderSettings::hulls.
   assert(std::all_of(boxes.begin(), boxes.end(), [&](const Box& b) {
     return b.solid == Solid::box ||
@@ -790,6 +821,8 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
   glBindSampler(1, r.depth_sampler);
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_2D, r.occlusion.texture());
+  glActiveTexture(GL_TEXTURE3);
+  glBindTexture(GL_TEXTURE_2D, r.occluder_texture);
   glActiveTexture(GL_TEXTURE0);
 
   // The opaque surfaces in any order give the same picture (GL_LESS keeps the nearest) but
