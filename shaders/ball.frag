@@ -7,6 +7,7 @@ in vec3 v_world_normal;
 in vec3 v_body_point;
 in vec4 v_light_clip;
 flat in vec3 v_albedo;
+flat in vec4 v_occluders;  // render/box_instances.hpp
 
 out vec4 out_color;
 
@@ -22,5 +23,12 @@ void main() {
   float circle = 1.0 - smoothstep(kCircleHalfWidth - blur, kCircleHalfWidth + blur, nearest);
   vec3 albedo = v_albedo * mix(1.0, 0.18, circle);  // darkened as a box's frame is
   float visibility = key_light_visibility(v_light_clip, normal);
-  out_color = vec4(encode_srgb(shade(albedo, v_world_position, normal, visibility, 48.0, 0.25)), 1.0);
+#ifdef RECEIVE_BODY_OCCLUSION
+  float fill = fill_left(v_world_position, normal, v_occluders);
+#else
+  float fill = 1.0;
+#endif
+  out_color = vec4(
+      encode_srgb(shade_filled(albedo, v_world_position, normal, visibility, 48.0, 0.25, fill)),
+      1.0);
 }

@@ -6,6 +6,7 @@ layout(location = 0) in vec3 in_position;  // on the sphere of diameter 1
 layout(location = 2) in mat4 in_model;     // body to world, including the scale to the diameter
 layout(location = 6) in mat3 in_rotation;  // body to world, for the normals
 layout(location = 10) in vec3 in_albedo;   // linear
+layout(location = 12) in vec4 in_occluders;  // render/box_instances.hpp
 
 uniform mat4 u_view_projection;
 uniform mat4 u_light_view_projection;
@@ -15,6 +16,7 @@ out vec3 v_world_normal;  // interpolated: normalised per pixel
 out vec3 v_body_point;    // on the sphere, body frame: where the great circles are drawn
 out vec4 v_light_clip;
 flat out vec3 v_albedo;
+flat out vec4 v_occluders;
 
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
@@ -24,4 +26,5 @@ void main() {
   v_world_normal = in_rotation * in_position;
   v_body_point = in_position;
   v_albedo = in_albedo;
+  v_occluders = in_occluders;
 }

@@ -11,32 +11,6 @@ flat in vec3 v_diffuse;
 flat in vec3 v_specular;
 flat in vec4 v_occluders;  // the bodies that darken this box: their indices + 1, 0 none
 
-#ifdef RECEIVE_BODY_OCCLUSION
-// Four texels a body (render/occluders.hpp): (centre, reach; negative for a ball) and the
-// rotation's columns, each with the half edge along it; kOccludersPerRow bodies a row.
-uniform sampler2D u_occluders;
-const int kOccludersPerRow = 256;
-uniform float u_occlusion_strength;  // [render] ambient_occlusion
-
-// What the bodies beside it leave of the fill light at a point of this box: the product of
-// 1 - strength × occlusion over them (form_factor.glsl).
-float fill_left(vec3 point, vec3 normal) {
-  float left = 1.0;
-  for (int k = 0; k < 4; ++k) {
-    int index = int(v_occluders[k]) - 1;
-    if (index < 0) break;
-    ivec2 at = ivec2(4 * (index % kOccludersPerRow), index / kOccludersPerRow);
-    vec4 center = texelFetch(u_occluders, at, 0);
-    vec4 x = texelFetch(u_occluders, at + ivec2(1, 0), 0);
-    vec4 y = texelFetch(u_occluders, at + ivec2(2, 0), 0);
-    vec4 z = texelFetch(u_occluders, at + ivec2(3, 0), 0);
-    left *= 1.0 - u_occlusion_strength *
-                      occlusion_by(point, normal, center.xyz, mat3(x.xyz, y.xyz, z.xyz),
-                                   vec3(x.w, y.w, z.w), center.w < 0.0, abs(center.w));
-  }
-  return left;
-}
-#endif
 
 out vec4 out_color;
 
@@ -62,7 +36,7 @@ void main() {
   vec3 halfway = normalize(to_eye - u_light_direction);
   float highlight = power_48(max(dot(v_world_normal, halfway), 0.0));
 #ifdef RECEIVE_BODY_OCCLUSION
-  vec3 ambient = v_ambient * fill_left(v_world_position, v_world_normal);
+  vec3 ambient = v_ambient * fill_left(v_world_position, v_world_normal, v_occluders);
 #else
   vec3 ambient = v_ambient;
 #endif

@@ -5,6 +5,7 @@ in vec3 v_edge;
 in vec4 v_light_clip;
 flat in vec3 v_world_normal;
 flat in vec3 v_albedo;
+flat in vec4 v_occluders;  // render/box_instances.hpp
 
 out vec4 out_color;
 
@@ -19,5 +20,12 @@ void main() {
   float edge = 1.0 - smoothstep(kEdgePixels - 0.5, kEdgePixels + 0.5, nearest);
   vec3 albedo = v_albedo * mix(1.0, 0.18, edge);
   float visibility = key_light_visibility(v_light_clip, normal);
-  out_color = vec4(encode_srgb(shade(albedo, v_world_position, normal, visibility, 32.0, 0.2)), 1.0);
+#ifdef RECEIVE_BODY_OCCLUSION
+  float fill = fill_left(v_world_position, normal, v_occluders);
+#else
+  float fill = 1.0;
+#endif
+  out_color = vec4(
+      encode_srgb(shade_filled(albedo, v_world_position, normal, visibility, 32.0, 0.2, fill)),
+      1.0);
 }

@@ -7,6 +7,7 @@ layout(location = 2) in mat4 in_model;     // body to world, including the scale
 layout(location = 6) in mat3 in_rotation;  // body to world, for the normals
 layout(location = 10) in vec3 in_albedo;   // linear
 layout(location = 11) in vec3 in_edge;     // how far from the face's edges (hull_vertices)
+layout(location = 12) in vec4 in_occluders;  // render/box_instances.hpp
 
 uniform mat4 u_view_projection;
 uniform mat4 u_light_view_projection;
@@ -16,6 +17,7 @@ out vec3 v_edge;
 out vec4 v_light_clip;
 flat out vec3 v_world_normal;
 flat out vec3 v_albedo;
+flat out vec4 v_occluders;
 
 void main() {
   vec4 world = in_model * vec4(in_position, 1.0);
@@ -25,4 +27,5 @@ void main() {
   v_world_normal = in_rotation * in_normal;
   v_edge = in_edge;
   v_albedo = in_albedo;
+  v_occluders = in_occluders;
 }

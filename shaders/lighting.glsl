@@ -126,8 +126,10 @@ float key_light_visibility(vec4 light_clip, vec3 normal) {
 #endif
 }
 
-vec3 shade(vec3 albedo, vec3 position, vec3 normal, float visibility, float shininess,
-           float specular_strength) {
+// Blinn-Phong with the fill light times `fill`: what the bodies beside the point leave of it
+// (receive_body_occlusion.glsl), 1 where nothing hides any.
+vec3 shade_filled(vec3 albedo, vec3 position, vec3 normal, float visibility, float shininess,
+                  float specular_strength, float fill) {
   vec3 to_light = -u_light_direction;
   vec3 to_eye = normalize(u_camera_position - position);
   float diffuse = max(dot(normal, to_light), 0.0);
@@ -135,5 +137,10 @@ vec3 shade(vec3 albedo, vec3 position, vec3 normal, float visibility, float shin
   float specular = diffuse > 0.0 ? pow(max(dot(normal, halfway), 0.0), shininess) : 0.0;
   vec3 ambient = u_ambient * hemisphere(normal) * u_light_color * albedo;
   vec3 key = visibility * u_light_color * (albedo * diffuse + specular_strength * specular);
-  return ambient + key;
+  return ambient * fill + key;
+}
+
+vec3 shade(vec3 albedo, vec3 position, vec3 normal, float visibility, float shininess,
+           float specular_strength) {
+  return shade_filled(albedo, position, normal, visibility, shininess, specular_strength, 1.0);
 }

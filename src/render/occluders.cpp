@@ -34,6 +34,9 @@ std::vector<std::array<int, kOccludersPerBody>> nearest_occluders(const std::vec
     near.clear();
     const double window = radius[i] + widest;
     const auto consider = [&](std::size_t j) {
+      // Only a box's and a ball's forms are exact: the box around a capsule, cylinder or hull
+      // would hide the sky from points of a neighbour that it does not cover.
+      if (boxes[j].solid != Solid::box && boxes[j].solid != Solid::ball) return;
       const double gap =
           (boxes[i].position - boxes[j].position).norm() - radius[i] - radius[j];
       if (gap < reach_of(boxes[j])) near.emplace_back(std::max(gap, 0.0), static_cast<int>(j));

@@ -1,5 +1,5 @@
-// The bodies whose ambient occlusion a box receives (shaders/form_factor.glsl, body.frag): for
-// each body, up to kOccludersPerBody others near enough to darken it, and every body's shape as
+// The bodies whose ambient occlusion a body receives (shaders/form_factor.glsl,
+// receive_body_occlusion.glsl): for each body, up to kOccludersPerBody others near enough to darken it, and every body's shape as
 // the shaders read it from a texture. Free of GL. Internal to src/render/.
 #pragma once
 
@@ -18,9 +18,11 @@ inline constexpr double kOcclusionReach = 1.25;
 // about four others, and each costs its pixels a closed-form occlusion.
 inline constexpr int kOccludersPerBody = 4;
 
-// For each of `boxes`, the indices of the others whose occlusion reaches it (their bounding
-// spheres closer than kOcclusionReach times the other's longest edge), nearest first (by the gap
-// between the bounding spheres, ties by index), -1 past the last.
+// For each of `boxes`, the indices of the boxes and balls among the others whose occlusion reaches
+// it (their bounding spheres closer than kOcclusionReach times the other's longest edge), nearest
+// first (by the gap between the bounding spheres, ties by index), -1 past the last. A capsule, a
+// cylinder or a hull darkens no body: the box around it, which is how it darkens the ground,
+// would darken points of a neighbour it does not cover.
 std::vector<std::array<int, kOccludersPerBody>> nearest_occluders(const std::vector<Box>& boxes);
 
 // Bodies a row of the occluder texture (body.frag's kOccludersPerRow): 4 RGBA texels each.

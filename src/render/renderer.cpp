@@ -200,20 +200,24 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
   // A lit fragment shader's sources: lighting.glsl (soft or hard shadows, as the look has them)
   // and then `files`.
   const bool soft = settings.look.shadow_softness > 0.0;
-  const auto lit = [soft](std::initializer_list<std::string> files) {
+  const auto lit = [soft](const std::vector<std::string>& files) {
     std::vector<std::string> out = {"version.glsl"};
     if (soft) out.push_back("soft_shadows.glsl");
     out.push_back("lighting.glsl");
-    out.insert(out.end(), files);
+    out.insert(out.end(), files.begin(), files.end());
     return out;
   };
   const bool occluded = settings.ground.enabled && settings.look.ambient_occlusion > 0.0;
-  // Boxes receive the occlusion of the bodies beside them whether or not there is a ground.
+  // The solids receive the occlusion of the bodies beside them whether or not there is a ground:
+  // a solid's fragment shader, after the occlusion's sources when the look has it.
   const bool bodies_occluded = settings.look.ambient_occlusion > 0.0;
-  if (Result<void> built = build(body_program, {"body.vert"},
-                                 bodies_occluded ? lit({"form_factor.glsl",
-                                                        "receive_body_occlusion.glsl", "body.frag"})
-                                                 : lit({"body.frag"}));
+  const auto receiving = [bodies_occluded](const std::vector<std::string>& files) {
+    std::vector<std::string> out;
+    if (bodies_occluded) out = {"form_factor.glsl", "receive_body_occlusion.glsl"};
+    out.insert(out.end(), files.begin(), files.end());
+    return out;
+  };
+  if (Result<void> built = build(body_program, {"body.vert"}, lit(receiving({"body.frag"})));
       !built)
     return built;
   if (bodies_occluded) {
@@ -251,7 +255,8 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     };
     for (const Sources& source : sources) {
       RoundSolid& round = rounds.emplace_back();
-      if (Result<void> built = build(round.program, source.vertex, lit({"ball.frag"})); !built)
+      if (Result<void> built = build(round.program, source.vertex, lit(receiving({"ball.frag"})));
+          !built)
         return built;
       if (Result<void> built = build(round.shadow_program, source.shadow, {"shadow.frag"}); !built)
         return built;
@@ -263,7 +268,8 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
       RoundSolid& hull = rounds.emplace_back();
       // Each hull its own program objects: the same two sources, built once per mesh (a scene
       // has a few).
-      if (Result<void> built = build(hull.program, {"hull.vert"}, lit({"hull.frag"})); !built)
+      if (Result<void> built = build(hull.program, {"hull.vert"}, lit(receiving({"hull.frag"})));
+          !built)
         return built;
       if (Result<void> built = build(hull.shadow_program, {"box_shadow.vert"}, {"shadow.frag"});
           !built)
@@ -774,13 +780,16 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
                  GL_FLOAT, texels.data());
     glBindTexture(GL_TEXTURE_2D, 0);
   }
-  r.boxes.upload(boxes, view.camera.position, occluders.empty() ? nullptr : &occluders);
+  const auto* receives = occluders.empty() ? nullptr : &occluders;
+  r.boxes.upload(boxes, view.camera.position, receives);
   // A round solid needs RenderSettings::round_solids, a hull its mesh among RenderSettings::hulls.
   assert(std::all_of(boxes.begin(), boxes.end(), [&](const Box& b) {
     return b.solid == Solid::box ||
            (b.solid == Solid::hull ? b.mesh < s.hulls.size() : s.round_solids);
   }));
-  for (Resources::RoundSolid& round : r.rounds) round.batch.upload(boxes, view.camera.position);
+  for (Resources::RoundSolid& round : r.rounds) {
+    round.batch.upload(boxes, view.camera.position, receives);
+  }
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_CULL_FACE);
   if (s.shadows) r.draw_shadow_map(view, frame);

@@ -332,5 +332,42 @@ TEST(Look, OcclusionDarkensABoxTopBesideACubeByItsFormFactor) {
   }
 }
 
+// A ball (radius 0.5 m) resting on the same table: a point of it below its equator, turned to
+// the camera, receives the table's occlusion (the table cut to the ball's tangent plane there).
+// Its light is the light without occlusion less the fill's part of it times the form factor:
+// exposure × ambient × hemisphere(n) × albedo × F, within a level.
+TEST(Look, OcclusionDarkensABallBesideTheTableItRestsOn) {
+  RenderSettings settings = cube_settings();
+  settings.shadows = false;
+  settings.round_solids = true;
+  FrameView view = cube_view(Vec3(1.5, 2.0, 4.0), Vec3(0.1, 0.8, 0.5));
+  view.boxes[0] = Box{.position = Vec3(0.0, 1.0, 0.0), .color = Color(0.9, 0.9, 0.9),
+                      .solid = Solid::ball};
+  view.boxes.push_back(Box{.position = Vec3(0.0, 0.25, 0.0),
+                           .size = Vec3(4.0, 0.5, 4.0),
+                           .color = Color(0.8, 0.8, 0.8)});
+  const Frame occluded = render(settings, view);
+  settings.look.ambient_occlusion = 0.0;
+  const Frame open = render(settings, view);
+  const double exposure = settings.look.exposure_for(settings.light);
+  const double albedo = linear(255.0 * 0.9);
+  for (const double down : {0.2, 0.45, 0.7}) {
+    const Vec3 normal = Vec3(0.3, -down, 0.84).normalized();
+    const Vec3 point = Vec3(0.0, 1.0, 0.0) + 0.5 * normal;
+    const double form_factor = box_form_factor_by_rays(point + 1e-4 * normal, Vec3(-2, 0, -2),
+                                                       Vec3(2, 0.5, 2), normal);
+    const double hemisphere =
+        (1.0 - settings.look.fill_light) + settings.look.fill_light * (0.5 * normal.y() + 0.5);
+    const double fill = exposure * settings.light.ambient * hemisphere * albedo;
+    const double predicted =
+        255.0 * srgb_from_linear(open.green(point) - fill * form_factor);
+    std::printf("[ measured ] the ball's side, normal %.2f down: levels %d open, %d occluded, "
+                "%.2f predicted (form factor %.4f)\n",
+                -normal.y(), open.green_level(point), occluded.green_level(point), predicted,
+                form_factor);
+    EXPECT_NEAR(occluded.green_level(point), predicted, 1.0) << down;
+  }
+}
+
 }  // namespace
 }  // namespace tumble::render
