@@ -8,7 +8,9 @@
 namespace tumble::render {
 namespace {
 
-double reach_of(const Box& box) { return kOcclusionReach * box.size.maxCoeff(); }
+double reach_of(const Box& box) {
+  return kOcclusionReach * box.size.maxCoeff();
+}
 
 }  // namespace
 
@@ -37,8 +39,7 @@ std::vector<std::array<int, kOccludersPerBody>> nearest_occluders(const std::vec
       // Only a box's and a ball's forms are exact: the box around a capsule, cylinder or hull
       // would hide the sky from points of a neighbour that it does not cover.
       if (boxes[j].solid != Solid::box && boxes[j].solid != Solid::ball) return;
-      const double gap =
-          (boxes[i].position - boxes[j].position).norm() - radius[i] - radius[j];
+      const double gap = (boxes[i].position - boxes[j].position).norm() - radius[i] - radius[j];
       if (gap < reach_of(boxes[j])) near.emplace_back(std::max(gap, 0.0), static_cast<int>(j));
     };
     for (std::size_t k = at; k-- > 0;) {
@@ -64,11 +65,14 @@ std::vector<float> occluder_texels(const std::vector<Box>& boxes) {
     const Eigen::Matrix3d rotation = box.orientation.normalized().toRotationMatrix();
     const double reach = reach_of(box);
     const Vec3 half = 0.5 * box.size;
-    const double texels[16] = {box.position.x(), box.position.y(), box.position.z(),
-                               box.solid == Solid::ball ? -reach : reach,
-                               rotation(0, 0), rotation(1, 0), rotation(2, 0), half.x(),
-                               rotation(0, 1), rotation(1, 1), rotation(2, 1), half.y(),
-                               rotation(0, 2), rotation(1, 2), rotation(2, 2), half.z()};
+    const double texels[16] = {box.position.x(), box.position.y(),
+                               box.position.z(), box.solid == Solid::ball ? -reach : reach,
+                               rotation(0, 0),   rotation(1, 0),
+                               rotation(2, 0),   half.x(),
+                               rotation(0, 1),   rotation(1, 1),
+                               rotation(2, 1),   half.y(),
+                               rotation(0, 2),   rotation(1, 2),
+                               rotation(2, 2),   half.z()};
     for (const double value : texels) out.push_back(static_cast<float>(value));
   }
   out.resize(16 * kOccludersPerRow * rows, 0.0f);

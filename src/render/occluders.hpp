@@ -1,6 +1,7 @@
 // The bodies whose ambient occlusion a body receives (shaders/form_factor.glsl,
-// receive_body_occlusion.glsl): for each body, up to kOccludersPerBody others near enough to darken it, and every body's shape as
-// the shaders read it from a texture. Free of GL. Internal to src/render/.
+// receive_body_occlusion.glsl): for each body, up to kOccludersPerBody others near enough to darken
+// it, and every body's shape as the shaders read it from a texture. Free of GL. Internal to
+// src/render/.
 #pragma once
 
 #include <array>

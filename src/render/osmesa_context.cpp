@@ -13,10 +13,7 @@ namespace {
 class OsmesaContext final : public OffscreenContext {
  public:
   OsmesaContext(OSMesaContext context, int width, int height)
-      : context_(context),
-        width_(width),
-        height_(height),
-        buffer_(4) {}
+      : context_(context), width_(width), height_(height), buffer_(4) {}
   ~OsmesaContext() override {
     // Release the buffer before the context, if this is the current one (another renderer's may
     // be).

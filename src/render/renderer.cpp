@@ -15,8 +15,8 @@
 #include "render/geometry.hpp"
 #include "render/gl.hpp"
 #include "render/ground_cache.hpp"
-#include "render/occlusion_layer.hpp"
 #include "render/occluders.hpp"
+#include "render/occlusion_layer.hpp"
 #include "render/offscreen_context.hpp"
 #include "render/overlay_geometry.hpp"
 #include "render/overlay_layer.hpp"
@@ -140,7 +140,7 @@ struct Renderer::Resources {
   GLuint quad_vao = 0, quad_vbo = 0;
   GLuint shadow_fbo = 0, shadow_texture = 0;
   GLuint depth_sampler = 0;  // the shadow map read as depths (no comparison), for soft shadows
-  // With ambient occlusion: every body's shape, for the boxes beside it (occluders.hpp).
+  // With ambient occlusion: every body's shape, for the solids beside it (occluders.hpp).
   GLuint occluder_texture = 0;
 
   ~Resources() {

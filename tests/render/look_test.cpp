@@ -246,8 +246,8 @@ double box_form_factor_by_rays(const Vec3& point, const Vec3& low, const Vec3& h
     for (int j = 0; j < kSide; ++j) {
       const double u = (i + 0.5) / kSide, v = (j + 0.5) / kSide;
       const double r = std::sqrt(u), angle = 2.0 * M_PI * v;
-      const Vec3 d = r * std::cos(angle) * across + r * std::sin(angle) * along +
-                     std::sqrt(1.0 - u) * normal;
+      const Vec3 d =
+          r * std::cos(angle) * across + r * std::sin(angle) * along + std::sqrt(1.0 - u) * normal;
       double near = 0.0, far = 1e30;
       for (int axis = 0; axis < 3; ++axis) {
         if (std::abs(d[axis]) < 1e-12) {
@@ -265,6 +265,26 @@ double box_form_factor_by_rays(const Vec3& point, const Vec3& low, const Vec3& h
   return static_cast<double>(hits) / (kSide * kSide);
 }
 
+// A light grey body of unit size (`solid`: a cube, a ball) resting on a table, a box 4 × 0.5 × 4 m
+// whose top is at y = 0.5: its frames with the settings' occlusion and without any.
+struct OnTable {
+  Frame occluded, open;
+};
+OnTable on_table(RenderSettings settings, const Vec3& eye, const Vec3& target, Solid solid) {
+  FrameView view = cube_view(eye, target);
+  // Bright: a level is a small step of its light.
+  view.boxes[0] =
+      Box{.position = Vec3(0.0, 1.0, 0.0), .color = Color(0.9, 0.9, 0.9), .solid = solid};
+  view.boxes.push_back(Box{.position = Vec3(0.0, 0.25, 0.0),
+                           .size = Vec3(4.0, 0.5, 4.0),
+                           .color = Color(0.8, 0.8, 0.8)});
+  OnTable out;
+  out.occluded = render(settings, view);
+  settings.look.ambient_occlusion = 0.0;
+  out.open = render(settings, view);
+  return out;
+}
+
 // A unit cube resting on a table (a box 4 × 0.5 × 4 m whose top is at y = 0.5): the table's top
 // beside the cube receives the cube's occlusion (form_factor.glsl, per pixel). Its light there is
 // 1 - s F f of its light without occlusion, s the fill's share of that light, F the cube's form
@@ -273,15 +293,9 @@ double box_form_factor_by_rays(const Vec3& point, const Vec3& low, const Vec3& h
 TEST(Look, OcclusionDarkensABoxTopBesideACubeByItsFormFactor) {
   RenderSettings settings = cube_settings();
   settings.shadows = false;
-  FrameView view = cube_view(Vec3(1.5, 3.0, 4.8), Vec3(0.1, 0.7, 1.0));
-  view.boxes[0].position.y() = 1.0;
-  view.boxes[0].color = Color(0.9, 0.9, 0.9);  // bright: a level is a small step of its light
-  view.boxes.push_back(Box{.position = Vec3(0.0, 0.25, 0.0),
-                           .size = Vec3(4.0, 0.5, 4.0),
-                           .color = Color(0.8, 0.8, 0.8)});
-  const Frame occluded = render(settings, view);
-  settings.look.ambient_occlusion = 0.0;
-  const Frame open = render(settings, view);
+  const OnTable frames = on_table(settings, Vec3(1.5, 3.0, 4.8), Vec3(0.1, 0.7, 1.0), Solid::box);
+  const Frame& occluded = frames.occluded;
+  const Frame& open = frames.open;
   const double diffuse = -settings.light.direction.normalized().y();
   const double fill_share = settings.light.ambient / (settings.light.ambient + diffuse);
   const double reach = kOcclusionReach;  // × the cube's edge, 1 m
@@ -293,15 +307,16 @@ TEST(Look, OcclusionDarkensABoxTopBesideACubeByItsFormFactor) {
     const double form_factor =
         box_form_factor_by_rays(point, Vec3(-0.5, 0.5, -0.5), Vec3(0.5, 1.5, 0.5));
     const double expected = 1.0 - fill_share * form_factor * fade;
-    std::printf("[ measured ] %.2f box widths from the base: the table top at %.4f of its light "
-                "(form factor %.4f: %.4f expected)\n",
-                widths, ratio, form_factor, expected);
+    std::printf(
+        "[ measured ] %.2f box widths from the base: the table top at %.4f of its light "
+        "(form factor %.4f: %.4f expected)\n",
+        widths, ratio, form_factor, expected);
     // Within a level of 255 (a level is about 1 % of the light at the table's 193): the open
     // top's light times the expected fraction, encoded.
     const double predicted = 255.0 * srgb_from_linear(open.green(point) * expected);
     EXPECT_NEAR(occluded.green_level(point), predicted, 1.0) << widths << " widths";
-    std::printf("[ measured ] levels %d open, %d occluded, %.2f predicted\n", open.green_level(point),
-                occluded.green_level(point), predicted);
+    std::printf("[ measured ] levels %d open, %d occluded, %.2f predicted\n",
+                open.green_level(point), occluded.green_level(point), predicted);
   }
   for (const double widths : {1.3, 1.4}) {
     for (const double x : {-0.4, 0.1, 0.4}) {
@@ -316,18 +331,18 @@ TEST(Look, OcclusionDarkensABoxTopBesideACubeByItsFormFactor) {
   const Vec3 normal = Vec3::UnitZ();
   const double hemisphere = 1.0 - 0.5 * settings.look.fill_light;
   const double side_diffuse = normal.dot(-settings.light.direction.normalized());
-  const double side_share = settings.light.ambient * hemisphere /
-                            (settings.light.ambient * hemisphere + side_diffuse);
+  const double side_share =
+      settings.light.ambient * hemisphere / (settings.light.ambient * hemisphere + side_diffuse);
   for (const double height : {0.55, 0.8, 1.45}) {
     const Vec3 point(0.1, height, 0.5);
-    const double form_factor = box_form_factor_by_rays(point + 1e-4 * normal, Vec3(-2, 0, -2),
-                                                       Vec3(2, 0.5, 2), normal);
+    const double form_factor =
+        box_form_factor_by_rays(point + 1e-4 * normal, Vec3(-2, 0, -2), Vec3(2, 0.5, 2), normal);
     const double expected = 1.0 - side_share * form_factor;
     const double predicted = 255.0 * srgb_from_linear(open.green(point) * expected);
-    std::printf("[ measured ] the cube's side %.2f m up: levels %d open, %d occluded, %.2f "
-                "predicted (form factor %.4f)\n",
-                height, open.green_level(point), occluded.green_level(point), predicted,
-                form_factor);
+    std::printf(
+        "[ measured ] the cube's side %.2f m up: levels %d open, %d occluded, %.2f "
+        "predicted (form factor %.4f)\n",
+        height, open.green_level(point), occluded.green_level(point), predicted, form_factor);
     EXPECT_NEAR(occluded.green_level(point), predicted, 1.0) << height << " m up";
   }
 }
@@ -340,31 +355,24 @@ TEST(Look, OcclusionDarkensABallBesideTheTableItRestsOn) {
   RenderSettings settings = cube_settings();
   settings.shadows = false;
   settings.round_solids = true;
-  FrameView view = cube_view(Vec3(1.5, 2.0, 4.0), Vec3(0.1, 0.8, 0.5));
-  view.boxes[0] = Box{.position = Vec3(0.0, 1.0, 0.0), .color = Color(0.9, 0.9, 0.9),
-                      .solid = Solid::ball};
-  view.boxes.push_back(Box{.position = Vec3(0.0, 0.25, 0.0),
-                           .size = Vec3(4.0, 0.5, 4.0),
-                           .color = Color(0.8, 0.8, 0.8)});
-  const Frame occluded = render(settings, view);
-  settings.look.ambient_occlusion = 0.0;
-  const Frame open = render(settings, view);
+  const OnTable frames = on_table(settings, Vec3(1.5, 2.0, 4.0), Vec3(0.1, 0.8, 0.5), Solid::ball);
+  const Frame& occluded = frames.occluded;
+  const Frame& open = frames.open;
   const double exposure = settings.look.exposure_for(settings.light);
   const double albedo = linear(255.0 * 0.9);
   for (const double down : {0.2, 0.45, 0.7}) {
     const Vec3 normal = Vec3(0.3, -down, 0.84).normalized();
     const Vec3 point = Vec3(0.0, 1.0, 0.0) + 0.5 * normal;
-    const double form_factor = box_form_factor_by_rays(point + 1e-4 * normal, Vec3(-2, 0, -2),
-                                                       Vec3(2, 0.5, 2), normal);
+    const double form_factor =
+        box_form_factor_by_rays(point + 1e-4 * normal, Vec3(-2, 0, -2), Vec3(2, 0.5, 2), normal);
     const double hemisphere =
         (1.0 - settings.look.fill_light) + settings.look.fill_light * (0.5 * normal.y() + 0.5);
     const double fill = exposure * settings.light.ambient * hemisphere * albedo;
-    const double predicted =
-        255.0 * srgb_from_linear(open.green(point) - fill * form_factor);
-    std::printf("[ measured ] the ball's side, normal %.2f down: levels %d open, %d occluded, "
-                "%.2f predicted (form factor %.4f)\n",
-                -normal.y(), open.green_level(point), occluded.green_level(point), predicted,
-                form_factor);
+    const double predicted = 255.0 * srgb_from_linear(open.green(point) - fill * form_factor);
+    std::printf(
+        "[ measured ] the ball's side, normal %.2f down: levels %d open, %d occluded, "
+        "%.2f predicted (form factor %.4f)\n",
+        -normal.y(), open.green_level(point), occluded.green_level(point), predicted, form_factor);
     EXPECT_NEAR(occluded.green_level(point), predicted, 1.0) << down;
   }
 }

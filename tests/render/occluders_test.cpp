@@ -40,7 +40,7 @@ TEST(NearestOccluders, KeepsTheNearestFourInOrderOfTheirGap) {
   // order unlike their distances and unlike x.
   std::vector<Box> boxes = {cube_at(0, 0, 0)};
   const double distances[] = {2.5, 1.9, 2.95, 2.2, 2.9, 2.0};  // gaps of d - sqrt(3)
-  const Vec3 directions[] = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0),
+  const Vec3 directions[] = {Vec3(1, 0, 0),  Vec3(-1, 0, 0),    Vec3(0, 1, 0),
                              Vec3(0, 0, -1), Vec3(0.6, 0.8, 0), Vec3(0, -0.6, 0.8)};
   for (int k = 0; k < 6; ++k) {
     const Vec3 at = distances[k] * directions[k];

@@ -180,7 +180,7 @@ void check_nodes(const tinygltf::Model& model, std::vector<std::string>& problem
   }
   for (const tinygltf::Scene& scene : model.scenes) {
     for (const int node : scene.nodes) {
-      if (!in_range(node, model.nodes.size())) problems.push_back("a scene's node out of range");
+      if (!in_range(node, model.nodes.size())) problems.emplace_back("a scene's node out of range");
     }
   }
   if (!in_range(model.defaultScene, model.scenes.size())) problems.push_back("no default scene");
