@@ -1,5 +1,6 @@
 #include "render/box_batch.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 #include "render/box_instances.hpp"
@@ -8,12 +9,13 @@
 namespace tumble::render {
 namespace {
 
-// Per box, advancing once per instance, at body.vert's locations. A matrix takes one location
-// per column.
-void point_instance_attributes() {
-  const auto attribute = [](GLuint location, GLint components, std::size_t offset) {
+// Per box, advancing once per instance, at body.vert's locations, from instance `first` of the
+// bound buffer on. A matrix takes one location per column.
+void point_instance_attributes(GLsizei first = 0) {
+  const auto attribute = [first](GLuint location, GLint components, std::size_t offset) {
     glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, sizeof(BoxInstance),
-                          reinterpret_cast<const void*>(offset));
+                          reinterpret_cast<const void*>(
+                              static_cast<std::size_t>(first) * sizeof(BoxInstance) + offset));
     glVertexAttribDivisor(location, 1);
     glEnableVertexAttribArray(location);
   };
@@ -103,6 +105,11 @@ void BoxBatch::upload(const std::vector<Box>& boxes, const Vec3& eye,
                       const std::vector<std::array<int, kOccludersPerBody>>* occluders) {
   const std::vector<BoxInstance> instances = box_instances(boxes, eye, solid_, mesh_, occluders);
   count_ = static_cast<GLsizei>(instances.size());
+  // box_instances() puts the boxes that receive no occlusion first.
+  unoccluded_ = static_cast<GLsizei>(
+      std::find_if(instances.begin(), instances.end(),
+                   [](const BoxInstance& box) { return box.occluders[0] > 0.0f; }) -
+      instances.begin());
   glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_.get());
   // A fresh store each frame, so the driver need not wait for the last frame's draws.
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instances.size() * sizeof(BoxInstance)),
@@ -113,6 +120,19 @@ void BoxBatch::draw() const {
   if (count_ == 0) return;
   glBindVertexArray(vao_.get());
   glDrawElementsInstanced(GL_TRIANGLES, indices_, GL_UNSIGNED_SHORT, nullptr, count_);
+}
+
+void BoxBatch::draw_part(bool occluded) const {
+  const GLsizei first = occluded ? unoccluded_ : 0;
+  const GLsizei count = occluded ? count_ - unoccluded_ : unoccluded_;
+  if (count == 0) return;
+  glBindVertexArray(vao_.get());
+  if (first != 0) {
+    glBindBuffer(GL_ARRAY_BUFFER, instance_vbo_.get());
+    point_instance_attributes(first);
+  }
+  glDrawElementsInstanced(GL_TRIANGLES, indices_, GL_UNSIGNED_SHORT, nullptr, count);
+  if (first != 0) point_instance_attributes(0);
 }
 
 }  // namespace tumble::render

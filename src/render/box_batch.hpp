@@ -37,6 +37,10 @@ class BoxBatch {
   // One draw of every uploaded box with the bound program, which reads body.vert's attribute
   // locations (or a subset of them, as box_shadow.vert).
   void draw() const;
+  // One draw of the uploaded boxes that receive occlusion from others (`occluded`) or of those
+  // that receive none: a program that computes occlusion costs every pixel it shades on a
+  // software rasterizer, whether or not the box has anything near it.
+  void draw_part(bool occluded) const;
 
  private:
   // The mesh's buffers and vertex layout, and the instance buffer, into a new vertex array.
@@ -49,6 +53,7 @@ class BoxBatch {
   std::uint32_t mesh_ = 0;  // Solid::hull's
   GLsizei indices_ = 0;     // of the mesh
   GLsizei count_ = 0;       // boxes uploaded
+  GLsizei unoccluded_ = 0;  // of them, first, those that receive no occlusion
 };
 
 }  // namespace tumble::render

@@ -19,6 +19,10 @@ std::vector<BoxInstance> box_instances(
   }
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
+  if (occluders) {
+    std::stable_partition(order.begin(), order.end(),
+                          [&](std::size_t i) { return (*occluders)[i][0] < 0; });
+  }
   std::vector<BoxInstance> out(order.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     const Box& box = boxes[order[i]];

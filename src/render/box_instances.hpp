@@ -28,7 +28,7 @@ struct BoxInstance {
 // picture is the same in any order (opaque boxes, GL_LESS) but where faces of two boxes meet at
 // exactly equal depth.
 // A hull's batch takes the boxes of its `mesh` only. `occluders`, when given, has a list per box
-// (nearest_occluders()).
+// (nearest_occluders()), and the boxes with none come first (each part nearest first).
 std::vector<BoxInstance> box_instances(
     const std::vector<Box>& boxes, const Vec3& eye, Solid solid = Solid::box,
     std::uint32_t mesh = 0,

@@ -117,6 +117,9 @@ struct Renderer::Resources {
   RenderSettings settings;
   std::unique_ptr<OffscreenContext> context;
   ShaderProgram body_program;
+  // With ambient occlusion: body.frag receiving the occlusion of the bodies beside a box, drawn
+  // for the boxes that have any (BoxBatch::draw_part); likewise each RoundSolid's.
+  ShaderProgram body_occluded_program;
   ShaderProgram ground_program;
   ShaderProgram shadowed_ground_program;  // the same, receiving shadows (and occlusion)
   ShaderProgram shadow_program;           // quads
@@ -125,7 +128,7 @@ struct Renderer::Resources {
   BoxBatch boxes;                         // every box of the frame, one instanced draw per pass
   // With settings.round_solids: each round solid's program, shadow program and batch.
   struct RoundSolid {
-    ShaderProgram program, shadow_program;
+    ShaderProgram program, occluded_program, shadow_program;
     BoxBatch batch;
   };
   std::vector<RoundSolid> rounds;
@@ -208,16 +211,19 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     return out;
   };
   const bool occluded = settings.ground.enabled && settings.look.ambient_occlusion > 0.0;
-  // The solids receive the occlusion of the bodies beside them whether or not there is a ground:
-  // a solid's fragment shader, after the occlusion's sources when the look has it.
+  // The solids receive the occlusion of the bodies beside them whether or not there is a ground.
   const bool bodies_occluded = settings.look.ambient_occlusion > 0.0;
-  const auto receiving = [bodies_occluded](const std::vector<std::string>& files) {
-    std::vector<std::string> out;
-    if (bodies_occluded) out = {"form_factor.glsl", "receive_body_occlusion.glsl"};
-    out.insert(out.end(), files.begin(), files.end());
-    return out;
+  // Each solid's program, and the same receiving occlusion when the look has it.
+  const auto build_solid = [&](ShaderProgram& plain, ShaderProgram& occluded,
+                               const std::vector<std::string>& vertex,
+                               const std::string& fragment) -> Result<void> {
+    if (Result<void> built = build(plain, vertex, lit({fragment})); !built) return built;
+    if (!bodies_occluded) return Result<void>::success();
+    return build(occluded, vertex,
+                 lit({"form_factor.glsl", "receive_body_occlusion.glsl", fragment}));
   };
-  if (Result<void> built = build(body_program, {"body.vert"}, lit(receiving({"body.frag"})));
+  if (Result<void> built =
+          build_solid(body_program, body_occluded_program, {"body.vert"}, "body.frag");
       !built)
     return built;
   if (bodies_occluded) {
@@ -255,7 +261,8 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
     };
     for (const Sources& source : sources) {
       RoundSolid& round = rounds.emplace_back();
-      if (Result<void> built = build(round.program, source.vertex, lit(receiving({"ball.frag"})));
+      if (Result<void> built =
+              build_solid(round.program, round.occluded_program, source.vertex, "ball.frag");
           !built)
         return built;
       if (Result<void> built = build(round.shadow_program, source.shadow, {"shadow.frag"}); !built)
@@ -268,7 +275,8 @@ Result<void> Renderer::Resources::create(const std::string& shader_directory) {
       RoundSolid& hull = rounds.emplace_back();
       // Each hull its own program objects: the same two sources, built once per mesh (a scene
       // has a few).
-      if (Result<void> built = build(hull.program, {"hull.vert"}, lit(receiving({"hull.frag"})));
+      if (Result<void> built =
+              build_solid(hull.program, hull.occluded_program, {"hull.vert"}, "hull.frag");
           !built)
         return built;
       if (Result<void> built = build(hull.shadow_program, {"box_shadow.vert"}, {"shadow.frag"});
@@ -839,11 +847,22 @@ void Renderer::draw_picture(const FrameView& view, const std::vector<Box>& boxes
   // boxes, then the ground's shadows where a box does not hide it. A quad seen from its front
   // has the camera on the same side as every box (boxes stay outside planes), so it can hide
   // none of them: opaque too. Those seen from their back are blended over everything, last.
-  r.use(r.body_program, frame, view.camera);
-  r.boxes.draw();
+  // Each solid's boxes that receive no occlusion, then those that do, with the program that
+  // computes it.
+  const auto draw_solid = [&](const ShaderProgram& plain, const ShaderProgram& occluded,
+                              const BoxBatch& batch) {
+    r.use(plain, frame, view.camera);
+    if (!occluded.valid()) {
+      batch.draw();
+      return;
+    }
+    batch.draw_part(false);
+    r.use(occluded, frame, view.camera);
+    batch.draw_part(true);
+  };
+  draw_solid(r.body_program, r.body_occluded_program, r.boxes);
   for (const Resources::RoundSolid& round : r.rounds) {
-    r.use(round.program, frame, view.camera);
-    round.batch.draw();
+    draw_solid(round.program, round.occluded_program, round.batch);
   }
   if (shadowed_region) {
     r.draw_ground_shadows(r.shadowed_ground_program, view, frame, *shadowed_region);
