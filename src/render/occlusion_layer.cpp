@@ -31,9 +31,8 @@ Result<OcclusionLayer> OcclusionLayer::create(int width, int height,
   out.height_ = height;
   out.buffer_width_ = (width + kOcclusionDownsampling - 1) / kOcclusionDownsampling;
   out.buffer_height_ = (height + kOcclusionDownsampling - 1) / kOcclusionDownsampling;
-  Result<ShaderProgram> program =
-      ShaderProgram::build(shader_directory, {"occlusion.vert"},
-                            {"version.glsl", "form_factor.glsl", "occlusion.frag"});
+  Result<ShaderProgram> program = ShaderProgram::build(
+      shader_directory, {"occlusion.vert"}, {"version.glsl", "form_factor.glsl", "occlusion.frag"});
   if (!program) return Error{program.error()};
   out.program_ = std::move(program).value();
   Result<ShaderProgram> apply_program =
