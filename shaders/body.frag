@@ -11,7 +11,6 @@ flat in vec3 v_diffuse;
 flat in vec3 v_specular;
 flat in vec4 v_occluders;  // the bodies that darken this box: their indices + 1, 0 none
 
-
 out vec4 out_color;
 
 // x^48 (Blinn-Phong shininess 48) by squaring: five products instead of pow's exp2(48 log2 x).

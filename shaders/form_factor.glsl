@@ -1,7 +1,7 @@
 // The ambient occlusion of a point by one body, in closed form: the fraction of the fill light
 // (a uniform sky over the point's hemisphere, cosine-weighted) that the body hides. Shared by the
-// ground's occlusion buffer (occlusion.frag) and the boxes that receive occlusion from the bodies
-// beside them (body.frag). A box hides its form factor seen from the point, Lambert's formula for
+// ground's occlusion buffer (occlusion.frag) and the solids that receive occlusion from the bodies
+// beside them (receive_body_occlusion.glsl). A box hides its form factor seen from the point, Lambert's formula for
 // the polygons of the faces the point sees, each clipped to the point's hemisphere; a ball
 // cos(angle from the normal) (r / d)^2 (Quilez, "box occlusion" and "sphere ambient occlusion").
 // After version.glsl.
