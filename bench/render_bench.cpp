@@ -3,6 +3,7 @@
 //   build/render_bench --benchmark_filter=CostPerFrame --benchmark_repetitions=5
 //   --benchmark_min_time=1
 //   build/render_bench --benchmark_filter='Look|FourK' --benchmark_min_time=2
+//   build/render_bench --benchmark_filter=Png
 // One cube at 720p with the default ground, shadows and edge filter, drawn without text and
 // with three texts (a boxed two-line live value, a caption, a label), the values changing every
 // frame as a documentation video's do: as two benchmarks, and alternated frame by frame on one
@@ -16,9 +17,11 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <memory>
 #include <string>
 
+#include "io/png_io.hpp"
 #include "render/renderer.hpp"
 
 namespace {
@@ -301,6 +304,37 @@ void BM_FourKAgainst720p(benchmark::State& state) {
   }
 }
 
+// tumble's own PNG encoder against libpng with zlib level 1 unfiltered (the default before it),
+// alternated on the same frame (the cube with its three texts): the iteration's time is the own
+// encoder's; the counters give own / zlib for time (wall) and file size.
+void BM_PngOwnAgainstZlib720p(benchmark::State& state) {
+  const auto renderer = make_renderer();
+  if (!renderer) {
+    state.SkipWithError("no renderer");
+    return;
+  }
+  const std::string folder = std::filesystem::temp_directory_path() / "tumble_render_bench_png";
+  std::filesystem::create_directories(folder);
+  tumble::io::Image image;
+  FrameView view = cube_frame(30);
+  add_three_texts(view, 30);
+  renderer->draw(view, image);
+  const tumble::io::PngSettings zlib{.own_encoder = false, .compression_level = 1};
+  const auto write = [&](const char* name, const tumble::io::PngSettings& settings) {
+    if (!tumble::io::write_png(folder + "/" + name, image, settings)) {
+      state.SkipWithError("cannot write the PNG");
+    }
+  };
+  const TimesInTurn times = time_in_turn(
+      state, [](int) {}, [&] { write("own.png", {}); }, [&] { write("zlib.png", zlib); },
+      [](double own, double) { return own; });
+  state.counters["wall_ratio"] = times.wall_first / times.wall_second;
+  state.counters["size_ratio"] =
+      static_cast<double>(std::filesystem::file_size(folder + "/own.png")) /
+      static_cast<double>(std::filesystem::file_size(folder + "/zlib.png"));
+  std::filesystem::remove_all(folder);
+}
+
 void BM_Frame720pWithoutText(benchmark::State& state) {
   draw_frames(state, false);
 }
@@ -330,6 +364,7 @@ BENCHMARK(BM_LookPartCostPerFrame720p)
     ->Unit(benchmark::kMillisecond)
     ->UseManualTime();
 BENCHMARK(BM_FourKAgainst720p)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_PngOwnAgainstZlib720p)->Unit(benchmark::kMillisecond)->UseManualTime();
 
 }  // namespace
 

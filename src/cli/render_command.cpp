@@ -293,7 +293,7 @@ void add_render_command(CLI::App& app, Commands& commands) {
   add_setting_option(command, common::render_setting("egl_device"), render.egl_device);
   command
       ->add_option("--png-compression", line->png_compression,
-                   "fast (zlib 1, no filter), default (libpng's: zlib 6, adaptive filter) or "
+                   "fast (tumble's own encoder), default (libpng's: zlib 6, adaptive filter) or "
                    "small (zlib 9, adaptive filter)")
       ->check(CLI::IsMember({"fast", "default", "small"}))
       ->capture_default_str();

@@ -1,7 +1,9 @@
 #include "io/png_io.hpp"
 
 #include <png.h>
+#include <zlib.h>
 
+#include <array>
 #include <cerrno>
 #include <csetjmp>
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
+#include "io/png_deflate.hpp"
 
 // libpng reports errors by calling an error function that must not return; it longjmps back to a
 // setjmp. A longjmp that skips a frame holding objects with non-trivial destructors is undefined
@@ -135,6 +138,65 @@ bool encode_guarded(png_structp png, png_infop info, std::FILE* file, const Imag
   return true;
 }
 
+// A PNG chunk (PNG specification 5.3): length, type, data, and the CRC-32 of type and data.
+bool write_chunk(std::FILE* file, const char (&type)[5], const std::uint8_t* data,
+                 std::size_t size) {
+  const auto big_endian = [](std::uint32_t value) {
+    return std::array<std::uint8_t, 4>{
+        static_cast<std::uint8_t>(value >> 24), static_cast<std::uint8_t>(value >> 16),
+        static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value)};
+  };
+  const auto* type_bytes = reinterpret_cast<const Bytef*>(type);
+  uLong crc = crc32(0L, type_bytes, 4);
+  if (size > 0) crc = crc32_z(crc, data, size);  // zlib answers 0 for no data
+  const std::array<std::uint8_t, 4> length = big_endian(static_cast<std::uint32_t>(size));
+  const std::array<std::uint8_t, 4> check = big_endian(static_cast<std::uint32_t>(crc));
+  return std::fwrite(length.data(), 1, 4, file) == 4 && std::fwrite(type, 1, 4, file) == 4 &&
+         (size == 0 || std::fwrite(data, 1, size, file) == size) &&
+         std::fwrite(check.data(), 1, 4, file) == 4;
+}
+
+// The PNG through tumble's own deflate encoder (png_deflate.hpp): the same chunks as libpng
+// writes (IHDR, IDAT, IEND), the image data in one IDAT.
+bool encode_own(std::FILE* file, const Image& image) {
+  const bool alpha = !image.alpha.empty();
+  const int channels = alpha ? 4 : 3;
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * channels;
+  ScanlineDeflater deflater(row_bytes, channels);
+  std::vector<std::uint8_t> rgba(alpha ? row_bytes : 0);
+  for (int y = 0; y < image.height; ++y) {
+    if (!alpha) {
+      deflater.add_row(image.row(y));
+    } else {
+      interleave_alpha(image, y, rgba.data());
+      deflater.add_row(rgba.data());
+    }
+  }
+  const std::vector<std::uint8_t> data = deflater.finish();
+  std::array<std::uint8_t, 13> header{};
+  for (int i = 0; i < 4; ++i) {
+    header[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(image.width >> (24 - 8 * i));
+    header[static_cast<std::size_t>(4 + i)] =
+        static_cast<std::uint8_t>(image.height >> (24 - 8 * i));
+  }
+  header[8] = 8;                             // bits per sample
+  header[9] = alpha ? 6 : 2;                 // colour type: RGBA or RGB
+  header[10] = header[11] = header[12] = 0;  // deflate, adaptive filters, no interlace
+  static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (std::fwrite(kSignature, 1, 8, file) != 8 ||
+      !write_chunk(file, "IHDR", header.data(), header.size())) {
+    return false;
+  }
+  // A chunk's length has 31 bits: the data of an image of gigabytes goes in several.
+  constexpr std::size_t kMaxChunk = std::size_t{1} << 30;
+  for (std::size_t at = 0; at < data.size(); at += kMaxChunk) {
+    if (!write_chunk(file, "IDAT", data.data() + at, std::min(kMaxChunk, data.size() - at))) {
+      return false;
+    }
+  }
+  return write_chunk(file, "IEND", nullptr, 0);
+}
+
 bool read_header_guarded(png_structp png, png_infop info, std::FILE* file, png_uint_32* width,
                          png_uint_32* height) {
   if (setjmp(png_jmpbuf(png))) return false;
@@ -202,6 +264,12 @@ Result<void> write_png(const std::string& path, const Image& image, const PngSet
   // Unsynced: PNGs are mostly video frames, written by the hundred (see AtomicFile::Durability).
   Result<AtomicFile> file = AtomicFile::open(path, AtomicFile::Durability::unsynced);
   if (!file) return Error{file.error()};
+  if (settings.own_encoder) {
+    if (!encode_own(file->stream(), image)) {
+      return Error{path + ": cannot write PNG: write failed: " + std::strerror(errno)};
+    }
+    return file->commit();
+  }
   PngFailure failure{};
   PngStructs structs(PngStructs::Side::write, &failure);
   if (!structs.allocated())
@@ -269,8 +337,12 @@ Result<Image> read_png(std::FILE* file, const std::string& path) {
 
 std::optional<PngSettings> png_settings_named(std::string_view name) {
   if (name == "fast") return PngSettings{};
-  if (name == "default") return PngSettings{.compression_level = 6, .filter = true};
-  if (name == "small") return PngSettings{.compression_level = 9, .filter = true};
+  if (name == "default") {
+    return PngSettings{.own_encoder = false, .compression_level = 6, .filter = true};
+  }
+  if (name == "small") {
+    return PngSettings{.own_encoder = false, .compression_level = 9, .filter = true};
+  }
   return std::nullopt;
 }
 

@@ -14,6 +14,9 @@ namespace fs = std::filesystem;
 // The PNG settings the chunks were written with (report.json's settings).
 io::PngSettings png_settings(const io::JsonValue& settings) {
   io::PngSettings png;
+  if (const io::JsonValue* encoder = settings.find("png_encoder")) {
+    png.own_encoder = encoder->string == "tumble";
+  }
   if (const io::JsonValue* level = settings.find("png_zlib_level")) {
     png.compression_level = static_cast<int>(level->number);
   }

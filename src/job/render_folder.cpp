@@ -38,6 +38,7 @@ std::string settings_json(const RenderJob& job, const RenderResult& result) {
   out << "{\"width\": " << scene.render.width << ", \"height\": " << scene.render.height
       << ", \"fps\": " << scene.fps << ", \"msaa\": " << scene.render.msaa
       << ", \"frames\": " << (scene.output.frames ? "true" : "false")
+      << ", \"png_encoder\": " << (job.png.own_encoder ? "\"tumble\"" : "\"zlib\"")
       << ", \"png_zlib_level\": " << job.png.compression_level
       << ", \"png_filter\": " << (job.png.filter ? "true" : "false")
       << ", \"video\": " << (scene.output.video ? "true" : "false") << ", \"formats\": [";
