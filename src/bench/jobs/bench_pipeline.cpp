@@ -127,7 +127,7 @@ Result<ExitCode> run_bench_pipeline(const BenchPipelineOptions& options, std::FI
   Result<void> ran = run("render_only", false, false, false, "fast", "veryfast", results[0]);
   results[0].how = "draw every frame, write nothing: the ceiling";
   if (ran) ran = run("pipelined", false, true, true, "fast", "veryfast", results[1]);
-  results[1].how = "tumble render: PNG (zlib 1, no filter) and x264 veryfast on worker threads";
+  results[1].how = "tumble render: PNG (own encoder) and x264 veryfast on worker threads";
   if (ran) ran = run("naive", true, true, true, "default", "medium", results[2]);
   results[2].how = "one thread: draw, libpng defaults, x264 medium in process, frame after frame";
   if (ran) ran = run("png_then_ffmpeg", true, true, false, "default", "medium", results[3]);
