@@ -20,8 +20,15 @@ float edge_term(vec3 a, vec3 b, vec3 normal) {
 // one plane, written without arrays indexed per pixel, which a software renderer pays dearly
 // for): each edge keeps its part above the plane, and the edge that leaves the plane is joined
 // to the edge that comes back by a segment in it. Below the plane the polygon hides nothing.
-float clipped_quad_term(vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 n) {
+// `cut` false: the whole quadrilateral is above the plane (a body above the ground seen from
+// the ground), nothing to cut. Passed as a constant, the compiler drops the cut's code: llvmpipe
+// runs both sides of a branch, so the ground's buffer would pay for it at every pixel.
+float clipped_quad_term(vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 n, bool cut) {
   vec3 c[4] = vec3[](c0, c1, c2, c3);
+  if (!cut) {
+    return edge_term(normalize(c0), normalize(c1), n) + edge_term(normalize(c1), normalize(c2), n) +
+           edge_term(normalize(c2), normalize(c3), n) + edge_term(normalize(c3), normalize(c0), n);
+  }
   float h[4] = float[](dot(n, c0), dot(n, c1), dot(n, c2), dot(n, c3));
   float total = 0.0;
   vec3 leaves = vec3(0.0), returns = vec3(0.0);
@@ -49,8 +56,8 @@ float clipped_quad_term(vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 n) {
 
 // The form factor of a box (centred at the origin, half edges h) from the point q with unit
 // normal n, both in the box's frame: the sum over the faces the point sees (at most three), each
-// cut to the part above the point's tangent plane.
-float box_form_factor(vec3 q, vec3 n, vec3 h) {
+// cut to the part above the point's tangent plane unless `cut` is false (see above).
+float box_form_factor(vec3 q, vec3 n, vec3 h, bool cut) {
   float total = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
     if (abs(q[axis]) <= h[axis]) continue;  // this axis's faces are edge-on or turned away
@@ -64,7 +71,7 @@ float box_form_factor(vec3 q, vec3 n, vec3 h) {
       c[v] = (k >= 2) ? h[v] : -h[v];
       corner[k] = c - q;
     }
-    total += abs(clipped_quad_term(corner[0], corner[1], corner[2], corner[3], n));
+    total += abs(clipped_quad_term(corner[0], corner[1], corner[2], corner[3], n, cut));
   }
   return total / 6.28318531;
 }
@@ -73,8 +80,9 @@ float box_form_factor(vec3 q, vec3 n, vec3 h) {
 // body's centre, rotation (body to world) and half edges; a ball (`ball`) of radius half_size.x
 // or else a box; counted in full out to half `reach` from the body's surface, fading to none at
 // `reach`. 1 inside a box (the ground under a box resting on it sees nothing of the sky).
+// `cut`: as box_form_factor's; false only where the body is known to be above the point's plane.
 float occlusion_by(vec3 point, vec3 normal, vec3 center, mat3 rotation, vec3 half_size, bool ball,
-                   float reach) {
+                   float reach, bool cut) {
   vec3 to_center = center - point;
   float occlusion, distance;  // distance: from the point to the body's surface (m)
   if (ball) {
@@ -87,7 +95,7 @@ float occlusion_by(vec3 point, vec3 normal, vec3 center, mat3 rotation, vec3 hal
     if (all(lessThanEqual(abs(q), half_size * 1.0001))) return 1.0;
     distance = length(max(abs(q) - half_size, 0.0));
     if (distance >= reach) return 0.0;
-    occlusion = box_form_factor(q, transpose(rotation) * normal, half_size);
+    occlusion = box_form_factor(q, transpose(rotation) * normal, half_size, cut);
   }
   return clamp(occlusion * (1.0 - smoothstep(0.5 * reach, reach, distance)), 0.0, 1.0);
 }

@@ -24,7 +24,7 @@ float fill_left(vec3 point, vec3 normal, vec4 occluders) {
     vec4 z = texelFetch(u_occluders, at + ivec2(3, 0), 0);
     left *= 1.0 - u_occlusion_strength *
                       occlusion_by(point, normal, center.xyz, mat3(x.xyz, y.xyz, z.xyz),
-                                   vec3(x.w, y.w, z.w), center.w < 0.0, abs(center.w));
+                                   vec3(x.w, y.w, z.w), center.w < 0.0, abs(center.w), true);
   }
   return left;
 }
