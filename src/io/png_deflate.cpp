@@ -4,7 +4,6 @@
 #include <bit>
 #include <cassert>
 #include <cstring>
-#include <numeric>
 
 namespace tumble::io {
 namespace {
@@ -236,6 +235,8 @@ ScanlineDeflater::ScanlineDeflater(std::size_t row_bytes, int bytes_per_pixel)
       rows_(2 * (row_bytes + 1)),
       pixel_code_(distance_code(static_cast<std::uint32_t>(bytes_per_pixel))),
       row_code_(stride_ <= kMaxDistance ? distance_code(static_cast<std::uint32_t>(stride_)) : 0) {
+  assert((bytes_per_pixel == 3 || bytes_per_pixel == 4) &&
+         row_bytes >= static_cast<std::size_t>(bytes_per_pixel));
   // A row adds at most stride_ tokens after the last block was sent.
   tokens_.resize(kBlockTokens + stride_);
   // CMF: deflate with a 32 KiB window; FLG: the fastest level, no dictionary, and the check bits

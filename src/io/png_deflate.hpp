@@ -18,7 +18,7 @@ namespace tumble::io {
 
 class ScanlineDeflater {
  public:
-  // Rows of `row_bytes` bytes of `bytes_per_pixel`-byte pixels (3 for RGB, 4 for RGBA).
+  // Rows of `row_bytes` bytes of `bytes_per_pixel`-byte pixels: 3 (RGB) or 4 (RGBA).
   ScanlineDeflater(std::size_t row_bytes, int bytes_per_pixel);
 
   // Filters the next row (top row first) and compresses it.

@@ -3,6 +3,7 @@
 #include <png.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <csetjmp>
@@ -138,14 +139,15 @@ bool encode_guarded(png_structp png, png_infop info, std::FILE* file, const Imag
   return true;
 }
 
+// PNG's integers are big-endian (PNG specification 7.1).
+std::array<std::uint8_t, 4> big_endian(std::uint32_t value) {
+  return {static_cast<std::uint8_t>(value >> 24), static_cast<std::uint8_t>(value >> 16),
+          static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value)};
+}
+
 // A PNG chunk (PNG specification 5.3): length, type, data, and the CRC-32 of type and data.
 bool write_chunk(std::FILE* file, const char (&type)[5], const std::uint8_t* data,
                  std::size_t size) {
-  const auto big_endian = [](std::uint32_t value) {
-    return std::array<std::uint8_t, 4>{
-        static_cast<std::uint8_t>(value >> 24), static_cast<std::uint8_t>(value >> 16),
-        static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value)};
-  };
   const auto* type_bytes = reinterpret_cast<const Bytef*>(type);
   uLong crc = crc32(0L, type_bytes, 4);
   if (size > 0) crc = crc32_z(crc, data, size);  // zlib answers 0 for no data
@@ -174,11 +176,10 @@ bool encode_own(std::FILE* file, const Image& image) {
   }
   const std::vector<std::uint8_t> data = deflater.finish();
   std::array<std::uint8_t, 13> header{};
-  for (int i = 0; i < 4; ++i) {
-    header[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(image.width >> (24 - 8 * i));
-    header[static_cast<std::size_t>(4 + i)] =
-        static_cast<std::uint8_t>(image.height >> (24 - 8 * i));
-  }
+  const std::array<std::uint8_t, 4> width = big_endian(static_cast<std::uint32_t>(image.width));
+  const std::array<std::uint8_t, 4> height = big_endian(static_cast<std::uint32_t>(image.height));
+  std::copy(width.begin(), width.end(), header.begin());
+  std::copy(height.begin(), height.end(), header.begin() + 4);
   header[8] = 8;                             // bits per sample
   header[9] = alpha ? 6 : 2;                 // colour type: RGBA or RGB
   header[10] = header[11] = header[12] = 0;  // deflate, adaptive filters, no interlace
