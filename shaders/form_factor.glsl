@@ -26,8 +26,9 @@ float edge_term(vec3 a, vec3 b, vec3 normal) {
 float clipped_quad_term(vec3 c0, vec3 c1, vec3 c2, vec3 c3, vec3 n, bool cut) {
   vec3 c[4] = vec3[](c0, c1, c2, c3);
   if (!cut) {
-    return edge_term(normalize(c0), normalize(c1), n) + edge_term(normalize(c1), normalize(c2), n) +
-           edge_term(normalize(c2), normalize(c3), n) + edge_term(normalize(c3), normalize(c0), n);
+    vec3 u0 = normalize(c0), u1 = normalize(c1), u2 = normalize(c2), u3 = normalize(c3);
+    return edge_term(u0, u1, n) + edge_term(u1, u2, n) + edge_term(u2, u3, n) +
+           edge_term(u3, u0, n);
   }
   float h[4] = float[](dot(n, c0), dot(n, c1), dot(n, c2), dot(n, c3));
   float total = 0.0;
